@@ -1,0 +1,163 @@
+! operators.f90 -- chapter 2, the operator functions of SARKP-TMM (listings II.1-II.12,
+! book lines L425-700).  Names and argument order are the book's.  The Python layer
+! validates the input (finite numbers, positive lengths, coincident points) before it
+! calls these routines; guards below only keep a NaN from ever being produced.
+module operators
+  use prmtr, only: dp, pi, book_sign
+  implicit none
+  private
+  public :: dintgr, dfrncl, dugl1, dugl2, dugl3, dugl4, dugl5, dugol, dmomnt, domega, &
+            dvkt, dsmvkt
+
+contains
+
+  ! II.1, L435-480.  Running integral of a tabulated function with step H.
+  ! NOMER as in the listing's code and comments (L443-447): 1 Simpson, 2 trapezoids,
+  ! 3 rectangles.  The prose at L431 lists them the other way round (ERRATA E-DINTGR-2).
+  ! The printed header names the step N (ERRATA E-DINTGR-1).  Simpson starts its even
+  ! chain from a trapezoid over the first interval, as printed.  Needs M >= 2;
+  ! an unknown NOMER leaves FINT zero (the Python layer rejects it first).
+  subroutine dintgr(m, h, nomer, y, fint)
+    integer, intent(in) :: m, nomer
+    real(dp), intent(in) :: h
+    real(dp), intent(in) :: y(m)
+    real(dp), intent(out) :: fint(m)
+    integer :: k
+    fint = 0.0_dp
+    if (m < 2) return
+    select case (nomer)
+    case (1)                                            ! Simpson, labels 10-12
+      fint(2) = h*(y(1) + y(2))/2.0_dp
+      if (m >= 3) fint(3) = (y(1) + 4.0_dp*y(2) + y(3))*h/3.0_dp
+      do k = 4, m
+        fint(k) = fint(k - 2) + (y(k - 2) + 4.0_dp*y(k - 1) + y(k))*h/3.0_dp
+      end do
+    case (2)                                            ! trapezoids, labels 13-15
+      do k = 2, m
+        fint(k) = fint(k - 1) + 0.5_dp*h*(y(k - 1) + y(k))
+      end do
+    case (3)                                            ! right rectangles, labels 16-18
+      do k = 2, m
+        fint(k) = fint(k - 1) + h*y(k)
+      end do
+    end select
+  end subroutine dintgr
+
+  ! II.2, L490-509.  Backward difference, FDIF(1) = 0.  Output before input, as printed
+  ! and as called at L5988.
+  subroutine dfrncl(m, h, fdif, y)
+    integer, intent(in) :: m
+    real(dp), intent(in) :: h
+    real(dp), intent(out) :: fdif(m)
+    real(dp), intent(in) :: y(m)
+    integer :: k
+    fdif = 0.0_dp
+    do k = 1, m - 1
+      fdif(k + 1) = (y(k + 1) - y(k))/h
+    end do
+  end subroutine dfrncl
+
+  ! II.3, L551-569.  Direction of the segment (X1,Y1) -> (X2,Y2) in [0, 2*PI).
+  ! Coincident points have no direction: the book divides 0 by 0; here 0 is returned.
+  pure real(dp) function dugl1(x1, y1, x2, y2)
+    real(dp), intent(in) :: x1, y1, x2, y2
+    real(dp) :: c
+    c = dugl2(x1, y1, x2, y2)
+    if (c < 0.0_dp) c = c + 2.0_dp*pi
+    dugl1 = c
+  end function dugl1
+
+  ! II.4, L572-588.  Signed direction of (X1,Y1) -> (X2,Y2) in [-pi, pi].
+  pure real(dp) function dugl2(x1, y1, x2, y2)
+    real(dp), intent(in) :: x1, y1, x2, y2
+    real(dp) :: dl
+    dl = hypot(x2 - x1, y2 - y1)
+    if (dl == 0.0_dp) then
+      dugl2 = 0.0_dp
+    else
+      ! min/max: rounding can put the cosine a hair outside [-1, 1]
+      dugl2 = book_sign(acos(max(-1.0_dp, min(1.0_dp, (x2 - x1)/dl))), y2 - y1)
+    end if
+  end function dugl2
+
+  ! II.5, L590-599.  UGOL1 + sign(VEL) * |UGOLD|  (VEL = 0 counts as positive).
+  pure real(dp) function dugl3(ugol1, ugold, vel)
+    real(dp), intent(in) :: ugol1, ugold, vel
+    dugl3 = ugol1 + book_sign(ugold, vel)
+  end function dugl3
+
+  ! II.6, L601-612.  UGOL1 - UGOLD if VEL < 0, else UGOL1.  The printed arithmetic IF
+  ! jumps to a label 111 that does not exist (ERRATA E-DUGL4-1); Table 2 (L537) says
+  ! "psi = phi for v >= 0", so VEL > 0 goes where VEL = 0 goes.  The listing subtracts
+  ! where Table 2 adds (E-DUGL4-2): the listing is kept.
+  pure real(dp) function dugl4(ugol1, ugold, vel)
+    real(dp), intent(in) :: ugol1, ugold, vel
+    if (vel < 0.0_dp) then
+      dugl4 = ugol1 - ugold
+    else
+      dugl4 = ugol1
+    end if
+  end function dugl4
+
+  ! II.7, L614-628.  Direction from the projections, in (-pi/2, 3*pi/2).
+  ! PRX = 0 gives +-pi/2 by the sign of PRY (+pi/2 for the zero vector).
+  pure real(dp) function dugl5(prx, pry)
+    real(dp), intent(in) :: prx, pry
+    if (prx == 0.0_dp) then
+      dugl5 = book_sign(pi/2.0_dp, pry)
+    else if (prx < 0.0_dp) then
+      dugl5 = pi + atan(pry/prx)
+    else
+      dugl5 = atan(pry/prx)
+    end if
+  end function dugl5
+
+  ! II.8, L630-639.  FI if FI >= 0, else FI + 2*PI (one wrap only, as printed).
+  pure real(dp) function dugol(fi)
+    real(dp), intent(in) :: fi
+    if (fi < 0.0_dp) then
+      dugol = fi + 2.0_dp*pi
+    else
+      dugol = fi
+    end if
+  end function dugol
+
+  ! II.9, L641-644.  z-component of r x F: R*F*sin(G - FI), written as printed.
+  pure real(dp) function dmomnt(r, fi, f, g)
+    real(dp), intent(in) :: r, fi, f, g
+    dmomnt = r*cos(fi)*f*sin(g) - r*sin(fi)*f*cos(g)
+  end function dmomnt
+
+  ! II.10, L648-660.  Angular velocity (or acceleration) |VEKTOR/RAZMER| with the sign of
+  ! UGOL (normally the vector's direction minus the link's).
+  pure real(dp) function domega(razmer, vektor, ugol)
+    real(dp), intent(in) :: razmer, vektor, ugol
+    if (razmer == 0.0_dp) then
+      domega = 0.0_dp
+    else
+      domega = book_sign(vektor/razmer, ugol)
+    end if
+  end function domega
+
+  ! II.11, L664-680.  Length and signed direction of (X1,Y1) -> (X2,Y2).  The book's own
+  ! guard: coincident points give RZ = 0 and FI = 0.
+  pure subroutine dvkt(x1, y1, x2, y2, rz, fi)
+    real(dp), intent(in) :: x1, y1, x2, y2
+    real(dp), intent(out) :: rz, fi
+    rz = hypot(x2 - x1, y2 - y1)
+    fi = dugl2(x1, y1, x2, y2)
+  end subroutine dvkt
+
+  ! II.12, L684-700.  Sum of two vectors given by magnitude and direction (a negative
+  ! magnitude means the reversed direction); L >= 0, FI = DUGL5 of the projections.
+  pure subroutine dsmvkt(l1, fi1, l2, fi2, l, fi)
+    real(dp), intent(in) :: l1, fi1, l2, fi2
+    real(dp), intent(out) :: l, fi
+    real(dp) :: lx, ly
+    lx = l1*cos(fi1) + l2*cos(fi2)
+    ly = l1*sin(fi1) + l2*sin(fi2)
+    l = hypot(lx, ly)
+    fi = dugl5(lx, ly)
+  end subroutine dsmvkt
+
+end module operators

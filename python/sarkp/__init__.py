@@ -1,0 +1,2 @@
+"""sarkp: САРКП-ТММ, the FORTRAN library of Belokonev (1990), for Python."""
+from . import _sarkp
