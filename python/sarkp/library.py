@@ -1,0 +1,266 @@
+"""The thin layer between Python and the Fortran routines.
+
+Each book routine is declared once, with :func:`book_routine`: its book name, its inputs
+in the book's order, its outputs in the book's order, the Fortran routine for one
+position and the Fortran sweep for many.  The declaration makes a Python function that
+
+* takes the book's inputs in the book's order (``AAA`` last, defaulting to 1.0, "silent");
+* checks them: NaN or inf, a non-positive length, an integer out of range raise
+  ``ValueError`` naming the argument;
+* with scalars, calls the scalar routine and returns a named tuple of floats;
+* with arrays (any broadcastable shapes), calls the sweep, one Fortran loop over all
+  positions, and returns a named tuple of arrays of the broadcast shape;
+* turns the Fortran status into an exception (see :mod:`sarkp.errors`), or with
+  ``on_error="nan"`` into NaN at the failing positions plus a ``status`` field;
+* with ``AAA = 0`` prints the book's report for the call, where the book prints one.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from collections import namedtuple
+from typing import Callable, Mapping, Sequence
+
+import numpy as np
+
+from . import _sarkp
+from .errors import (AssemblyError, RequirementError, SignificanceWarning,
+                     SingularError)
+
+_prmtr = _sarkp.prmtr
+ST_OK = int(_prmtr.st_ok)
+ST_ASSEMBLY = int(_prmtr.st_assembly)
+ST_SINGULAR = int(_prmtr.st_singular)
+ST_SIGNIFICANCE = int(_prmtr.st_significance)
+ST_REQUIREMENT = int(_prmtr.st_requirement)
+
+STATUS_NAMES = {ST_OK: "ok", ST_ASSEMBLY: "assembly", ST_SINGULAR: "singular",
+                ST_SIGNIFICANCE: "significance", ST_REQUIREMENT: "requirement"}
+
+_ERRORS = {ST_ASSEMBLY: AssemblyError, ST_SINGULAR: SingularError,
+           ST_REQUIREMENT: RequirementError}
+
+_DEFAULT_MESSAGES = {
+    ST_ASSEMBLY: "the group cannot be assembled: the links do not reach",
+    ST_SINGULAR: "singular position (dead centre): the book's formulas have no finite answer",
+    ST_SIGNIFICANCE: "GELG reported a loss of significance (IER > 0); the result was kept",
+    ST_REQUIREMENT: "the requirement cannot be met by any mechanism",
+}
+
+_SCALAR_TYPES = (float, int, np.floating, np.integer)
+
+ON_ERROR = ("raise", "nan")
+
+
+class Check:
+    """A condition on the inputs that the Fortran routine does not report itself.
+
+    ``bad`` receives the inputs by book name (floats, or broadcast arrays) and returns a
+    boolean (or boolean array) that is true where the condition holds; ``status`` is the
+    status it gives there and ``message`` what the error says.
+    """
+
+    def __init__(self, bad: Callable[..., object], status: int, message: str):
+        self.bad = bad
+        self.status = status
+        self.message = message
+
+
+class Routine:
+    """The declaration of one book routine (see :func:`book_routine`)."""
+
+    def __init__(self, name, listing, lines, inputs, outputs, scalar, sweep, *,
+                 lengths=(), integers=None, nonnegative=(), checks=(),
+                 messages=None, has_status=True, function=False, report=None,
+                 sweep_inputs=None):
+        self.name = name
+        self.listing = listing
+        self.lines = lines
+        self.inputs = tuple(inputs)
+        self.outputs = tuple(outputs)
+        self.scalar = scalar
+        self.sweep = sweep
+        self.lengths = frozenset(lengths)
+        self.nonnegative = frozenset(nonnegative)
+        self.integers = dict(integers or {})
+        self.checks = tuple(checks)
+        self.messages = dict(_DEFAULT_MESSAGES)
+        self.messages.update(messages or {})
+        self.has_status = has_status
+        self.function = function
+        self.report = report
+        # which inputs the sweep takes (default: all but the print flag AAA, in order)
+        self.sweep_inputs = (tuple(sweep_inputs) if sweep_inputs
+                             else tuple(a for a in self.inputs if a != "AAA"))
+        self.result = namedtuple(name, self.outputs)
+        self.result_with_status = namedtuple(name + "_status", self.outputs + ("status",))
+
+    # -- validation -------------------------------------------------------------------
+    def _check_scalar(self, values):
+        for arg, v in zip(self.inputs, values):
+            if arg in self.integers:
+                allowed = self.integers[arg]
+                if v != int(v) or int(v) not in allowed:
+                    raise ValueError(f"{self.name}: {arg} = {v!r} is not one of "
+                                     f"{sorted(allowed)}")
+                continue
+            if not math.isfinite(v):
+                raise ValueError(f"{self.name}: {arg} = {v!r} is not a finite number")
+            if arg in self.lengths and not v > 0.0:
+                raise ValueError(f"{self.name}: {arg} = {v!r} is a length and must be > 0")
+            if arg in self.nonnegative and v < 0.0:
+                raise ValueError(f"{self.name}: {arg} = {v!r} must be >= 0")
+
+    def _check_arrays(self, arrays, shape):
+        for arg, a in zip(self.inputs, arrays):
+            if arg in self.integers:
+                allowed = np.array(sorted(self.integers[arg]))
+                bad = ~np.isin(a, allowed)
+                what = f"is not one of {allowed.tolist()}"
+            else:
+                bad = ~np.isfinite(a)
+                what = "is not a finite number"
+                if not bad.any():
+                    if arg in self.lengths:
+                        bad = ~(a > 0.0)
+                        what = "is a length and must be > 0"
+                    elif arg in self.nonnegative:
+                        bad = a < 0.0
+                        what = "must be >= 0"
+            if bad.any():
+                idx = _first_index(bad, shape)
+                raise ValueError(f"{self.name}: {arg}{list(idx)} = {a[idx]!r} {what}")
+
+    # -- the call -----------------------------------------------------------------------
+    def __call__(self, args, on_error="raise"):
+        if on_error not in ON_ERROR:
+            raise ValueError(f"{self.name}: on_error must be 'raise' or 'nan', "
+                             f"not {on_error!r}")
+        if all(isinstance(a, _SCALAR_TYPES) for a in args):
+            return self._call_scalar(args, on_error)
+        return self._call_arrays(args, on_error)
+
+    def _call_scalar(self, args, on_error):
+        values = [float(a) for a in args]
+        self._check_scalar(values)
+        if self.integers:
+            values = [int(v) if n in self.integers else v
+                      for n, v in zip(self.inputs, values)]
+        named = dict(zip(self.inputs, values))
+        status = ST_OK
+        for check in self.checks:
+            if check.bad(**named):
+                status = check.status
+                break
+        if status == ST_OK:
+            out = self.scalar(*values)
+            if self.function:
+                out = (out,)
+            elif not isinstance(out, tuple):
+                out = (out,)
+            if self.has_status:
+                status = int(out[-1])
+                out = out[:-1]
+        if status not in (ST_OK, ST_SIGNIFICANCE):
+            if on_error == "raise":
+                raise self._error(status, None)
+            out = (math.nan,) * len(self.outputs)
+        elif status == ST_SIGNIFICANCE:
+            warnings.warn(f"{self.name}: {self.messages[ST_SIGNIFICANCE]}",
+                          SignificanceWarning, stacklevel=3)
+        out = tuple(float(x) for x in out)
+        if self.report is not None and "AAA" in named and named["AAA"] == 0.0:
+            print(self.report(named, out))
+        if on_error == "nan":
+            return self.result_with_status(*out, status)
+        return self.result(*out)
+
+    def _call_arrays(self, args, on_error):
+        arrays = np.broadcast_arrays(*[np.asarray(a, dtype=float) for a in args])
+        shape = arrays[0].shape
+        self._check_arrays(arrays, shape)
+        named = dict(zip(self.inputs, arrays))
+        status = np.zeros(shape, dtype=np.int32)
+        for check in self.checks:
+            bad = np.asarray(check.bad(**named), dtype=bool) & (status == ST_OK)
+            status[bad] = check.status
+        flat = [np.ascontiguousarray(named[n]).ravel() for n in self.sweep_inputs]
+        out = self.sweep(*flat)
+        if not isinstance(out, tuple):
+            out = (out,)
+        if self.has_status:
+            status = np.maximum(status, np.asarray(out[-1]).reshape(shape))
+            out = out[:-1]
+        out = [np.asarray(o, dtype=float).reshape(shape) for o in out]
+        failed = (status != ST_OK) & (status != ST_SIGNIFICANCE)
+        if failed.any():
+            if on_error == "raise":
+                idx = _first_index(failed, shape)
+                raise self._error(int(status[idx]), idx)
+            for o in out:
+                o[failed] = np.nan
+        if (status == ST_SIGNIFICANCE).any():
+            idx = _first_index(status == ST_SIGNIFICANCE, shape)
+            warnings.warn(f"{self.name}: {self.messages[ST_SIGNIFICANCE]} "
+                          f"(first at index {list(idx)})", SignificanceWarning, stacklevel=3)
+        if on_error == "nan":
+            return self.result_with_status(*out, status)
+        return self.result(*out)
+
+    def _error(self, status, index):
+        where = "" if index is None else f" at index {list(index)}"
+        message = self.messages.get(status, STATUS_NAMES.get(status, f"status {status}"))
+        for check in self.checks:
+            if check.status == status:
+                message = check.message
+        cls = _ERRORS.get(status, SingularError)
+        return cls(f"{self.name}{where}: {message}")
+
+
+def _first_index(mask, shape):
+    flat = int(np.flatnonzero(np.asarray(mask).ravel())[0])
+    return tuple(int(i) for i in np.unravel_index(flat, shape)) if shape else ()
+
+
+def book_routine(name: str, *, listing: str, lines: str, inputs: Sequence[str],
+                 outputs: Sequence[str], scalar, sweep, doc: str,
+                 defaults: Mapping[str, float] | None = None, **options):
+    """Declare a book routine and return its Python function.
+
+    Parameters
+    ----------
+    name, listing, lines
+        The book's name (``"DVKT"``), listing number (``"II.11"``) and book lines.
+    inputs, outputs
+        The book's input and output names, in the book's order.
+    scalar, sweep
+        The f2py routine for one position (book argument order, trailing IER if
+        ``has_status``) and the sweep routine over 1-D arrays.
+    doc
+        The numpydoc docstring.
+    defaults
+        Default values of trailing inputs (``AAA`` gets 1.0, "do not print", if present).
+    options
+        ``lengths`` (must be > 0), ``nonnegative``, ``integers`` ({name: allowed}),
+        ``checks`` (:class:`Check`), ``messages`` ({status: text}), ``has_status``,
+        ``function`` (the book routine is a FUNCTION), ``report`` (callable(inputs, outputs) -> text, printed for AAA = 0),
+        ``sweep_inputs`` (the inputs the sweep takes, if not all).
+    """
+    spec = Routine(name, listing, lines, inputs, outputs, scalar, sweep, **options)
+    defaults = dict(defaults or {})
+    if "AAA" in spec.inputs:
+        defaults.setdefault("AAA", 1.0)
+    params = []
+    for arg in spec.inputs:
+        params.append(f"{arg}={defaults[arg]!r}" if arg in defaults else arg)
+    arglist = ", ".join(spec.inputs)
+    source = (f"def {name}({', '.join(params)}, *, on_error='raise'):\n"
+              f"    return _spec(({arglist},), on_error)\n")
+    namespace = {"_spec": spec}
+    exec(source, namespace)  # a real signature: help() and inspect show the book's names
+    function = namespace[name]
+    function.__doc__ = doc
+    function.__module__ = "sarkp"
+    function.spec = spec
+    return function
