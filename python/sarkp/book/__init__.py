@@ -1,0 +1,44 @@
+"""The book's example programs as runnable reproductions, and its printed figures.
+
+Each program module has ``LISTING``, ``TITLE``, ``FIGURES`` (the figure numbers it
+prints), ``cells()`` (the computed table as ``{(row, column): value}``, keyed as in the
+figure's data file) and ``render()`` (the printout in the book's layout).  Both run in
+the current mode (see :mod:`sarkp.modes`); the book's programs are meant to be run
+as printed.
+"""
+
+from __future__ import annotations
+
+import importlib
+
+from .figures import Figure, compare, load_figure
+
+#: listing -> module of sarkp.book
+PROGRAMS = {
+    "II.13": "prog_ii_13",
+}
+
+#: figure number -> listing of the program that prints it
+FIGURES = {
+    "4": "II.13",
+}
+
+
+def program(listing: str):
+    """The module of the program with this listing number (e.g. ``"II.13"``)."""
+    key = listing.upper().replace("П", "II")
+    if key not in PROGRAMS:
+        raise ValueError(f"no book program {listing!r}; known: {', '.join(PROGRAMS)}")
+    return importlib.import_module(f".{PROGRAMS[key]}", __name__)
+
+
+def figure_program(number: str):
+    """The program module that prints figure ``number``."""
+    key = str(number)
+    if key not in FIGURES:
+        raise ValueError(f"no figure {number!r} is reproduced; known: {', '.join(FIGURES)}")
+    return program(FIGURES[key])
+
+
+__all__ = ["PROGRAMS", "FIGURES", "program", "figure_program", "Figure", "load_figure",
+           "compare"]

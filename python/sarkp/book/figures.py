@@ -1,0 +1,128 @@
+"""Printed figures as data, and the cell-by-cell comparison with a reproduction.
+
+A figure is a CSV file in ``sarkp/book/data`` named ``fig<N>.csv``: ``#`` lines first
+(figure, caption, program, book lines, printed format), then one row per printed cell:
+
+``row,column,printed,decimals,line,ocr,errata,reproducible``
+
+``printed`` is the value as printed with OCR errors corrected (``ocr`` then holds what
+the OCR read), ``decimals`` the digits printed after the point, ``errata`` the ids of
+docs/ERRATA.md that explain the cell, ``reproducible`` = ``no`` where the printed
+program computed the cell wrongly in a way no run can repeat.
+"""
+
+from __future__ import annotations
+
+import csv
+from dataclasses import dataclass, field
+from importlib import resources
+
+
+@dataclass(frozen=True)
+class Cell:
+    row: str
+    column: str
+    printed: str
+    decimals: int
+    line: int
+    ocr: str
+    errata: str
+    reproducible: bool
+
+    @property
+    def value(self) -> float:
+        return float(self.printed)
+
+    @property
+    def unit(self) -> float:
+        """One unit of the last printed digit."""
+        return 10.0 ** -self.decimals
+
+
+@dataclass
+class Figure:
+    number: str
+    meta: dict
+    cells: list = field(default_factory=list)
+
+
+def load_figure(number: str) -> Figure:
+    """Read ``fig<number>.csv`` from the package data."""
+    text = resources.files("sarkp.book").joinpath("data", f"fig{number}.csv").read_text(
+        encoding="utf-8")
+    meta, body = {}, []
+    for line in text.splitlines():
+        if line.startswith("#"):
+            key, _, value = line[1:].partition(":")
+            if value and not key.startswith(" "):
+                meta[key.strip()] = value.strip()
+            elif value and key.strip() and key.strip() not in meta:
+                meta[key.strip()] = value.strip()
+        elif line.strip():
+            body.append(line)
+    figure = Figure(str(number), meta)
+    for r in csv.DictReader(body):
+        figure.cells.append(Cell(r["row"], r["column"], r["printed"], int(r["decimals"]),
+                                 int(r["line"]), r["ocr"], r["errata"],
+                                 r["reproducible"].strip().lower() == "yes"))
+    return figure
+
+
+@dataclass
+class Comparison:
+    cell: Cell
+    computed: float | None
+    units: float | None          # (computed - printed) in units of the last digit
+
+    @property
+    def matches(self) -> bool:
+        return self.units is not None and abs(self.units) <= 0.5 + 1e-9
+
+
+def compare(figure: Figure, computed: dict) -> list:
+    """Compare every printed cell with ``computed[(row, column)]``."""
+    out = []
+    for cell in figure.cells:
+        value = computed.get((cell.row, cell.column))
+        units = None if value is None else (value - cell.value) / cell.unit
+        out.append(Comparison(cell, value, units))
+    return out
+
+
+def report(figure: Figure, comparisons: list, mode: str,
+           corrected_differences: dict | None = None) -> tuple[str, int, int]:
+    """The text of a diff, and (matching, compared) counts of the reproducible cells.
+
+    ``corrected_differences`` ({column or "*": errata ids}) explains, in corrected mode,
+    the cells that differ because corrected mode fixes what the printed run did.
+    """
+    explain = corrected_differences if mode == "corrected" else None
+    lines = [f"Fig. {figure.number}: {figure.meta.get('caption', '')}",
+             f"program {figure.meta.get('program', '?')}, {mode} mode; "
+             f"printed as {figure.meta.get('printed format', '?')}; "
+             f"book lines {figure.meta.get('book lines', '?')}"]
+    compared = [c for c in comparisons if c.cell.reproducible]
+    skipped = [c for c in comparisons if not c.cell.reproducible]
+    matching = [c for c in compared if c.matches]
+    for c in compared:
+        if not c.matches:
+            why = c.cell.errata
+            if not why and explain:
+                why = explain.get(c.cell.column) or explain.get("*", "")
+            why = why or "unexplained"
+            got = "missing" if c.computed is None else f"{c.computed:.{c.cell.decimals + 2}f}"
+            diff = "" if c.units is None else f" ({c.units:+.1f} units)"
+            lines.append(f"  DIFFERS row {c.cell.row} {c.cell.column} (L{c.cell.line}): "
+                         f"printed {c.cell.printed}, computed {got}{diff} [{why}]")
+    for c in comparisons:
+        if c.cell.reproducible and c.matches and c.cell.ocr:
+            lines.append(f"  note    row {c.cell.row} {c.cell.column} (L{c.cell.line}): "
+                         f"OCR read {c.cell.ocr}, printed {c.cell.printed} "
+                         f"[{c.cell.errata}]")
+    if skipped:
+        reasons = sorted({e for c in skipped for e in c.cell.errata.split(";") if e})
+        columns = sorted({c.cell.column for c in skipped})
+        lines.append(f"  {len(skipped)} printed cells not reproducible, not compared "
+                     f"(columns {' '.join(columns)}; {', '.join(reasons)})")
+    lines.append(f"{len(matching)} of {len(compared)} cells match")
+    return "\n".join(lines), len(matching), len(compared)
