@@ -1,12 +1,1059 @@
-! kinematics.f90 -- placeholder, filled in by the chapter's work.
+! kinematics.f90 -- chapter 4, kinematics of the class-II Assur groups (listings IV.1-IV.20,
+! book lines L1440-3004): positions DPRM1-DPRM4 (+ DPRM5, an extension), velocities
+! DSKOR1-DSKOR5, accelerations DUSKR1-DUSKR5, and the combined DKNMA1-DKNMA5.
+!
+! Group kinds (book section 4.2, Figs. 14-18):
+!   1 RRR  external revolutes A, C; internal revolute B           (links 2 = AB, 3 = CB)
+!   2 RRP  external revolute A; B on a slider in the guide of link M
+!   3 RPR  slider 2 pivoted at A slides along link 3 pivoted at C (slotted lever)
+!   4 PRP  sliders 2, 3 on the guides of links M, N, joined at revolute B
+!   5 RPP  block 3 pivoted at C slides in link 2, which slides on the guide of link M
+!
+! Conventions (those of the book):
+!   * angles in radians from +x, counter-clockwise positive; a velocity or acceleration is
+!     a pair (modulus >= 0, direction angle); only omega (W*) and epsilon (E*) are signed;
+!   * arguments before AAA (or ANALOG) are inputs, the ones after it are outputs; AAA is the
+!     book's print flag and is not used here;
+!   * PI and PID2 come from prmtr (the book's COMMON /PRMTR/): 3.14159 in as-printed mode;
+!   * every 2x2 system is solved by GELG(Y, X, 2, 1, 0.0001, IER), as printed.
+!
+! Additions to the book (it reports no failure at all: ARCOS, SQRT or a division failed at
+! run time): a trailing IER, set to a prmtr status code --
+!   st_assembly     the links do not reach (the arccos/arcsin/sqrt argument is out of range);
+!   st_singular     GELG IER = -1 (dead centre, parallel guides, ...) or an undefined position;
+!   st_significance GELG IER > 0 (pivot <= 1e-4 of the largest coefficient), result kept;
+!   st_ok.
+! On st_assembly / st_singular every output is 0 (never NaN).
+!
+! Numerical rewrites that keep the book's mathematics (no ERRATA entry, the formulas are the
+! same): the triangle angles of DPRM1 and DKNMA1 are computed as atan2(height, projection)
+! with Kahan's stable Heron formula instead of ARCOS of the cosine law (ARCOS loses half the
+! digits near a flat triangle); the foot of the perpendicular in DPRM2/DKNMA2 is computed by
+! projection on the guide's unit vector instead of through TAN(FIM) (which fails for a
+! vertical guide); DPRM4/DKNMA4 write the guide lines as n.B = n.A + offset (the printed rows
+! multiplied by COS(FI)), so that a vertical guide works.
+!
+! ERRATA ids of this chapter: E-<ROUTINE>-<n>, listed in docs/errata_ch4.md.
 module kinematics
-  use prmtr, only: dp
+  use prmtr, only: dp, pi, pid2, printed_mode, book_sign, st_ok, st_assembly, st_singular, &
+                   st_significance
+  use operators, only: dugl1, dugl2, dugl3, dugl4, dugl5, dugol, domega, dvkt, dsmvkt
+  use gelg_mod, only: gelg
   implicit none
   private
-  public :: kinematics_placeholder
+  public :: dprm1, dprm2, dprm3, dprm4, dprm5
+  public :: dskor1, dskor2, dskor3, dskor4, dskor5
+  public :: duskr1, duskr2, duskr3, duskr4, duskr5
+  public :: dknma1, dknma2, dknma3, dknma4, dknma5
+
+  real(dp), parameter :: gelg_eps = 0.0001_dp     ! the tolerance of every GELG call (L1645 ...)
+
 contains
-  subroutine kinematics_placeholder(x)
-    real(dp), intent(inout) :: x
-    x = x
-  end subroutine kinematics_placeholder
+
+  ! ============================================================================
+  ! private helpers
+  ! ============================================================================
+
+  ! GELG(Y, X, 2, 1, 0.0001, IER) on the system
+  !   a11*y1 + a12*y2 = b1,  a21*y1 + a22*y2 = b2      (X(i,j) = aij, as the book fills X)
+  ! and the GELG code mapped to a status.
+  subroutine solve2(a11, a12, a21, a22, b1, b2, y1, y2, st)
+    real(dp), intent(in) :: a11, a12, a21, a22, b1, b2
+    real(dp), intent(out) :: y1, y2
+    integer, intent(out) :: st
+    real(dp) :: x(2, 2), y(2, 1)
+    integer :: ier
+    x(1, 1) = a11
+    x(1, 2) = a12
+    x(2, 1) = a21
+    x(2, 2) = a22
+    y(1, 1) = b1
+    y(2, 1) = b2
+    call gelg(y, x, 2, 1, gelg_eps, ier)
+    if (ier == -1) then
+      st = st_singular
+      y1 = 0.0_dp
+      y2 = 0.0_dp
+      return
+    end if
+    y1 = y(1, 1)
+    y2 = y(2, 1)
+    if (.not. (abs(y1) <= huge(y1) .and. abs(y2) <= huge(y2))) then
+      st = st_singular                            ! overflow: no finite answer
+      y1 = 0.0_dp
+      y2 = 0.0_dp
+    else if (ier > 0) then
+      st = st_significance
+    else
+      st = st_ok
+    end if
+  end subroutine solve2
+
+  ! A failure (assembly, singular) wins over a significance warning, which wins over ok.
+  pure integer function worse(s1, s2)
+    integer, intent(in) :: s1, s2
+    if (s1 /= st_ok .and. s1 /= st_significance) then
+      worse = s1
+    else if (s2 /= st_ok .and. s2 /= st_significance) then
+      worse = s2
+    else if (s1 == st_significance .or. s2 == st_significance) then
+      worse = st_significance
+    else
+      worse = st_ok
+    end if
+  end function worse
+
+  pure logical function failed(st)
+    integer, intent(in) :: st
+    failed = st /= st_ok .and. st /= st_significance
+  end function failed
+
+  ! Angles of the triangle with base d = AC and sides l2 = AB, l3 = CB:
+  !   anga = angle BAC, angc = angle BCA   (the book's UGBAC, UGBCA of the cosine law).
+  ! Height by Kahan's Heron formula, angles by atan2: accurate for flat triangles too.
+  ! st_assembly when the sides violate the triangle inequality by more than rounding.
+  subroutine tri_angles(d, l2, l3, anga, angc, st)
+    real(dp), intent(in) :: d, l2, l3
+    real(dp), intent(out) :: anga, angc
+    integer, intent(out) :: st
+    real(dp) :: a, b, c, t, f1, f2, f3, f4, area, h, pa, tol
+    anga = 0.0_dp
+    angc = 0.0_dp
+    if (.not. (d > 0.0_dp .and. l2 > 0.0_dp .and. l3 > 0.0_dp)) then
+      st = st_assembly
+      return
+    end if
+    ! sort a >= b >= c
+    a = d
+    b = l2
+    c = l3
+    if (a < b) then
+      t = a; a = b; b = t
+    end if
+    if (b < c) then
+      t = b; b = c; c = t
+    end if
+    if (a < b) then
+      t = a; a = b; b = t
+    end if
+    tol = 8.0_dp*epsilon(1.0_dp)*a
+    f1 = a + (b + c)
+    f2 = c - (a - b)
+    f3 = c + (a - b)
+    f4 = a + (b - c)
+    if (f2 < -tol) then
+      st = st_assembly                            ! the links do not reach
+      return
+    end if
+    f2 = max(f2, 0.0_dp)
+    area = 0.25_dp*sqrt(f1*f2*f3*f4)
+    h = 2.0_dp*area/d
+    pa = (d*d + (l2 - l3)*(l2 + l3))/(2.0_dp*d)  ! projection of AB on AC
+    anga = atan2(h, pa)
+    angc = atan2(h, d - pa)
+    st = st_ok
+  end subroutine tri_angles
+
+  ! The four-argument DUGL1 that DKNMA1-DKNMA3 call (L2598, L2698, L2775) is not the book's
+  ! II.3 DUGL1(X1, Y1, X2, Y2); the DKNMA comments name the helpers of textbook [1] (L2578).
+  ! From the geometry of all three calls (ERRATA E-DKNMA1-2) DUGL1(Y1, Y2, DX, FI) is the
+  ! direction, in [0, 2*PI), of the vector from point 1 (ordinate Y1) to point 2 (ordinate
+  ! Y2), where DX = X1 - X2 and FI is that direction modulo pi (its arctangent, redundant
+  ! and dropped here): DKNMA1 with it puts B at AB = RZ2, CB = RZ3; the opposite reading does
+  ! not.  Implemented through II.3 DUGL1 on the points (DX, Y1) -> (0, Y2).
+  pure real(dp) function dugl1_dx(y1, y2, dx)
+    real(dp), intent(in) :: y1, y2, dx
+    dugl1_dx = dugl1(dx, y1, 0.0_dp, y2)
+  end function dugl1_dx
+
+  ! Direction of the acceleration of a point at direction FI from the centre of a link
+  ! rotating with W, E: FI + sign(E)*(pi - atan(|E|/W**2)), i.e. the book's
+  ! DUGL3(FI, PI - ATAN(ABS(E)/W**2), E) (L2523, L2902), written with atan2 so that W = 0
+  ! gives FI +- pi/2 and E = 0 gives FI + pi (ERRATA E-DKNMA4-3, E-DKNMA5-4).
+  pure real(dp) function acc_dir(fi, w, e)
+    real(dp), intent(in) :: fi, w, e
+    acc_dir = dugl3(fi, pi - atan2(abs(e), w*w), e)
+  end function acc_dir
+
+  ! ============================================================================
+  ! positions
+  ! ============================================================================
+
+  ! IV.1 DPRM1, L1479-1505 (Table 7, Fig. 14).  Kind 1 (RRR) positions.
+  ! P is the assembly condition (L1477): P = -1 when A, B, C go clockwise, i.e. B lies on
+  ! the left of the directed line A -> C; P = +1 the mirror branch (only the sign of P is
+  ! used).  FI2 = direction A->B, FI3 = direction C->B, both DUGOL'd: in [0, 2*pi) for P = +1,
+  ! up to 3*pi for P = -1, as printed (Fig. 91 prints FICB = 3.14..3.84).
+  ! ERRATA: none in the code.  Cosine-law ARCOS replaced by tri_angles (same angles).
+  subroutine dprm1(xa, ya, xc, yc, rz2, rz3, p, aaa, fi2, fi3, xb, yb, ier)
+    real(dp), intent(in) :: xa, ya, xc, yc, rz2, rz3, p, aaa
+    real(dp), intent(out) :: fi2, fi3, xb, yb
+    integer, intent(out) :: ier
+    real(dp) :: rzac, fiac, ugbac, ugbca, q
+    fi2 = 0.0_dp; fi3 = 0.0_dp; xb = 0.0_dp; yb = 0.0_dp
+    call dvkt(xa, ya, xc, yc, rzac, fiac)
+    if (rzac == 0.0_dp) then
+      if (rz2 == rz3) then
+        ier = st_singular                         ! A = C, AB = CB: B anywhere on a circle
+      else
+        ier = st_assembly
+      end if
+      return
+    end if
+    call tri_angles(rzac, rz2, rz3, ugbac, ugbca, ier)
+    if (failed(ier)) return
+    q = book_sign(1.0_dp, p)
+    fiac = dugol(fiac)
+    fi2 = dugol(fiac - q*ugbac)
+    fi3 = dugol(fiac + q*ugbca - q*pi)
+    xb = xa + rz2*cos(fi2)
+    yb = ya + rz2*sin(fi2)
+  end subroutine dprm1
+
+  ! IV.2 DPRM2, L1531-1558 (Table 8, Fig. 15).  Kind 2 (RRP) positions.
+  ! The guide passes through K with direction FIM; B is RZ3*SIN(T) from the guide axis, on
+  ! the side of A.  Branch (L1543 "FIM is chosen along AB from A to B"): B lies ahead of the
+  ! foot O' of the perpendicular from A, in the direction FIM; pass FIM + pi for the other
+  ! branch.  Output order XB, YB, FI2 as in the code (Table 8's signature lists FI2 first).
+  ! FI2 in the DUGL5 range (-pi/2, 3*pi/2).
+  ! O' by projection on e(FIM) (the book's TAN(FIM) formula, same point, fails at FIM = pi/2).
+  ! ERRATA: none in the code.
+  subroutine dprm2(xa, ya, xk, yk, fim, rz2, rz3, t, aaa, xb, yb, fi2, ier)
+    real(dp), intent(in) :: xa, ya, xk, yk, fim, rz2, rz3, t, aaa
+    real(dp), intent(out) :: xb, yb, fi2
+    integer, intent(out) :: ier
+    real(dp) :: cm, sm, s, xo1, yo1, dao, r, fir, b, x, y, off
+    xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp
+    ier = st_ok
+    if (.not. (rz2 > 0.0_dp)) then
+      ier = st_assembly
+      return
+    end if
+    cm = cos(fim)
+    sm = sin(fim)
+    s = (xa - xk)*cm + (ya - yk)*sm
+    xo1 = xk + s*cm
+    yo1 = yk + s*sm
+    dao = hypot(xa - xo1, ya - yo1)
+    off = rz3*sin(t)
+    if (dao == 0.0_dp .and. off /= 0.0_dp) then
+      ier = st_singular                           ! A on the guide: side of the offset undefined
+      return
+    end if
+    r = dao - off
+    fir = dugl2(xa, ya, xo1, yo1)
+    if (abs(r) > rz2) then
+      if (abs(r) - rz2 > 8.0_dp*epsilon(1.0_dp)*max(rz2, abs(r))) then
+        ier = st_assembly                         ! B cannot reach the guide
+        return
+      end if
+      r = sign(rz2, r)
+    end if
+    b = sqrt((rz2 - r)*(rz2 + r))
+    x = r*cos(fir) + b*cm
+    y = r*sin(fir) + b*sm
+    fi2 = dugl5(x, y)
+    xb = xa + rz2*cos(fi2)
+    yb = ya + rz2*sin(fi2)
+  end subroutine dprm2
+
+  ! IV.3 DPRM3, L1577-1598 (Table 9, Fig. 16).  Kind 3 (RPR, slotted lever) positions.
+  ! RZ2*SIN(T) is the distance of A from the axis of link 3.  FI3 = FICA + P*angle BCA
+  ! (L1565): P = -1 puts A on the left of the axis direction FI3, P = +1 on the right.
+  ! FICA = direction C->A in (-pi, pi]; FI3 within pi/2 of FICA.
+  ! ERRATA: E-DPRM3-1 (OCR FIZ for FI3).
+  subroutine dprm3(xa, ya, xc, yc, rz2, t, p, aaa, rzac, fi3, fica, ier)
+    real(dp), intent(in) :: xa, ya, xc, yc, rz2, t, p, aaa
+    real(dp), intent(out) :: rzac, fi3, fica
+    integer, intent(out) :: ier
+    real(dp) :: h, s, ugbca
+    rzac = 0.0_dp; fi3 = 0.0_dp; fica = 0.0_dp
+    ier = st_ok
+    h = rz2*sin(t)
+    rzac = hypot(xa - xc, ya - yc)
+    if (rzac == 0.0_dp) then
+      if (h == 0.0_dp) then
+        ier = st_singular                         ! A = C: the axis direction is undefined
+      else
+        ier = st_assembly
+      end if
+      rzac = 0.0_dp
+      return
+    end if
+    s = h/rzac
+    if (abs(s) > 1.0_dp) then
+      if (abs(s) - 1.0_dp > 8.0_dp*epsilon(1.0_dp)) then
+        ier = st_assembly                         ! A farther from the axis than from C
+        rzac = 0.0_dp
+        return
+      end if
+      s = sign(1.0_dp, s)
+    end if
+    fica = dugl2(xc, yc, xa, ya)
+    ugbca = asin(s)
+    fi3 = fica + book_sign(1.0_dp, p)*ugbca
+  end subroutine dprm3
+
+  ! IV.4 DPRM4, L1622-1657 (Table 10, Fig. 17).  Kind 4 (PRP) positions.
+  ! Guide M through A with direction FIM, guide N through C with direction FIN; B is offset
+  ! RZ2*SIN(T2) (RZ3*SIN(T3)) along the left normal e(FIM + pi/2) (e(FIN + pi/2)).  VM, VN
+  ! are the instantaneous centres of the guide links; RVBM, FIVBM (RVBN, FIVBN) the radius
+  ! vector of B from them, FIV* = DUGOL(DUGL2(...)) in [0, 2*pi).  Unique position.
+  ! ERRATA: E-DPRM4-1 (X(1,2) = TAN(FIM): minus sign lost), E-DPRM4-2 (the line
+  ! X(2,2) = -TAN(FIN) missing), E-DPRM4-3 (OCR 1, 0 for 1.0).  Rows of the printed system
+  ! multiplied by COS(FIM), COS(FIN) (same lines; vertical guides allowed).
+  ! Parallel guides: st_singular.
+  subroutine dprm4(xvm, yvm, xa, ya, fim, xvn, yvn, xc, yc, fin, rz2, t2, rz3, t3, aaa, &
+                   xb, yb, rvbm, fivbm, rvbn, fivbn, ier)
+    real(dp), intent(in) :: xvm, yvm, xa, ya, fim, xvn, yvn, xc, yc, fin, rz2, t2, rz3, t3, aaa
+    real(dp), intent(out) :: xb, yb, rvbm, fivbm, rvbn, fivbn
+    integer, intent(out) :: ier
+    real(dp) :: sm, cm, sn, cn
+    xb = 0.0_dp; yb = 0.0_dp; rvbm = 0.0_dp; fivbm = 0.0_dp; rvbn = 0.0_dp; fivbn = 0.0_dp
+    sm = sin(fim); cm = cos(fim)
+    sn = sin(fin); cn = cos(fin)
+    ! unknowns (YB, XB) as printed:  cos(FI)*YB - sin(FI)*XB = cos(FI)*YA - sin(FI)*XA + d
+    call solve2(cm, -sm, cn, -sn, cm*ya - sm*xa + rz2*sin(t2), cn*yc - sn*xc + rz3*sin(t3), &
+                yb, xb, ier)
+    if (failed(ier)) return
+    rvbm = hypot(xb - xvm, yb - yvm)
+    fivbm = dugol(dugl2(xvm, yvm, xb, yb))
+    rvbn = hypot(xb - xvn, yb - yvn)
+    fivbn = dugol(dugl2(xvn, yvn, xb, yb))
+  end subroutine dprm4
+
+  ! DPRM5 -- EXTENSION, not in the book.  The book prints no position routine for kind 5
+  ! (L1659: "the coordinates of the joint centre C and of the guide fully determine the
+  ! linear and angular coordinates of the links"; Table 33, L6287, lists DPRM1-4 only).
+  ! Kind 5 (RPP): link 2 slides on the guide of link M (through A, direction FIM) and turns
+  ! with it; block 3, pivoted at C, slides in link 2 along FIM + T2.  Returned: K = (XK, YK),
+  ! the point where the slot axis through C meets the guide axis, and the slider
+  ! coordinates S2 (A -> K along e(FIM)) and S3 (K -> C along e(FIM + T2)), so that
+  ! C = A + S2*e(FIM) + S3*e(FIM + T2).  Argument order after DKNMA5 (XA, YA, FIM, XC, YC,
+  ! then T2 = ETA2).  SIN(T2) = 0 (slot parallel to the guide): st_singular.
+  ! For a fixed guide dS2/dt and -dS3/dt are the signed VC2CM, VC2C3 of DSKOR5.
+  subroutine dprm5(xa, ya, fim, xc, yc, t2, aaa, xk, yk, s2, s3, ier)
+    real(dp), intent(in) :: xa, ya, fim, xc, yc, t2, aaa
+    real(dp), intent(out) :: xk, yk, s2, s3
+    integer, intent(out) :: ier
+    xk = 0.0_dp; yk = 0.0_dp; s2 = 0.0_dp; s3 = 0.0_dp
+    call solve2(cos(fim), cos(fim + t2), sin(fim), sin(fim + t2), xc - xa, yc - ya, s2, s3, ier)
+    if (failed(ier)) return
+    xk = xa + s2*cos(fim)
+    yk = ya + s2*sin(fim)
+  end subroutine dprm5
+
+  ! ============================================================================
+  ! velocities
+  ! ============================================================================
+
+  ! IV.5 DSKOR1, L1692-1719 (Table 11, Fig. 19).  Kind 1 velocities:
+  ! v_A + v_BA = v_C + v_BC, v_BA _|_ AB, v_BC _|_ CB.  W2, W3 signed (ccw +).
+  ! ERRATA: none in the code.  Dead centre (FI2 = FI3 mod pi): st_singular.
+  subroutine dskor1(rz2, fi2, rz3, fi3, va, ala, vc, alc, aaa, vba, alba, vbc, albc, vb, alb, &
+                    w2, w3, ier)
+    real(dp), intent(in) :: rz2, fi2, rz3, fi3, va, ala, vc, alc, aaa
+    real(dp), intent(out) :: vba, alba, vbc, albc, vb, alb, w2, w3
+    integer, intent(out) :: ier
+    real(dp) :: y1, y2
+    vba = 0.0_dp; alba = 0.0_dp; vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp
+    w2 = 0.0_dp; w3 = 0.0_dp
+    call solve2(cos(fi2 + pid2), -cos(fi3 + pid2), sin(fi2 + pid2), -sin(fi3 + pid2), &
+                vc*cos(alc) - va*cos(ala), vc*sin(alc) - va*sin(ala), y1, y2, ier)
+    if (failed(ier)) return
+    alba = dugl3(fi2, pid2, y1)
+    vba = abs(y1)
+    albc = dugl3(fi3, pid2, y2)
+    vbc = abs(y2)
+    call dsmvkt(va, ala, vba, alba, vb, alb)
+    w2 = domega(rz2, vba, alba - fi2)
+    w3 = domega(rz3, vbc, albc - fi3)
+  end subroutine dskor1
+
+  ! IV.6 DSKOR2, L1740-1774 (Table 12, Fig. 20).  Kind 2 velocities:
+  ! v_A + v_BA = v_BM + v_BBM; VBM, ALBM = velocity of the guide point under B (0, 0 for a
+  ! fixed guide); VBBM, ALBBM = sliding velocity along FIM (ALBBM = FIM or FIM - pi).
+  ! ERRATA: E-DSKOR2-1 (printed header lacks VBA, ALBA: every call passes 15 arguments),
+  ! E-DSKOR2-2 (OCR DOMECA).  AB perpendicular to the guide: st_singular.
+  subroutine dskor2(va, ala, vbm, albm, rz2, fi2, fim, aaa, vba, alba, vbbm, albbm, vb, alb, &
+                    w2, ier)
+    real(dp), intent(in) :: va, ala, vbm, albm, rz2, fi2, fim, aaa
+    real(dp), intent(out) :: vba, alba, vbbm, albbm, vb, alb, w2
+    integer, intent(out) :: ier
+    real(dp) :: y1, y2
+    vba = 0.0_dp; alba = 0.0_dp; vbbm = 0.0_dp; albbm = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp
+    w2 = 0.0_dp
+    call solve2(cos(fi2 + pid2), -cos(fim), sin(fi2 + pid2), -sin(fim), &
+                vbm*cos(albm) - va*cos(ala), vbm*sin(albm) - va*sin(ala), y1, y2, ier)
+    if (failed(ier)) return
+    alba = dugl3(fi2, pid2, y1)
+    vba = abs(y1)
+    albbm = dugl4(fim, pi, y2)
+    vbbm = abs(y2)
+    w2 = domega(rz2, vba, alba - fi2)
+    call dsmvkt(va, ala, vba, alba, vb, alb)
+  end subroutine dskor2
+
+  ! IV.7 DSKOR3, L1805-1854 (Table 13, Fig. 21).  Kind 3 velocities:
+  ! v_A3 = v_A + v_A3A (along the axis FI3) = v_C + v_A3C (_|_ CA).  A3 = point of link 3 at A.
+  ! Pass FI3 as DPRM3 returned it (W3's sign is taken from ALA3C - FI3, as printed).
+  ! ERRATA: none in the code.  Singular only for A = C.
+  subroutine dskor3(xa, ya, xc, yc, va, ala, vc, alc, fi3, aaa, va3a, ala3a, va3c, ala3c, &
+                    va3, ala3, w3, ier)
+    real(dp), intent(in) :: xa, ya, xc, yc, va, ala, vc, alc, fi3, aaa
+    real(dp), intent(out) :: va3a, ala3a, va3c, ala3c, va3, ala3, w3
+    integer, intent(out) :: ier
+    real(dp) :: rzac, fica, y1, y2
+    va3a = 0.0_dp; ala3a = 0.0_dp; va3c = 0.0_dp; ala3c = 0.0_dp; va3 = 0.0_dp; ala3 = 0.0_dp
+    w3 = 0.0_dp
+    rzac = hypot(xa - xc, ya - yc)
+    if (rzac == 0.0_dp) then
+      ier = st_singular
+      return
+    end if
+    fica = dugl2(xc, yc, xa, ya)
+    call solve2(cos(fi3), -cos(fica + pid2), sin(fi3), -sin(fica + pid2), &
+                vc*cos(alc) - va*cos(ala), vc*sin(alc) - va*sin(ala), y1, y2, ier)
+    if (failed(ier)) return
+    ala3a = dugl4(fi3, pi, y1)
+    va3a = abs(y1)
+    ala3c = dugl3(fica, pid2, y2)
+    va3c = abs(y2)
+    w3 = domega(rzac, va3c, ala3c - fi3)
+    call dsmvkt(va, ala, va3a, ala3a, va3, ala3)
+  end subroutine dskor3
+
+  ! IV.8 DSKOR4, L1879-1918 (Table 14, Fig. 22).  Kind 4 velocities:
+  ! v_BM + v_BBM = v_BN + v_BBN, v_BM = WM x (B - VM), v_BN = WN x (B - VN).
+  ! ERRATA: E-DSKOR4-1 (header VBVM, ALBVM for VBBM, ALBBM), E-DSKOR4-2 (ALBVM = for
+  ! ALBM =), E-DSKOR4-3 (author: Y(1) uses ABS(WM) where ABS(WN) is meant),
+  ! E-DSKOR4-4 (OCR 8, 0, 0, 1 for 0.0001).  Parallel guides: st_singular.
+  subroutine dskor4(rvbm, fivbm, fim, rvbn, fivbn, fin, wm, wn, aaa, vbbm, albbm, vbbn, albbn, &
+                    vb, alb, ier)
+    real(dp), intent(in) :: rvbm, fivbm, fim, rvbn, fivbn, fin, wm, wn, aaa
+    real(dp), intent(out) :: vbbm, albbm, vbbn, albbn, vb, alb
+    integer, intent(out) :: ier
+    real(dp) :: vbm, albm, albn, y1, y2
+    vbbm = 0.0_dp; albbm = 0.0_dp; vbbn = 0.0_dp; albbn = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp
+    vbm = abs(wm)*rvbm
+    albm = dugl3(fivbm, pid2, wm)
+    albn = dugl3(fivbn, pid2, wn)
+    ! E-DSKOR4-3: the book's first factor is ABS(WM)
+    call solve2(cos(fim), -cos(fin), sin(fim), -sin(fin), &
+                abs(wn)*cos(albn)*rvbn - abs(wm)*cos(albm)*rvbm, &
+                abs(wn)*rvbn*sin(albn) - abs(wm)*rvbm*sin(albm), y1, y2, ier)
+    if (failed(ier)) return
+    albbm = dugl4(fim, pi, y1)
+    vbbm = abs(y1)
+    albbn = dugl4(fin, pi, y2)
+    vbbn = abs(y2)
+    call dsmvkt(vbm, albm, vbbm, albbm, vb, alb)
+  end subroutine dskor4
+
+  ! IV.9 DSKOR5, L1947-1978 (Table 15, Fig. 23).  Kind 5 velocities:
+  ! v_C2 = v_C3 + v_C2C3 (along FIM + T2) = v_CM + v_C2CM (along FIM), v_CM = WM x (C - VM).
+  ! Link M, link 2 and block 3 all turn with WM.
+  ! ERRATA: E-DSKOR5-1 (ALC3CM = for ALC2CM =).  SIN(T2) = 0: st_singular.
+  subroutine dskor5(xc3, yc3, xvm, yvm, fim, t2, wm, vc3, alc3, aaa, vc2c3, alc2c3, vc2cm, &
+                    alc2cm, vc2, alc2, ier)
+    real(dp), intent(in) :: xc3, yc3, xvm, yvm, fim, t2, wm, vc3, alc3, aaa
+    real(dp), intent(out) :: vc2c3, alc2c3, vc2cm, alc2cm, vc2, alc2
+    integer, intent(out) :: ier
+    real(dp) :: vcm, alcm, y1, y2
+    vc2c3 = 0.0_dp; alc2c3 = 0.0_dp; vc2cm = 0.0_dp; alc2cm = 0.0_dp; vc2 = 0.0_dp; alc2 = 0.0_dp
+    vcm = abs(wm)*hypot(xc3 - xvm, yc3 - yvm)
+    alcm = dugl3(dugl2(xvm, yvm, xc3, yc3), pid2, wm)
+    call solve2(cos(fim + t2), -cos(fim), sin(fim + t2), -sin(fim), &
+                vcm*cos(alcm) - vc3*cos(alc3), vcm*sin(alcm) - vc3*sin(alc3), y1, y2, ier)
+    if (failed(ier)) return
+    alc2c3 = dugl4(fim + t2, pi, y1)
+    vc2c3 = abs(y1)
+    alc2cm = dugl4(fim, pi, y2)
+    vc2cm = abs(y2)
+    call dsmvkt(vc3, alc3, vc2c3, alc2c3, vc2, alc2)
+  end subroutine dskor5
+
+  ! ============================================================================
+  ! accelerations
+  ! ============================================================================
+
+  ! IV.10 DUSKR1, L2017-2051 (Table 16, Fig. 24).  Kind 1 accelerations:
+  ! a_A + a^n_BA + a^t_BA = a_C + a^n_BC + a^t_BC.
+  ! ERRATA: E-DUSKR1-1 (author: ABCT = ABS(Y(1)) where Y(2) is meant; as-printed mode keeps
+  ! it, Fig. 91 was computed with it), E-DUSKR1-2 (OCR 8.0001), E-DUSKR1-3 (OCR DOMEQA).
+  subroutine duskr1(aa, ba, ac, bc, rz2, fi2, rz3, fi3, w2, w3, aaa, abat, bbat, abct, bbct, &
+                    ab, bb, e2, e3, ier)
+    real(dp), intent(in) :: aa, ba, ac, bc, rz2, fi2, rz3, fi3, w2, w3, aaa
+    real(dp), intent(out) :: abat, bbat, abct, bbct, ab, bb, e2, e3
+    integer, intent(out) :: ier
+    real(dp) :: y1, y2, a, b
+    abat = 0.0_dp; bbat = 0.0_dp; abct = 0.0_dp; bbct = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp
+    e2 = 0.0_dp; e3 = 0.0_dp
+    call solve2(cos(fi2 + pid2), -cos(fi3 + pid2), sin(fi2 + pid2), -sin(fi3 + pid2), &
+                ac*cos(bc) + w3**2*rz3*cos(fi3 - pi) - aa*cos(ba) - w2**2*rz2*cos(fi2 - pi), &
+                ac*sin(bc) + w3**2*rz3*sin(fi3 - pi) - aa*sin(ba) - w2**2*rz2*sin(fi2 - pi), &
+                y1, y2, ier)
+    if (failed(ier)) return
+    bbat = dugl3(fi2, pid2, y1)
+    abat = abs(y1)
+    bbct = dugl3(fi3, pid2, y2)
+    if (printed_mode /= 0) then
+      abct = abs(y1)          ! E-DUSKR1-1: as printed (L2043), Fig. 91's E3 depends on it
+    else
+      abct = abs(y2)          ! E-DUSKR1-1: corrected
+    end if
+    call dsmvkt(aa, ba, w2**2*rz2, fi2 - pi, a, b)
+    call dsmvkt(a, b, abat, bbat, ab, bb)
+    e2 = domega(rz2, abat, bbat - fi2)
+    e3 = domega(rz3, abct, bbct - fi3)
+  end subroutine duskr1
+
+  ! IV.11 DUSKR2, L2077-2119 (Table 17, Fig. 25).  Kind 2 accelerations:
+  ! a_A + a^n_BA + a^t_BA = a_BM + a^k + a^r.  ABM, BVM: acceleration of the guide point
+  ! under B; ABK, BVK: Coriolis acceleration of B relative to the guide, supplied by the
+  ! caller (2*|WM|*VBBM at DUGL3(ALBBM, pi/2, WM); 0, 0 for a non-rotating guide).
+  ! VBAT is the direction of a^t_BA, BVBM that of a^r (the author's B/V names, kept).
+  ! ERRATA: E-DUSKR2-1 (OCR F12, 1ER, DSMVKI).
+  subroutine duskr2(aa, ba, abm, bvm, abk, bvk, rz2, fi2, w2, fim, aaa, abat, vbat, abvm, &
+                    bvbm, e2, ab, bb, ier)
+    real(dp), intent(in) :: aa, ba, abm, bvm, abk, bvk, rz2, fi2, w2, fim, aaa
+    real(dp), intent(out) :: abat, vbat, abvm, bvbm, e2, ab, bb
+    integer, intent(out) :: ier
+    real(dp) :: y1, y2, a, b
+    abat = 0.0_dp; vbat = 0.0_dp; abvm = 0.0_dp; bvbm = 0.0_dp; e2 = 0.0_dp; ab = 0.0_dp
+    bb = 0.0_dp
+    call solve2(cos(fi2 + pid2), -cos(fim), sin(fi2 + pid2), -sin(fim), &
+                abm*cos(bvm) + abk*cos(bvk) - aa*cos(ba) - w2**2*rz2*cos(fi2 - pi), &
+                abm*sin(bvm) + abk*sin(bvk) - aa*sin(ba) - w2**2*rz2*sin(fi2 - pi), &
+                y1, y2, ier)
+    if (failed(ier)) return
+    vbat = dugl3(fi2, pid2, y1)
+    abat = abs(y1)
+    bvbm = dugl4(fim, pi, y2)
+    abvm = abs(y2)
+    e2 = domega(rz2, abat, vbat - fi2)
+    call dsmvkt(aa, ba, w2**2*rz2, fi2 - pi, a, b)
+    call dsmvkt(a, b, abat, vbat, ab, bb)
+  end subroutine duskr2
+
+  ! IV.12 DUSKR3, L2150-2184 (Table 18, Fig. 26).  Kind 3 accelerations:
+  ! a_A3 = a_A + a^k + a^r (along FI3) = a_C + a^n_A3C + a^t_A3C.  AA3AK, BA3AK: Coriolis
+  ! acceleration of A3 relative to A, supplied by the caller (2*|W3|*VA3A at
+  ! DUGL3(ALA3A, pi/2, W3), IV.15 L2529).
+  ! ERRATA: E-DUSKR3-1 (OCR BAZAR, BAZAK for BA3AR, BA3AK; DSMVWT).
+  subroutine duskr3(aa, ba, ac, bc, fi3, w3, rzac, fica, aa3ak, ba3ak, aaa, aa3ar, ba3ar, &
+                    aa3ct, ba3ct, e3, aa3, ba3, ier)
+    real(dp), intent(in) :: aa, ba, ac, bc, fi3, w3, rzac, fica, aa3ak, ba3ak, aaa
+    real(dp), intent(out) :: aa3ar, ba3ar, aa3ct, ba3ct, e3, aa3, ba3
+    integer, intent(out) :: ier
+    real(dp) :: y1, y2, a, b
+    aa3ar = 0.0_dp; ba3ar = 0.0_dp; aa3ct = 0.0_dp; ba3ct = 0.0_dp; e3 = 0.0_dp; aa3 = 0.0_dp
+    ba3 = 0.0_dp
+    call solve2(cos(fi3), -cos(fica + pid2), sin(fi3), -sin(fica + pid2), &
+                ac*cos(bc) + w3**2*rzac*cos(fica - pi) - aa*cos(ba) - aa3ak*cos(ba3ak), &
+                ac*sin(bc) + w3**2*rzac*sin(fica - pi) - aa*sin(ba) - aa3ak*sin(ba3ak), &
+                y1, y2, ier)
+    if (failed(ier)) return
+    ba3ar = dugl4(fi3, pi, y1)
+    aa3ar = abs(y1)
+    ba3ct = dugl3(fica, pid2, y2)
+    aa3ct = abs(y2)
+    e3 = domega(rzac, aa3ct, ba3ct - fica)
+    call dsmvkt(ac, bc, w3**2*rzac, fica - pi, a, b)
+    call dsmvkt(a, b, aa3ct, ba3ct, aa3, ba3)
+  end subroutine duskr3
+
+  ! IV.13 DUSKR4, L2221-2275 (Table 19, Fig. 27).  Kind 4 accelerations:
+  ! a_BM + a^k_M + a^r_M = a_BN + a^k_N + a^r_N; the guide points under B accelerate as
+  ! points of links rotating about VM, VN (exact when VM, VN are fixed pivots).
+  ! ABBMK, BBBMK (ABBNK, BBBNK): Coriolis accelerations, supplied by the caller.
+  ! ERRATA: E-DUSKR4-1 (author: DLT = PID2 + ATAN(...) -- the stray PID2 turns the guide
+  ! point's acceleration by pi), E-DUSKR4-2 (same for DLTA), E-DUSKR4-3 (header ABVMR,
+  ! BBVMR for ABBMR, BBBMR), E-DUSKR4-4 (ABBMK = ABS(Y(1)) for ABBMR =), E-DUSKR4-5
+  ! (DSMVKT(ABM, BVM, ...) for BBM).
+  subroutine duskr4(rvbm, fivbm, fim, rvbn, fivbn, fin, wm, em, wn, en, abbmk, bbbmk, abbnk, &
+                    bbbnk, aaa, abbmr, bbbmr, abbnr, bbbnr, ab, bb, ier)
+    real(dp), intent(in) :: rvbm, fivbm, fim, rvbn, fivbn, fin, wm, em, wn, en, abbmk, bbbmk
+    real(dp), intent(in) :: abbnk, bbbnk, aaa
+    real(dp), intent(out) :: abbmr, bbbmr, abbnr, bbbnr, ab, bb
+    integer, intent(out) :: ier
+    real(dp) :: abn, abm, dlt, dlta, bbm, bbn, y1, y2, a, b
+    abbmr = 0.0_dp; bbbmr = 0.0_dp; abbnr = 0.0_dp; bbbnr = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp
+    abn = rvbn*sqrt(wn**4 + en**2)
+    abm = rvbm*sqrt(wm**4 + em**2)
+    if (em == 0.0_dp) then
+      dlt = pid2
+    else
+      dlt = atan(wm**2/abs(em))                   ! E-DUSKR4-1: book PID2 + ATAN(...)
+    end if
+    bbm = dugl3(fivbm, pid2 + dlt, em)
+    if (en == 0.0_dp) then
+      dlta = pid2
+    else
+      dlta = atan(wn**2/abs(en))                  ! E-DUSKR4-2: book PID2 + ATAN(...)
+    end if
+    bbn = dugl3(fivbn, pid2 + dlta, en)
+    call solve2(cos(fim), -cos(fin), sin(fim), -sin(fin), &
+                abn*cos(bbn) + abbnk*cos(bbbnk) - abm*cos(bbm) - abbmk*cos(bbbmk), &
+                abn*sin(bbn) + abbnk*sin(bbbnk) - abm*sin(bbm) - abbmk*sin(bbbmk), &
+                y1, y2, ier)
+    if (failed(ier)) return
+    bbbmr = dugl4(fim, pi, y1)
+    abbmr = abs(y1)
+    bbbnr = dugl4(fin, pi, y2)
+    abbnr = abs(y2)
+    call dsmvkt(abm, bbm, abbmk, bbbmk, a, b)
+    call dsmvkt(a, b, abbmr, bbbmr, ab, bb)
+  end subroutine duskr4
+
+  ! IV.14 DUSKR5, L2308-2378 (Table 20, Fig. 28).  Kind 5 accelerations:
+  ! a_C2 = a_C3 + a^k_23 + a^r_23 = a_CM + a^k_2M + a^r_2M; the guide point under C
+  ! accelerates as a point of link M rotating about VM.  Argument order differs from DSKOR5
+  ! (FIM, WM, EM, T2 here; FIM, T2, WM there), as printed.
+  ! ERRATA: E-DUSKR5-1 (author: DLT = PID2 + ATAN(...), stray PID2 as in DUSKR4),
+  ! E-DUSKR5-2 (OCR WM * / *4 for WM ** 4).
+  subroutine duskr5(xc3, yc3, xvm, yvm, fim, wm, em, t2, ac3, bc3, ac2mk, bc2mk, ac23k, bc23k, &
+                    aaa, ac2c3r, bc2c3r, ac2cmr, bc2cmr, ac2, bc2, ier)
+    real(dp), intent(in) :: xc3, yc3, xvm, yvm, fim, wm, em, t2, ac3, bc3, ac2mk, bc2mk
+    real(dp), intent(in) :: ac23k, bc23k, aaa
+    real(dp), intent(out) :: ac2c3r, bc2c3r, ac2cmr, bc2cmr, ac2, bc2
+    integer, intent(out) :: ier
+    real(dp) :: acm, dlt, bcm, y1, y2, a, b
+    ac2c3r = 0.0_dp; bc2c3r = 0.0_dp; ac2cmr = 0.0_dp; bc2cmr = 0.0_dp; ac2 = 0.0_dp
+    bc2 = 0.0_dp
+    acm = hypot(xc3 - xvm, yc3 - yvm)*sqrt(wm**4 + em**2)
+    if (em == 0.0_dp) then
+      dlt = pid2
+    else
+      dlt = atan(wm**2/abs(em))                   ! E-DUSKR5-1: book PID2 + ATAN(...)
+    end if
+    bcm = dugl3(dugl2(xvm, yvm, xc3, yc3), pid2 + dlt, em)
+    call solve2(cos(fim + t2), -cos(fim), sin(fim + t2), -sin(fim), &
+                acm*cos(bcm) + ac2mk*cos(bc2mk) - ac3*cos(bc3) - ac23k*cos(bc23k), &
+                acm*sin(bcm) + ac2mk*sin(bc2mk) - ac3*sin(bc3) - ac23k*sin(bc23k), &
+                y1, y2, ier)
+    if (failed(ier)) return
+    bc2c3r = dugl4(fim + t2, pi, y1)
+    ac2c3r = abs(y1)
+    bc2cmr = dugl4(fim, pi, y2)
+    ac2cmr = abs(y2)
+    call dsmvkt(ac3, bc3, ac23k, bc23k, a, b)
+    call dsmvkt(a, b, ac2c3r, bc2c3r, ac2, bc2)
+  end subroutine duskr5
+
+  ! ============================================================================
+  ! combined: positions, velocities and (unless ANALOG = 1) accelerations
+  ! ============================================================================
+  ! The DKNMA routines come from textbook [1] (L2551): "in essence PRM, SKOR and USKR
+  ! combined, with essential differences in detail".  With ANALOG = 1.0 they return after
+  ! the velocities (the book's way of skipping work); the acceleration outputs are then 0.
+
+  ! IV.16 DKNMA1, L2553-2658.  Kind 1 (RRR).
+  ! Branch: P = +1 puts B on the LEFT of the directed line A -> C (A, B, C clockwise), the
+  ! opposite of DPRM1's P (checked: B = A + RZ2*e(FI_AC + P*angle A)); DKNMA1(P) = DPRM1(-P).
+  ! FI2, FI3 = DUGL2 directions in (-pi, pi] (DPRM1 gives DUGOL'd ones).
+  ! ABAN, ABCN: normal accelerations of B relative to A, C (directions FI2 + pi, FI3 + pi).
+  ! ERRATA: E-DKNMA1-1 (header AVAT, BVAT, AVCT, BVCT, VB for ABAT, BBAT, ABCT, BBCT, BB),
+  ! E-DKNMA1-2 (four-argument DUGL1, see dugl1_dx; FI = ATAN((YC-YA)/DX) not needed).
+  subroutine dknma1(xa, ya, xc, yc, rz2, rz3, va, ala, vc, alc, aa, ba, ac, bc, p, analog, &
+                    xb, yb, fi2, fi3, vba, alba, vbc, albc, vb, alb, w2, w3, abcn, aban, &
+                    abat, bbat, abct, bbct, ab, bb, e2, e3, ier)
+    real(dp), intent(in) :: xa, ya, xc, yc, rz2, rz3, va, ala, vc, alc, aa, ba, ac, bc, p
+    real(dp), intent(in) :: analog
+    real(dp), intent(out) :: xb, yb, fi2, fi3, vba, alba, vbc, albc, vb, alb, w2, w3
+    real(dp), intent(out) :: abcn, aban, abat, bbat, abct, bbct, ab, bb, e2, e3
+    integer, intent(out) :: ier
+    real(dp) :: rac, fik, ugbac, ugbca, xb1, yb1, y1, y2, prx, pry
+    integer :: st2
+    xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; fi3 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp
+    vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; w3 = 0.0_dp
+    abcn = 0.0_dp; aban = 0.0_dp; abat = 0.0_dp; bbat = 0.0_dp; abct = 0.0_dp; bbct = 0.0_dp
+    ab = 0.0_dp; bb = 0.0_dp; e2 = 0.0_dp; e3 = 0.0_dp
+    rac = hypot(xa - xc, ya - yc)
+    if (rac == 0.0_dp) then
+      if (rz2 == rz3) then
+        ier = st_singular
+      else
+        ier = st_assembly
+      end if
+      return
+    end if
+    fik = dugl1_dx(yc, ya, xc - xa) - pi/2.0_dp    ! E-DKNMA1-2: direction C->A, less pi/2
+    call tri_angles(rac, rz2, rz3, ugbac, ugbca, ier)
+    if (failed(ier)) return
+    xb1 = book_sign(1.0_dp, p)*rz2*sin(ugbac)
+    yb1 = rac - rz2*cos(ugbac)
+    xb = xb1*cos(fik) - yb1*sin(fik) + xc
+    yb = xb1*sin(fik) + yb1*cos(fik) + yc
+    fi2 = dugl2(xa, ya, xb, yb)
+    fi3 = dugl2(xc, yc, xb, yb)
+    call solve2(cos(fi2 + pi/2.0_dp), -cos(fi3 + pi/2.0_dp), sin(fi2 + pi/2.0_dp), &
+                -sin(fi3 + pi/2.0_dp), vc*cos(alc) - va*cos(ala), vc*sin(alc) - va*sin(ala), &
+                y1, y2, ier)
+    if (failed(ier)) then
+      xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; fi3 = 0.0_dp
+      return
+    end if
+    alba = dugl3(fi2, pi/2.0_dp, y1)
+    albc = dugl3(fi3, pi/2.0_dp, y2)
+    vba = abs(y1)
+    vbc = abs(y2)
+    prx = va*cos(ala) + vba*cos(alba)
+    pry = va*sin(ala) + vba*sin(alba)
+    vb = hypot(prx, pry)
+    alb = dugl5(prx, pry)
+    w2 = domega(rz2, vba, alba - fi2)
+    w3 = domega(rz3, vbc, albc - fi3)
+    if (analog == 1.0_dp) return
+    aban = w2**2*rz2
+    abcn = w3**2*rz3
+    call solve2(cos(fi2 + pi/2.0_dp), -cos(fi3 + pi/2.0_dp), sin(fi2 + pi/2.0_dp), &
+                -sin(fi3 + pi/2.0_dp), &
+                ac*cos(bc) + abcn*cos(fi3 + pi) - aa*cos(ba) - aban*cos(fi2 + pi), &
+                ac*sin(bc) + abcn*sin(fi3 + pi) - aa*sin(ba) - aban*sin(fi2 + pi), y1, y2, st2)
+    ier = worse(ier, st2)
+    if (failed(ier)) then
+      xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; fi3 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp
+      vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; w3 = 0.0_dp
+      aban = 0.0_dp; abcn = 0.0_dp
+      return
+    end if
+    bbat = dugl3(fi2, pi/2.0_dp, y1)
+    bbct = dugl3(fi3, pi/2.0_dp, y2)
+    abat = abs(y1)
+    abct = abs(y2)
+    prx = aa*cos(ba) + aban*cos(fi2 + pi) + abat*cos(bbat)
+    pry = aa*sin(ba) + aban*sin(fi2 + pi) + abat*sin(bbat)
+    ab = hypot(prx, pry)
+    bb = dugl5(prx, pry)
+    e2 = domega(rz2, abat, bbat - fi2)
+    e3 = domega(rz3, abct, bbct - fi3)
+  end subroutine dknma1
+
+  ! IV.17 DKNMA2, L2660-2747.  Kind 2 (RRP).
+  ! The guide passes through K with direction FIM and belongs to link M (omega WM); VBM, ALBM
+  ! and ABM, BBM are the velocity and acceleration of the guide point under B (exact for a
+  ! fixed guide: pass 0).  RZ3*SIN(ETA) offsets B from the guide axis along its LEFT normal
+  ! e(FIM + pi/2) (DPRM2 offsets towards A: the two agree when A is on the left or the
+  ! offset is 0).  Branch: P = +1 puts B ahead of the foot O' of the perpendicular from A
+  ! along FIM, P = -1 behind: DKNMA2(FIM, P = +1) = DPRM2(FIM), DKNMA2(FIM, P = -1) =
+  ! DPRM2(FIM + pi).  Coriolis ABK, BBK computed inside.  FI2 = DUGL2 direction A->B.
+  ! ERRATA: E-DKNMA2-1 (header ABBM, VBBM, AB, VB for ABBM, BBBM, AB, BB), E-DKNMA2-2
+  ! (OCR AA ** COS(BA), AE =, IF(ANALOG, EQ, 1.0)), E-DKNMA2-3 (author: the side of A is
+  ! taken as SIGN(AO1, FIK - FIM) with FIK from the four-argument DUGL1 in [0, 2*pi):
+  ! wrong for A on the right of a guide with FIM in (-pi/2, pi/2); fixed: signed offset
+  ! (A - O').e(FIM + pi/2)), E-DKNMA2-4 (author: E2 = DOMEGA(.., BBAT - FI2) with BBAT =
+  ! DUGL4(ALBA, PI, Y(1)) gets the wrong sign when ALBA = FI2 - pi/2 and Y(1) < 0; fixed:
+  ! the sign of SIN(BBAT - FI2)).
+  subroutine dknma2(xa, ya, xk, yk, fim, rz2, rz3, eta, va, ala, wm, vbm, albm, aa, ba, abm, &
+                    bbm, p, analog, xb, yb, fi2, vba, alba, vbbm, albbm, vb, alb, w2, aban, &
+                    abk, bbk, abat, bbat, abbm, bbbm, ab, bb, e2, ier)
+    real(dp), intent(in) :: xa, ya, xk, yk, fim, rz2, rz3, eta, va, ala, wm, vbm, albm, aa
+    real(dp), intent(in) :: ba, abm, bbm, p, analog
+    real(dp), intent(out) :: xb, yb, fi2, vba, alba, vbbm, albbm, vb, alb, w2, aban, abk, bbk
+    real(dp), intent(out) :: abat, bbat, abbm, bbbm, ab, bb, e2
+    integer, intent(out) :: ier
+    real(dp) :: cm, sm, s, xo1, yo1, so, yb1, xb1, c, y1, y2, vbx, vby, abx, aby
+    integer :: st2
+    xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp; vbbm = 0.0_dp
+    albbm = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; aban = 0.0_dp; abk = 0.0_dp
+    bbk = 0.0_dp; abat = 0.0_dp; bbat = 0.0_dp; abbm = 0.0_dp; bbbm = 0.0_dp; ab = 0.0_dp
+    bb = 0.0_dp; e2 = 0.0_dp
+    ier = st_ok
+    if (.not. (rz2 > 0.0_dp)) then
+      ier = st_assembly
+      return
+    end if
+    cm = cos(fim)
+    sm = sin(fim)
+    s = (xa - xk)*cm + (ya - yk)*sm
+    xo1 = xk + s*cm
+    yo1 = yk + s*sm
+    so = -(xa - xo1)*sm + (ya - yo1)*cm              ! E-DKNMA2-3: signed offset of A
+    yb1 = rz3*sin(eta)
+    c = (so - yb1)/rz2
+    if (abs(c) > 1.0_dp) then
+      if (abs(c) - 1.0_dp > 8.0_dp*epsilon(1.0_dp)) then
+        ier = st_assembly
+        return
+      end if
+      c = sign(1.0_dp, c)
+    end if
+    xb1 = book_sign(1.0_dp, p)*rz2*sqrt((1.0_dp - c)*(1.0_dp + c))   ! = P*RZ2*SIN(ARCOS(c))
+    xb = xb1*cm - yb1*sm + xo1
+    yb = xb1*sm + yb1*cm + yo1
+    fi2 = dugl2(xa, ya, xb, yb)
+    call solve2(cos(fi2 + pi/2.0_dp), -cm, sin(fi2 + pi/2.0_dp), -sm, &
+                vbm*cos(albm) - va*cos(ala), vbm*sin(albm) - va*sin(ala), y1, y2, ier)
+    if (failed(ier)) then
+      xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp
+      return
+    end if
+    vba = abs(y1)
+    alba = dugl3(fi2, pi/2.0_dp, y1)
+    vbbm = abs(y2)
+    albbm = dugl4(fim, pi, y2)
+    vbx = va*cos(ala) + vba*cos(alba)
+    vby = va*sin(ala) + vba*sin(alba)
+    vb = hypot(vbx, vby)
+    alb = dugl5(vbx, vby)
+    w2 = domega(rz2, vba, alba - fi2)
+    if (analog == 1.0_dp) return
+    aban = w2**2*rz2
+    abk = 2.0_dp*vbbm*abs(wm)
+    bbk = dugl3(albbm, pi/2.0_dp, wm)
+    call solve2(cos(alba), -cos(albbm), sin(alba), -sin(albbm), &
+                abm*cos(bbm) + abk*cos(bbk) - aa*cos(ba) - aban*cos(fi2 + pi), &
+                abm*sin(bbm) + abk*sin(bbk) - aa*sin(ba) - aban*sin(fi2 + pi), y1, y2, st2)
+    ier = worse(ier, st2)
+    if (failed(ier)) then
+      xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp; vbbm = 0.0_dp
+      albbm = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; aban = 0.0_dp; abk = 0.0_dp
+      bbk = 0.0_dp
+      return
+    end if
+    abat = abs(y1)
+    bbat = dugl4(alba, pi, y1)
+    abbm = abs(y2)
+    bbbm = dugl4(albbm, pi, y2)
+    abx = abm*cos(bbm) + abk*cos(bbk) + abbm*cos(bbbm)
+    aby = abm*sin(bbm) + abk*sin(bbk) + abbm*sin(bbbm)
+    ab = hypot(abx, aby)
+    bb = dugl5(abx, aby)
+    e2 = domega(rz2, abat, sin(bbat - fi2))            ! E-DKNMA2-4: book BBAT - FI2
+  end subroutine dknma2
+
+  ! IV.18 DKNMA3, L2749-2829.  Kind 3 (RPR, slotted lever).
+  ! B is the point of the axis of link 3 with AB = RZ2 and angle ABC = ETA (ETA = pi/2: B is
+  ! the foot of the perpendicular from A, RZ2 the offset).  Branch: P = +1 turns AB from AC
+  ! counter-clockwise, B = A + RZ2*e(FI_AC + P*angle A); DKNMA3(P) = DPRM3(-P) (opposite of
+  ! DPRM3's P).  RZBC = CB, FI3 = DUGL2 direction C->B (axis of link 3).  VAR, ALAR:
+  ! velocity of A3 relative to A (along the axis); VAC, ALAC: of A3 relative to C; VA3, ALA3
+  ! = v_C + v_A3C; AAK, BAK Coriolis; AAR, BAR relative; AACT, BACT tangential;
+  ! AA3, BA3 = a_A + a^k + a^r; AACN = W3**2*AC.
+  ! ERRATA: E-DKNMA3-1 (header lost ALAR, VAC between L2754 and L2755: 35 of 37
+  ! arguments), E-DKNMA3-2 (OMEGA for DOMEGA; X(1.1) for X(1,1)), E-DKNMA1-2 (the
+  ! four-argument DUGL1), E-DKNMA3-3 (author: BAR = DUGL4(ALAR, PID2, Y(1)), fixed to PI).
+  subroutine dknma3(xa, ya, xc, yc, rz2, eta, va, ala, vc, alc, aa, ba, ac, bc, p, analog, &
+                    xb, yb, rzbc, fi3, var, alar, vac, alac, w3, va3, ala3, aak, bak, aar, &
+                    bar, aact, bact, aa3, ba3, e3, aacn, ier)
+    real(dp), intent(in) :: xa, ya, xc, yc, rz2, eta, va, ala, vc, alc, aa, ba, ac, bc, p
+    real(dp), intent(in) :: analog
+    real(dp), intent(out) :: xb, yb, rzbc, fi3, var, alar, vac, alac, w3, va3, ala3, aak, bak
+    real(dp), intent(out) :: aar, bar, aact, bact, aa3, ba3, e3, aacn
+    integer, intent(out) :: ier
+    real(dp) :: rac, fik, s, ugbac, xb1, yb1, y1, y2, prx, pry, aa3x, aa3y
+    integer :: st2
+    xb = 0.0_dp; yb = 0.0_dp; rzbc = 0.0_dp; fi3 = 0.0_dp; var = 0.0_dp; alar = 0.0_dp
+    vac = 0.0_dp; alac = 0.0_dp; w3 = 0.0_dp; va3 = 0.0_dp; ala3 = 0.0_dp; aak = 0.0_dp
+    bak = 0.0_dp; aar = 0.0_dp; bar = 0.0_dp; aact = 0.0_dp; bact = 0.0_dp; aa3 = 0.0_dp
+    ba3 = 0.0_dp; e3 = 0.0_dp; aacn = 0.0_dp
+    ier = st_ok
+    rac = hypot(xa - xc, ya - yc)
+    if (rac == 0.0_dp) then
+      ier = st_singular
+      return
+    end if
+    fik = dugl1_dx(ya, yc, xa - xc)               ! E-DKNMA1-2: direction A->C
+    s = rz2/rac*sin(eta)
+    if (abs(s) > 1.0_dp) then
+      if (abs(s) - 1.0_dp > 8.0_dp*epsilon(1.0_dp)) then
+        ier = st_assembly
+        return
+      end if
+      s = sign(1.0_dp, s)
+    end if
+    ugbac = pi - eta - asin(s)
+    xb1 = rz2*cos(ugbac)
+    yb1 = book_sign(1.0_dp, p)*rz2*sin(ugbac)
+    xb = xb1*cos(fik) - yb1*sin(fik) + xa
+    yb = xb1*sin(fik) + yb1*cos(fik) + ya
+    rzbc = hypot(yb - yc, xb - xc)
+    if (rzbc == 0.0_dp) then
+      ier = st_singular                           ! B = C: the axis of link 3 is undefined
+      xb = 0.0_dp; yb = 0.0_dp
+      return
+    end if
+    fi3 = dugl2(xc, yc, xb, yb)
+    call solve2(cos(fi3), -cos((fik + pi) + pid2), sin(fi3), -sin((fik + pi) + pid2), &
+                vc*cos(alc) - va*cos(ala), vc*sin(alc) - va*sin(ala), y1, y2, ier)
+    if (failed(ier)) then
+      xb = 0.0_dp; yb = 0.0_dp; rzbc = 0.0_dp; fi3 = 0.0_dp
+      return
+    end if
+    var = abs(y1)
+    alar = dugl4(fi3, pi, y1)
+    vac = abs(y2)
+    alac = dugl3(fik + pi, pid2, y2)
+    w3 = domega(rac, vac, alac - (fik + pi))
+    prx = vc*cos(alc) + vac*cos(alac)
+    pry = vc*sin(alc) + vac*sin(alac)
+    va3 = hypot(prx, pry)
+    ala3 = dugl5(prx, pry)
+    if (analog == 1.0_dp) return
+    aak = 2.0_dp*var*abs(w3)
+    bak = dugl3(alar, pid2, w3)
+    aacn = w3**2*rac
+    call solve2(cos(alar), -cos((fik + pi) + pid2), sin(alar), -sin((fik + pi) + pid2), &
+                ac*cos(bc) + aacn*cos(fik) - aa*cos(ba) - aak*cos(bak), &
+                ac*sin(bc) + aacn*sin(fik) - aa*sin(ba) - aak*sin(bak), y1, y2, st2)
+    ier = worse(ier, st2)
+    if (failed(ier)) then
+      xb = 0.0_dp; yb = 0.0_dp; rzbc = 0.0_dp; fi3 = 0.0_dp; var = 0.0_dp; alar = 0.0_dp
+      vac = 0.0_dp; alac = 0.0_dp; w3 = 0.0_dp; va3 = 0.0_dp; ala3 = 0.0_dp; aak = 0.0_dp
+      bak = 0.0_dp; aacn = 0.0_dp
+      return
+    end if
+    aar = abs(y1)
+    bar = dugl4(alar, pi, y1)                     ! E-DKNMA3-3: book DUGL4(ALAR, PID2, Y(1))
+    aact = abs(y2)
+    bact = dugl3(fik + pi, pid2, y2)
+    aa3x = aa*cos(ba) + aak*cos(bak) + aar*cos(bar)
+    aa3y = aa*sin(ba) + aak*sin(bak) + aar*sin(bar)
+    aa3 = hypot(aa3x, aa3y)
+    ba3 = dugl5(aa3x, aa3y)
+    e3 = domega(rac, aact, bact - (fik + pi))
+  end subroutine dknma3
+
+  ! IV.19 DKNMA4, L2831-2929.  Kind 4 (PRP).
+  ! Guide M through A (direction FIM), guide N through C (FIN); offsets RZ2*SIN(ETA2),
+  ! RZ3*SIN(ETA3) along the left normals, as DPRM4.  The guide links are taken to rotate
+  ! about A and C (the book's model: exact when A, C are their fixed pivots, or WM = WN = 0).
+  ! Argument order WM, WN, EM, EN (DUSKR4: WM, EM, WN, EN), as printed.
+  ! VB2R, ALB2R (VB3R, ALB3R): velocity of B relative to guide M (N); AB2K.. Coriolis;
+  ! AB2R.. relative accelerations; AB, BB = a_BM + a^k_M + a^r_M.
+  ! ERRATA: E-DKNMA4-1 (header: missing comma after RZ3, MN for WN, missing parenthesis;
+  ! PAB for RAB; "- -"), E-DKNMA4-2 (BB = DUGL5(VBX, VBY) for DUGL5(ABX, ABY)),
+  ! E-DKNMA4-3 (author: IF (WM .EQ. 0) BBM = 0 -- wrong direction when WM = 0, EM /= 0;
+  ! same for N; fixed with acc_dir), E-DPRM4-1 analogue not needed (the DKNMA4 matrix has
+  ! its minus signs).  Rows multiplied by COS(FI) as in DPRM4.
+  subroutine dknma4(fim, xa, ya, fin, xc, yc, rz2, eta2, rz3, eta3, wm, wn, em, en, analog, &
+                    xb, yb, vb2r, alb2r, vb3r, alb3r, vb, alb, ab2k, bb2k, ab3k, bb3k, ab2r, &
+                    bb2r, ab3r, bb3r, ab, bb, ier)
+    real(dp), intent(in) :: fim, xa, ya, fin, xc, yc, rz2, eta2, rz3, eta3, wm, wn, em, en
+    real(dp), intent(in) :: analog
+    real(dp), intent(out) :: xb, yb, vb2r, alb2r, vb3r, alb3r, vb, alb, ab2k, bb2k, ab3k, bb3k
+    real(dp), intent(out) :: ab2r, bb2r, ab3r, bb3r, ab, bb
+    integer, intent(out) :: ier
+    real(dp) :: sm, cm, sn, cn, rab, cb, fi2, fi3, vbm, albm, vbn, albn, y1, y2, vbx, vby
+    real(dp) :: abm, abn, bbm, bbn, abx, aby
+    integer :: st2
+    xb = 0.0_dp; yb = 0.0_dp; vb2r = 0.0_dp; alb2r = 0.0_dp; vb3r = 0.0_dp; alb3r = 0.0_dp
+    vb = 0.0_dp; alb = 0.0_dp; ab2k = 0.0_dp; bb2k = 0.0_dp; ab3k = 0.0_dp; bb3k = 0.0_dp
+    ab2r = 0.0_dp; bb2r = 0.0_dp; ab3r = 0.0_dp; bb3r = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp
+    sm = sin(fim); cm = cos(fim)
+    sn = sin(fin); cn = cos(fin)
+    call solve2(cm, -sm, cn, -sn, cm*ya - sm*xa + rz2*sin(eta2), cn*yc - sn*xc + rz3*sin(eta3), &
+                yb, xb, ier)
+    if (failed(ier)) return
+    rab = hypot(xb - xa, yb - ya)
+    cb = hypot(xb - xc, yb - yc)
+    fi2 = dugl2(xa, ya, xb, yb)
+    fi3 = dugl2(xc, yc, xb, yb)
+    vbm = abs(wm)*rab
+    albm = dugl3(fi2, pid2, wm)
+    vbn = abs(wn)*cb
+    albn = dugl3(fi3, pid2, wn)
+    call solve2(cm, -cn, sm, -sn, vbn*cos(albn) - vbm*cos(albm), vbn*sin(albn) - vbm*sin(albm), &
+                y1, y2, st2)
+    ier = worse(ier, st2)
+    if (failed(ier)) then
+      xb = 0.0_dp; yb = 0.0_dp
+      return
+    end if
+    vb2r = abs(y1)
+    alb2r = dugl4(fim, pi, y1)
+    vb3r = abs(y2)
+    alb3r = dugl4(fin, pi, y2)
+    vbx = vbm*cos(albm) + vb2r*cos(alb2r)
+    vby = vbm*sin(albm) + vb2r*sin(alb2r)
+    vb = hypot(vbx, vby)
+    alb = dugl5(vbx, vby)
+    if (analog == 1.0_dp) return
+    abm = rab*sqrt(wm**4 + em**2)
+    abn = cb*sqrt(wn**4 + en**2)
+    bbn = acc_dir(fi3, wn, en)                    ! E-DKNMA4-3: book BBN = 0 if WN = 0
+    bbm = acc_dir(fi2, wm, em)                    ! E-DKNMA4-3: book BBM = 0 if WM = 0
+    ab2k = 2.0_dp*vb2r*abs(wm)
+    ab3k = 2.0_dp*vb3r*abs(wn)
+    bb2k = dugl3(alb2r, pid2, wm)
+    bb3k = dugl3(alb3r, pid2, wn)
+    call solve2(cos(alb2r), -cos(alb3r), sin(alb2r), -sin(alb3r), &
+                abn*cos(bbn) + ab3k*cos(bb3k) - abm*cos(bbm) - ab2k*cos(bb2k), &
+                abn*sin(bbn) + ab3k*sin(bb3k) - abm*sin(bbm) - ab2k*sin(bb2k), y1, y2, st2)
+    ier = worse(ier, st2)
+    if (failed(ier)) then
+      xb = 0.0_dp; yb = 0.0_dp; vb2r = 0.0_dp; alb2r = 0.0_dp; vb3r = 0.0_dp; alb3r = 0.0_dp
+      vb = 0.0_dp; alb = 0.0_dp; ab2k = 0.0_dp; bb2k = 0.0_dp; ab3k = 0.0_dp; bb3k = 0.0_dp
+      return
+    end if
+    ab2r = abs(y1)
+    bb2r = dugl4(alb2r, pi, y1)
+    ab3r = abs(y2)
+    bb3r = dugl4(alb3r, pi, y2)
+    abx = abm*cos(bbm) + ab2k*cos(bb2k) + ab2r*cos(bb2r)
+    aby = abm*sin(bbm) + ab2k*sin(bb2k) + ab2r*sin(bb2r)
+    ab = hypot(abx, aby)
+    bb = dugl5(abx, aby)                          ! E-DKNMA4-2: book DUGL5(VBX, VBY)
+  end subroutine dknma4
+
+  ! IV.20 DKNMA5, L2931-3002.  Kind 5 (RPP).  No position part (there is no DPRM5 in the
+  ! book).  XA, YA (a point of the guide), RZ3 and ETA3 are accepted and not used, as
+  ! printed.  ETA2 = T2 of DSKOR5 (slot direction FIM + ETA2); XR, YR = instantaneous centre
+  ! of link M.  VC, ALC = v_CM + v_C2CM (absolute velocity of C2); AC, BC = a_CM + a^k_2M +
+  ! a^r_2M.
+  ! ERRATA: E-DKNMA5-1 (header VC, AC for VC, ALC), E-DKNMA5-2 (FIRC = DUGL2(RC, PID2, WM)
+  ! -- wrong arguments; the direction VM->C as in DSKOR5 L1962), E-DKNMA5-3 (OCR ALMC,
+  ! DUGL4(FIM + ETA2), PI..), E-DKNMA5-4 (author: BCM = DUGL3(FIRC, PI - ATAN(EM/WM**2), EM)
+  ! lacks ABS, and EM = 0 gives BCM = 0 instead of FIRC + PI; fixed with acc_dir).
+  subroutine dknma5(xa, ya, fim, xc, yc, rz3, eta2, eta3, xr, yr, wm, em, vc3, alc3, ac3, bc3, &
+                    analog, vc2c3, alc2c3, vc2cm, alc2cm, vc, alc, ac2c3k, bc2c3k, ac2cmk, &
+                    bc2cmk, ac2c3r, bc2c3r, ac2cmr, bc2cmr, ac, bc, ier)
+    real(dp), intent(in) :: xa, ya, fim, xc, yc, rz3, eta2, eta3, xr, yr, wm, em, vc3, alc3
+    real(dp), intent(in) :: ac3, bc3, analog
+    real(dp), intent(out) :: vc2c3, alc2c3, vc2cm, alc2cm, vc, alc, ac2c3k, bc2c3k, ac2cmk
+    real(dp), intent(out) :: bc2cmk, ac2c3r, bc2c3r, ac2cmr, bc2cmr, ac, bc
+    integer, intent(out) :: ier
+    real(dp) :: rc, vcm, firc, alcm, y1, y2, acm, bcm, a, b
+    integer :: st2
+    vc2c3 = 0.0_dp; alc2c3 = 0.0_dp; vc2cm = 0.0_dp; alc2cm = 0.0_dp; vc = 0.0_dp; alc = 0.0_dp
+    ac2c3k = 0.0_dp; bc2c3k = 0.0_dp; ac2cmk = 0.0_dp; bc2cmk = 0.0_dp; ac2c3r = 0.0_dp
+    bc2c3r = 0.0_dp; ac2cmr = 0.0_dp; bc2cmr = 0.0_dp; ac = 0.0_dp; bc = 0.0_dp
+    rc = hypot(xc - xr, yc - yr)
+    vcm = abs(wm)*rc
+    firc = dugl2(xr, yr, xc, yc)                  ! E-DKNMA5-2: book DUGL2(RC, PID2, WM)
+    alcm = dugl3(firc, pid2, wm)
+    call solve2(cos(fim + eta2), -cos(fim), sin(fim + eta2), -sin(fim), &
+                vcm*cos(alcm) - vc3*cos(alc3), vcm*sin(alcm) - vc3*sin(alc3), y1, y2, ier)
+    if (failed(ier)) return
+    vc2c3 = abs(y1)
+    alc2c3 = dugl4(fim + eta2, pi, y1)
+    vc2cm = abs(y2)
+    alc2cm = dugl4(fim, pi, y2)
+    call dsmvkt(vcm, alcm, vc2cm, alc2cm, vc, alc)
+    if (analog == 1.0_dp) return
+    acm = rc*sqrt(wm**4 + em**2)
+    bcm = acc_dir(firc, wm, em)                   ! E-DKNMA5-4
+    ac2c3k = 2.0_dp*vc2c3*abs(wm)
+    bc2c3k = dugl3(alc2c3, pid2, wm)
+    bc2cmk = dugl3(alc2cm, pid2, wm)
+    ac2cmk = 2.0_dp*vc2cm*abs(wm)
+    call solve2(cos(alc2c3), -cos(alc2cm), sin(alc2c3), -sin(alc2cm), &
+                acm*cos(bcm) + ac2cmk*cos(bc2cmk) - ac3*cos(bc3) - ac2c3k*cos(bc2c3k), &
+                acm*sin(bcm) + ac2cmk*sin(bc2cmk) - ac3*sin(bc3) - ac2c3k*sin(bc2c3k), &
+                y1, y2, st2)
+    ier = worse(ier, st2)
+    if (failed(ier)) then
+      vc2c3 = 0.0_dp; alc2c3 = 0.0_dp; vc2cm = 0.0_dp; alc2cm = 0.0_dp; vc = 0.0_dp
+      alc = 0.0_dp; ac2c3k = 0.0_dp; bc2c3k = 0.0_dp; ac2cmk = 0.0_dp; bc2cmk = 0.0_dp
+      return
+    end if
+    ac2c3r = abs(y1)
+    bc2c3r = dugl4(alc2c3, pi, y1)
+    ac2cmr = abs(y2)
+    bc2cmr = dugl4(alc2cm, pi, y2)
+    call dsmvkt(acm, bcm, ac2cmk, bc2cmk, a, b)
+    call dsmvkt(a, b, ac2cmr, bc2cmr, ac, bc)
+  end subroutine dknma5
+
 end module kinematics

@@ -68,15 +68,17 @@ contains
   end function dugl1
 
   ! II.4, L572-588.  Signed direction of (X1,Y1) -> (X2,Y2) in [-pi, pi].
+  ! The listing computes SIGN(ACOS((X2-X1)/DL), Y2-Y1), which is atan2 written with an
+  ! arccosine: near 0 and pi the arccosine loses up to half the digits (a direction of
+  ! 1e-10 rad comes out as 0).  ATAN2 gives the same angle to full precision (ERRATA
+  ! E-DUGL2-1).  Adding +0 turns a -0.0 into +0.0, so Y2 = Y1 still gives +pi, as
+  ! FORTRAN IV's SIGN did.  Coincident points give 0 (the Python layer raises first).
   pure real(dp) function dugl2(x1, y1, x2, y2)
     real(dp), intent(in) :: x1, y1, x2, y2
-    real(dp) :: dl
-    dl = hypot(x2 - x1, y2 - y1)
-    if (dl == 0.0_dp) then
+    if (x2 == x1 .and. y2 == y1) then
       dugl2 = 0.0_dp
     else
-      ! min/max: rounding can put the cosine a hair outside [-1, 1]
-      dugl2 = book_sign(acos(max(-1.0_dp, min(1.0_dp, (x2 - x1)/dl))), y2 - y1)
+      dugl2 = atan2((y2 - y1) + 0.0_dp, x2 - x1)
     end if
   end function dugl2
 

@@ -29,6 +29,10 @@ module synthesis
 
   real(dp), parameter :: book_eps = 0.0001_dp       ! GELG tolerance of every call (L525)
 
+  ! The crank pivot A found by the last DSNTZ2 call: the book prints XA, YA in DSNTZ2's
+  ! report (L1174-1179) but does not return them; the Python layer reads them here.
+  real(dp), public :: dsntz2_xa = 0.0_dp, dsntz2_ya = 0.0_dp
+
 contains
 
   ! ---- private helpers -------------------------------------------------------------
@@ -224,6 +228,8 @@ contains
     l1 = 0.0_dp
     l2 = 0.0_dp
     lo = 0.0_dp
+    dsntz2_xa = 0.0_dp
+    dsntz2_ya = 0.0_dp
     ier = st_requirement
     if (.not. (kw3 > 1.0_dp .and. l3 > 0.0_dp)) return
     beta = pi*(kw3 - 1.0_dp)/(kw3 + 1.0_dp)
@@ -240,6 +246,8 @@ contains
     if (ier == st_singular) return                   ! the two lines are parallel
     xa = c(1)
     ya = c(2)
+    dsntz2_xa = xa
+    dsntz2_ya = ya
     ac1 = hypot(xc1 - xa, yc1 - ya)
     ac2 = hypot(xc2 - xa, yc2 - ya)
     l1 = 0.5_dp*(ac1 - ac2)
@@ -249,6 +257,8 @@ contains
       l1 = 0.0_dp
       l2 = 0.0_dp
       lo = 0.0_dp
+      dsntz2_xa = 0.0_dp
+      dsntz2_ya = 0.0_dp
       ier = st_requirement
       return
     end if

@@ -1,0 +1,86 @@
+"""GELG over LAPACK: solutions, and the SSP meaning of IER."""
+
+import numpy as np
+import pytest
+
+import sarkp
+from sarkp import GELG, _sarkp
+
+
+@pytest.mark.parametrize("m", range(1, 9))
+@pytest.mark.parametrize("n", [1, 2, 3])
+def test_random_well_conditioned_systems(m, n):
+    rng = np.random.default_rng(100 * m + n)
+    for _ in range(20):
+        a = rng.standard_normal((m, m)) + m * np.eye(m)
+        r = rng.standard_normal((m, n))
+        x, ier = GELG(r, a, m, n, 1e-4)
+        assert ier == 0
+        exact = np.linalg.solve(a, r)
+        np.testing.assert_allclose(x, exact, rtol=1e-12, atol=1e-12 * np.abs(exact).max())
+
+
+def test_the_books_call_shape():
+    # CALL GELG(C, A, 2, 1, 0.0001, IER) with C(2): one right-hand side as a vector
+    x, ier = GELG([1.0, 2.0], [[2.0, 1.0], [1.0, 3.0]], 2, 1, 0.0001)
+    assert ier == 0 and x.shape == (2,)
+    np.testing.assert_allclose(x, [0.2, 0.6], rtol=1e-15)
+
+
+def test_exactly_singular_gives_minus_one_and_leaves_r():
+    r = np.array([1.0, 2.0, 3.0])
+    a = np.array([[1.0, 2.0, 3.0], [2.0, 4.0, 6.0], [1.0, 0.0, 1.0]])
+    x, ier = GELG(r, a, 3, 1, 1e-4)
+    assert ier == -1
+    np.testing.assert_array_equal(x, r)
+
+
+def test_zero_matrix_gives_minus_one():
+    assert GELG([1.0], [[0.0]], 1, 1, 1e-4).IER == -1
+
+
+@pytest.mark.parametrize("m", [0, -3])
+def test_m_below_one_gives_minus_one(m):
+    assert GELG([1.0], [[1.0]], m, 1, 1e-4).IER == -1
+
+
+@pytest.mark.parametrize("m, rank", [(2, 1), (3, 1), (3, 2), (5, 3), (8, 6)])
+def test_nearly_singular_reports_the_numerical_rank(m, rank):
+    """A = U diag(s) V^T with m - rank singular values of 1e-9: SSP's IER = rank."""
+    rng = np.random.default_rng(m * 10 + rank)
+    u, _ = np.linalg.qr(rng.standard_normal((m, m)))
+    v, _ = np.linalg.qr(rng.standard_normal((m, m)))
+    s = np.r_[np.linspace(2.0, 1.0, rank), np.full(m - rank, 1e-9)]
+    a = u @ np.diag(s) @ v.T
+    r = rng.standard_normal(m)
+    x, ier = GELG(r, a, m, 1, 1e-4)
+    assert ier == rank
+    # the solution is still returned, and solves the system as well as rounding allows
+    np.testing.assert_allclose(a @ x, r, atol=1e-6 * np.abs(x).max() * np.abs(a).max())
+
+
+def test_the_tolerance_decides_the_warning():
+    a = [[1.0, 0.0], [0.0, 1e-3]]
+    assert GELG([1.0, 1.0], a, 2, 1, 1e-4).IER == 0
+    assert GELG([1.0, 1.0], a, 2, 1, 1e-2).IER == 1
+
+
+def test_one_by_one_never_warns():
+    # SSP warns at step K+1 with IER = K: a 1x1 system has no second step
+    assert GELG([3.0], [[1e-10]], 1, 1, 1e-4) == (pytest.approx([3e10]), 0)
+
+
+def test_lapack_errors_never_print_or_stop():
+    """XERBLA is ours: a bad LAPACK argument comes back as INFO < 0, nothing printed."""
+    before = int(_sarkp.gelg_mod.xerbla_calls)
+    assert _sarkp.gelg_mod.lapack_probe() == -1
+    assert int(_sarkp.gelg_mod.xerbla_calls) == before + 1
+    assert bytes(_sarkp.gelg_mod.xerbla_last_routine).strip() == b"DGETRF"
+
+
+def test_bad_input():
+    with pytest.raises(ValueError, match="A"):
+        GELG([1.0, 1.0], [[1.0, np.nan], [0.0, 1.0]], 2, 1, 1e-4)
+    with pytest.raises(ValueError, match="shape"):
+        GELG([1.0, 1.0], [[1.0, 0.0]], 2, 1, 1e-4)
+    assert issubclass(sarkp.SingularError, sarkp.SarkpError)

@@ -1,0 +1,47 @@
+"""A double with 16 significant digits survives every wrapper where the routine is the
+identity on it.  Without .f2py_f2cmap, f2py maps real(dp) to C float and this fails."""
+
+import math
+
+import numpy as np
+import pytest
+
+import sarkp
+
+X = 0.1234567890123456          # 16 significant digits; as a float it would be 0.12345679
+ARR = np.array([X, 2 * X, 3 * X])
+
+# (routine, arguments, index of the output that must equal X)
+IDENTITIES = [
+    ("DUGL3", (X, 0.0, 1.0)),                 # UGOL1 + |0|
+    ("DUGL4", (X, 1.0, 1.0)),                 # UGOL1 for VEL >= 0
+    ("DUGOL", (X,)),                          # non-negative: unchanged
+    ("DOMEGA", (1.0, X, 1.0)),                # |X / 1|
+    ("DMOMNT", (1.0, 0.0, X, math.pi / 2)),   # 1 * cos 0 * X * sin(pi/2) - 0
+    ("DVKT", (0.0, 0.0, X, 0.0)),             # RZ = X
+    ("DSMVKT", (X, 0.0, 0.0, 0.0)),           # L = X
+]
+
+
+@pytest.mark.parametrize("name, args", IDENTITIES, ids=[i[0] for i in IDENTITIES])
+def test_scalar_round_trip(name, args):
+    assert getattr(sarkp, name)(*args)[0] == X
+
+
+@pytest.mark.parametrize("name, args", IDENTITIES, ids=[i[0] for i in IDENTITIES])
+def test_array_round_trip(name, args):
+    arrays = [ARR * (a / X) if a == X else a for a in args]
+    out = getattr(sarkp, name)(*arrays)[0]
+    np.testing.assert_array_equal(out, ARR)
+
+
+def test_direction_functions_keep_double_precision():
+    assert sarkp.DUGL2(0.0, 0.0, 1.0, X).DUGL2 == math.atan2(X, 1.0)
+    assert sarkp.DUGL1(0.0, 0.0, 1.0, X).DUGL1 == math.atan2(X, 1.0)
+    assert sarkp.DUGL5(1.0, X).DUGL5 == math.atan(X)
+
+
+def test_tables_round_trip():
+    assert sarkp.DINTGR(2, 1.0, 3, [0.0, X]).FINT[1] == X          # H * Y(2)
+    assert sarkp.DFRNCL(2, 1.0, [0.0, X]).FDIF[1] == X             # (Y(2) - Y(1)) / 1
+    assert sarkp.GELG([X], [[1.0]], 1, 1, 1e-4).R[0] == X
