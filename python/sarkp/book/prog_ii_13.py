@@ -63,13 +63,17 @@ def crank_angles(positions: int = 18) -> np.ndarray:
     return np.arange(positions) * (pi / 18.0)
 
 
-def compute(card=None, positions: int = 18) -> dict:
-    """Run the program in the current mode; return the columns by name (arrays)."""
+def compute(card=None, positions: int = 18, angles=None) -> dict:
+    """Run the program in the current mode; return the columns by name (arrays).
+
+    ``card`` overrides values of :data:`CARD`; ``angles`` replaces the book's crank
+    angles (radians) by any others.
+    """
     c = dict(CARD, **(card or {}))
     L1, L2, L3, LO, NU, LBD = (c[k] for k in ("L1", "L2", "L3", "LO", "NU", "LBD"))
     pi = book_pi()
     printed = get_mode() == "as-printed"
-    fi1 = crank_angles(positions)
+    fi1 = crank_angles(positions) if angles is None else np.asarray(angles, dtype=float)
     xa, ya = L1 * np.cos(fi1), L1 * np.sin(fi1)
     lac, fiac = DVKT(xa, ya, LO, 0.0)
     cos_delta = (L2**2 + lac**2 - L3**2) / (2.0 * L2 * lac)
