@@ -93,6 +93,10 @@ class Routine:
         # which inputs the sweep takes (default: all but the print flag AAA, in order)
         self.sweep_inputs = (tuple(sweep_inputs) if sweep_inputs
                              else tuple(a for a in self.inputs if a != "AAA"))
+        self._strict = bool(self.lengths or self.nonnegative or self.integers)
+        self._aaa_index = self.inputs.index("AAA") if "AAA" in self.inputs else None
+        if self.report is not None and self._aaa_index is None:
+            raise ValueError(f"{name}: a report needs the print flag AAA among the inputs")
         self.result = namedtuple(name, self.outputs)
         self.result_with_status = namedtuple(name + "_status", self.outputs + ("status",))
 
@@ -134,46 +138,52 @@ class Routine:
 
     # -- the call -----------------------------------------------------------------------
     def __call__(self, args, on_error="raise"):
-        if on_error not in ON_ERROR:
+        if on_error != "raise" and on_error != "nan":
             raise ValueError(f"{self.name}: on_error must be 'raise' or 'nan', "
                              f"not {on_error!r}")
-        if all(isinstance(a, _SCALAR_TYPES) for a in args):
-            return self._call_scalar(args, on_error)
-        return self._call_arrays(args, on_error)
+        # Scalars add up to a Python or NumPy scalar; any array (or list) does not.
+        try:
+            total = sum(args)
+        except TypeError:
+            return self._call_arrays(args, on_error)
+        if isinstance(total, np.ndarray) or not isinstance(total, _SCALAR_TYPES):
+            return self._call_arrays(args, on_error)
+        return self._call_scalar(args, total, on_error)
 
-    def _call_scalar(self, args, on_error):
-        values = [float(a) for a in args]
-        self._check_scalar(values)
-        if self.integers:
-            values = [int(v) if n in self.integers else v
-                      for n, v in zip(self.inputs, values)]
-        named = dict(zip(self.inputs, values))
+    def _call_scalar(self, args, total, on_error):
+        # The sum of the inputs is finite when every input is, except when it overflows:
+        # only then, or when some input has a range to respect, look at each one.
+        if self._strict or not math.isfinite(total):
+            values = [float(a) for a in args]
+            self._check_scalar(values)
+            args = [int(v) if n in self.integers else v
+                    for n, v in zip(self.inputs, values)]
         status = ST_OK
-        for check in self.checks:
-            if check.bad(**named):
-                status = check.status
-                break
+        if self.checks:
+            named = dict(zip(self.inputs, args))
+            for check in self.checks:
+                if check.bad(**named):
+                    status = check.status
+                    break
         if status == ST_OK:
-            out = self.scalar(*values)
+            out = self.scalar(*args)
             if self.function:
                 out = (out,)
-            elif not isinstance(out, tuple):
-                out = (out,)
-            if self.has_status:
-                status = int(out[-1])
+            elif self.has_status:
+                status = out[-1]
                 out = out[:-1]
-        if status not in (ST_OK, ST_SIGNIFICANCE):
-            if on_error == "raise":
-                raise self._error(status, None)
-            out = (math.nan,) * len(self.outputs)
-        elif status == ST_SIGNIFICANCE:
-            warnings.warn(f"{self.name}: {self.messages[ST_SIGNIFICANCE]}",
-                          SignificanceWarning, stacklevel=3)
-        out = tuple(float(x) for x in out)
-        if self.report is not None and "AAA" in named and named["AAA"] == 0.0:
-            print(self.report(named, out))
+        if status != ST_OK:
+            if status != ST_SIGNIFICANCE:
+                if on_error == "raise":
+                    raise self._error(status, None)
+                out = (math.nan,) * len(self.outputs)
+            else:
+                warnings.warn(f"{self.name}: {self.messages[ST_SIGNIFICANCE]}",
+                              SignificanceWarning, stacklevel=4)
+        if self.report is not None and args[self._aaa_index] == 0.0:
+            print(self.report(dict(zip(self.inputs, args)), out))
         if on_error == "nan":
-            return self.result_with_status(*out, status)
+            return self.result_with_status(*out, int(status))
         return self.result(*out)
 
     def _call_arrays(self, args, on_error):
@@ -190,7 +200,8 @@ class Routine:
         if not isinstance(out, tuple):
             out = (out,)
         if self.has_status:
-            status = np.maximum(status, np.asarray(out[-1]).reshape(shape))
+            # a failed check outranks whatever the routine computed there
+            status = np.where(status != ST_OK, status, np.asarray(out[-1]).reshape(shape))
             out = out[:-1]
         out = [np.asarray(o, dtype=float).reshape(shape) for o in out]
         failed = (status != ST_OK) & (status != ST_SIGNIFICANCE)
