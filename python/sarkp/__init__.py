@@ -10,6 +10,7 @@ from .modes import MODES, as_printed, get_mode, mode, set_mode
 from .operators import (DFRNCL, DINTGR, DMOMNT, DOMEGA, DSMVKT, DUGL1, DUGL2, DUGL3,
                         DUGL4, DUGL5, DUGOL, DVKT)
 from .solver import GELG
+from .synthesis import DSNTZ1, DSNTZ2, DSNTZ3, DSNTZK, DSNTZR
 
 __version__ = "0.1.0"
 
@@ -19,4 +20,6 @@ __all__ = [
     # chapter 2
     "DINTGR", "DFRNCL", "DUGL1", "DUGL2", "DUGL3", "DUGL4", "DUGL5", "DUGOL", "DMOMNT",
     "DOMEGA", "DVKT", "DSMVKT",
+    # chapter 3
+    "DSNTZR", "DSNTZ1", "DSNTZ2", "DSNTZ3", "DSNTZK",
 ]

@@ -158,12 +158,12 @@ class Routine:
             self._check_scalar(values)
             args = [int(v) if n in self.integers else v
                     for n, v in zip(self.inputs, values)]
-        status = ST_OK
+        status, failed_check = ST_OK, None
         if self.checks:
             named = dict(zip(self.inputs, args))
             for check in self.checks:
                 if check.bad(**named):
-                    status = check.status
+                    status, failed_check = check.status, check
                     break
         if status == ST_OK:
             out = self.scalar(*args)
@@ -175,7 +175,7 @@ class Routine:
         if status != ST_OK:
             if status != ST_SIGNIFICANCE:
                 if on_error == "raise":
-                    raise self._error(status, None)
+                    raise self._error(status, None, failed_check)
                 out = (math.nan,) * len(self.outputs)
             else:
                 warnings.warn(f"{self.name}: {self.messages[ST_SIGNIFICANCE]}",
@@ -192,9 +192,11 @@ class Routine:
         self._check_arrays(arrays, shape)
         named = dict(zip(self.inputs, arrays))
         status = np.zeros(shape, dtype=np.int32)
-        for check in self.checks:
+        failed_check = np.full(shape, -1, dtype=np.int8)     # which check failed where
+        for k, check in enumerate(self.checks):
             bad = np.asarray(check.bad(**named), dtype=bool) & (status == ST_OK)
             status[bad] = check.status
+            failed_check[bad] = k
         flat = [np.ascontiguousarray(named[n]).ravel() for n in self.sweep_inputs]
         out = self.sweep(*flat)
         if not isinstance(out, tuple):
@@ -208,7 +210,8 @@ class Routine:
         if failed.any():
             if on_error == "raise":
                 idx = _first_index(failed, shape)
-                raise self._error(int(status[idx]), idx)
+                k = int(failed_check[idx])
+                raise self._error(int(status[idx]), idx, self.checks[k] if k >= 0 else None)
             for o in out:
                 o[failed] = np.nan
         if (status == ST_SIGNIFICANCE).any():
@@ -219,12 +222,13 @@ class Routine:
             return self.result_with_status(*out, status)
         return self.result(*out)
 
-    def _error(self, status, index):
+    def _error(self, status, index, check=None):
+        """The exception for ``status``: the failed check's words, else the routine's."""
         where = "" if index is None else f" at index {list(index)}"
-        message = self.messages.get(status, STATUS_NAMES.get(status, f"status {status}"))
-        for check in self.checks:
-            if check.status == status:
-                message = check.message
+        if check is not None:
+            message = check.message
+        else:
+            message = self.messages.get(status, STATUS_NAMES.get(status, f"status {status}"))
         cls = _ERRORS.get(status, SingularError)
         return cls(f"{self.name}{where}: {message}")
 

@@ -16,11 +16,13 @@ from .figures import Figure, compare, load_figure
 #: listing -> module of sarkp.book
 PROGRAMS = {
     "II.13": "prog_ii_13",
+    "III.5": "prog_iii_5",
 }
 
 #: figure number -> listing of the program that prints it
 FIGURES = {
     "4": "II.13",
+    "10": "III.5",
 }
 
 

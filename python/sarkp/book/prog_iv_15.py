@@ -1,0 +1,225 @@
+"""Program IV.15 (L2476-2545): kinematics of the mechanism of Fig. 29, groups of all five kinds.
+
+The book's main program (described at L2380-2472, listed at L2476-2545, explained at
+L2549) computes, for 25 positions of the crank, the positions, velocities and
+accelerations of the mechanism of Fig. 29 by calling one routine of chapter 4 per group:
+
+* crank 1 about the origin O: A at OA = ROA in the direction FI, M at OM = ROM in the
+  direction FI + PI; the crank turns CLOCKWISE (``5 FI = FI - DFI``) at W1 = 2 rad/s,
+  so v_A = W1*ROA at FI - PI/2, v_M = W1*ROM at FI + PI/2, a_A at FI - PI, a_M at FI;
+* kind 1 (links 2, 3): AB = RAB, rocker FB = RBF about F = (ROF, 0), branch P = -1
+  (DPRM1, DSKOR1, DUSKR1);
+* kind 2 (links 4, 5): C on link 3 at FC = RCF, CD = RCD, slider D on the fixed guide
+  y = A (DPRM2, DSKOR2, DUSKR2);
+* kind 5 (links 6, 7): H on link 3 at FH = RFG, block in the vertical slot (T2 = PI/2) of
+  a yoke that slides on the fixed guide y = 0; G is the yoke's point at H and L the
+  guide's (DSKOR5, DUSKR5; the book has no DPRM5, L1659);
+* kind 3 (links 8, 9): slider 8 pivoted at M slides along link 9 pivoted at
+  O1 = (0, -C); N is the point of link 9 under M (DPRM3, DSKOR3, DUSKR3);
+* kind 4 (links 10, 11): the joint P of a slider on link 9 and a slider on the fixed guide
+  y = -(C + D) (DPRM4, DSKOR4, DUSKR4; R is the pair 10-9, S the pair 11-frame, L5566).
+
+It prints five lines per position (PRINT 10, 11, 11, 11, 12 at L2534-2541), 125 lines in all.
+The book prints no output of this program (chapter 4 has no result figure), so
+:data:`FIGURES` is empty and nothing here is compared with printed numbers; the tests
+hold it against geometry and physics instead (tests/test_iv15.py).
+
+The listing as printed does not compile (docs/errata_iv15.md, E-IV15-1..12): a lost comma
+in the DPRM1 call, a missing argument of DUSKR5 and of DUSKR4, a DSKOR4 call with VPM
+for VPN, ``RGD`` in DATA for the RCD of the body, ``2.0 VNM * A(W9)`` and the like.
+Every one is corrected in both modes: no printed figure depends on them.  Corrected mode
+also evaluates the main program's own formula of the direction of a_C with ``atan2``, so
+that W3 = 0 (an extreme position of the rocker) does not divide by zero (E-IV15-13).
+
+As-printed mode gives the program as the book ran it: PI = 3.14159 (L2489), the crank
+angle accumulated by ``FI = FI - DFI`` in the ES EVM's REAL*4 arithmetic, and the
+library routines' own as-printed switches -- notably DUSKR1's ``ABCT = ABS(Y(1))``
+(ERRATA E-DUSKR1-1), which changes E3 and with it every acceleration of groups 2 and 5
+(AC, BC, E4, AD, BD, AGH, BGH, AG, BG).  Corrected mode: exact pi, FI = -k*2*pi/24.
+
+Two columns that are not in the book are computed for the tests: ``SGL`` and ``SGH``,
+the positions of the kind-5 group from ``DPRM5`` (an extension of sarkp): H = (SGL, SGH),
+i.e. the yoke's displacement along the guide and the block's along the slot.
+"""
+
+from __future__ import annotations
+
+import numpy as np
+
+from .. import DUGL3, get_mode
+from ..kinematics import (DPRM1, DPRM2, DPRM3, DPRM4, DPRM5, DSKOR1, DSKOR2, DSKOR3,
+                          DSKOR4, DSKOR5, DUSKR1, DUSKR2, DUSKR3, DUSKR4, DUSKR5)
+from ..modes import book_pi
+from ..report import fortran_write
+from . import es_evm
+
+LISTING = "IV.15"
+TITLE = "Kinematics of the mechanism of Fig. 29 (Assur groups of all five kinds)"
+FIGURES = ()
+
+#: The DATA statement (L2482-2488), RGD read as RCD (E-IV15-1), ROI59, WI as RO1S9, W1
+#: (E-IV15-2).  B, RFS3, RFS4, RO1S9, Q5 and Q2 are not used by the kinematics (they
+#: serve the force analysis VII.10, L5596-5650).
+CARD = {"ROA": 0.22, "RAB": 0.45, "RBF": 0.35, "RCF": 0.5, "RFG": 0.7, "RCD": 0.58,
+        "ROM": 0.3, "A": 0.2, "B": 0.77, "C": 0.62, "D": 0.27, "RFS3": 0.17, "RFS4": 0.2,
+        "RO1S9": 0.15, "W1": 2.0, "ROF": 0.42, "Q5": 100.0, "Q2": 50.0}
+AAA = 5.0                                      # L2488: the print flag (5: silent)
+STOP = -6.3                                    # L2494: IF(FI .LT. (-6.3)) GO TO 53
+
+#: The five PRINT statements of one position (L2534-2541) and their FORMATs.
+FORMAT_10 = "(1X,12F9.4)"                      # L2535
+FORMAT_11 = "(1X,12F10.3)"                     # L2539
+FORMAT_12 = "(1X,14F8.3)"                      # L2542
+PRINTS = (
+    (FORMAT_10, ("FI", "FI2", "FI3", "XB", "YB", "XD", "FI4", "RO1M", "FI9", "XP",
+                 "RO1P", "FIO1P")),
+    (FORMAT_11, ("FI", "VBA", "ALBA", "VB", "ALB", "W2", "W3", "VDC", "ALDC", "VD",
+                 "ALD", "W4")),
+    (FORMAT_11, ("FI", "ANM", "BNM", "E9", "AN", "BN", "APR", "BPR", "AP", "BP",
+                 "ANO1T", "BNO1T")),
+    (FORMAT_11, ("FI", "AB", "BB", "E2", "E3", "E4", "AD", "BD", "AGH", "BGH", "AG",
+                 "BG")),
+    (FORMAT_12, ("FI", "VGH", "ALGH", "VG", "ALG", "VNM", "ALNM", "VN", "ALN", "W9",
+                 "VPM", "ALPM", "VP", "ALP")),   # E-IV15-12: the last item printed "A"
+)
+#: The printed variables, each once, in the order of the printout.
+COLUMNS = tuple(dict.fromkeys(name for _, names in PRINTS for name in names))
+
+
+def crank_angles(positions: int | None = None) -> np.ndarray:
+    """FI = 0, -DFI, -2 DFI, ... with DFI = 2 PI/24, until FI < -6.3 (L2491-2494): 25 values.
+
+    As printed, FI is accumulated by ``FI = FI - DFI`` in the ES EVM's REAL*4 arithmetic;
+    corrected, FI = -k*DFI exactly.  ``positions`` overrides the stop test.
+    """
+    pi = book_pi()
+    if get_mode() == "as-printed":
+        dfi = es_evm.div(es_evm.real4(2.0 * es_evm.real4(pi)), 24.0)
+        fi, angles = es_evm.real4(dfi), []
+        while True:
+            fi = es_evm.add(fi, -dfi)
+            if (positions is None and fi < STOP) or len(angles) == positions:
+                break
+            angles.append(fi)
+        return np.array(angles)
+    dfi = 2.0 * pi / 24.0
+    if positions is None:
+        positions = int(np.floor(-STOP / dfi)) + 1
+    return -np.arange(positions) * dfi
+
+
+def compute(card=None, positions: int | None = None, angles=None,
+            on_error: str = "raise") -> dict:
+    """Run the program in the current mode; return every variable by its book name (arrays).
+
+    ``card`` overrides values of :data:`CARD`; ``angles`` replaces the book's crank
+    angles FI (radians; the crank still turns clockwise at W1).  The result holds the
+    printed :data:`COLUMNS` and the program's other variables (XA, YA, XC, YC, Y (the
+    book's name of y_D), XH, YH, XM, YM, YP, RV, FV, VBF, ALBF, VC, ALC, VDE, ALDE, VGL,
+    ALGL, VNO1, ALNO1, VPN, ALPN, ABAT, BBAT, ABFT, BBFT, AC, BC, ADCT, BDCT, ADE, BDE,
+    AGL, BGL, APS, BPS) and the extension columns SGL, SGH (module docstring).
+
+    ``on_error`` is passed to every library call: ``"raise"`` (an ``AssemblyError`` or
+    ``SingularError`` names the routine and the first bad position) or ``"nan"``.
+    """
+    c = dict(CARD, **(card or {}))
+    ROA, RAB, RBF, RCF, RFG, RCD, ROM, A, C, D, W1, ROF = (
+        c[k] for k in ("ROA", "RAB", "RBF", "RCF", "RFG", "RCD", "ROM", "A", "C", "D",
+                       "W1", "ROF"))
+    PI = book_pi()
+    PID2 = PI / 2.0
+    FI = (crank_angles(positions) if angles is None
+          else np.atleast_1d(np.asarray(angles, dtype=float)))
+
+    def call(routine, *args):
+        n_out = len(routine.spec.outputs)
+        if on_error == "raise":
+            return tuple(routine(*args))
+        # "nan": a position where an earlier group failed (NaN inputs) is NaN here too;
+        # the library refuses NaN inputs, so only the others are passed on.
+        args = np.broadcast_arrays(*[np.asarray(a, dtype=float) for a in args])
+        good = np.all([np.isfinite(a) for a in args], axis=0)
+        out = [np.full(FI.shape, np.nan) for _ in range(n_out)]
+        if good.any():
+            res = routine(*[a[good] for a in args], on_error="nan")
+            for o, r in zip(out, tuple(res)[:n_out]):
+                o[good] = r
+        return tuple(out)
+
+    # positions (L2495-2507)
+    YA = ROA * np.sin(FI)
+    XA = ROA * np.cos(FI)
+    FI2, FI3, XB, YB = call(DPRM1, XA, YA, ROF, 0.0, RAB, RBF, -1.0, AAA)   # E-IV15-3
+    XC = RCF * np.cos(FI3) + ROF
+    YC = RCF * np.sin(FI3)
+    XD, Y, FI4 = call(DPRM2, XC, YC, 0.0, A, 0.0, RCD, 0.0, 0.0, AAA)
+    XH = RFG * np.cos(FI3) + ROF
+    YH = RFG * np.sin(FI3)
+    XM = ROM * np.cos(FI + PI)
+    YM = ROM * np.sin(FI + PI)
+    RO1M, FI9, FIO1M = call(DPRM3, XM, YM, 0.0, -C, 0.0, 0.0, 1.0, AAA)   # E-IV15-4
+    XP, YP, RO1P, FIO1P, RV, FV = call(DPRM4, 0.0, -C, 0.0, -C, FI9, 0.0, 0.0, 0.0,
+                                       -(C + D), 0.0, 0.0, 0.0, 0.0, 0.0, AAA)
+    # not in the book: where the kind-5 group is (H = (SGL, SGH))
+    _, _, SGL, SGH = call(DPRM5, 0.0, 0.0, 0.0, XH, YH, PID2, AAA)
+
+    # velocities (L2508-2519)
+    VBA, ALBA, VBF, ALBF, VB, ALB, W2, W3 = call(
+        DSKOR1, RAB, FI2, RBF, FI3, W1 * ROA, FI - PID2, 0.0, 0.0, AAA)
+    VC = np.abs(W3) * RCF
+    ALC = call(DUGL3, FI3, PID2, W3)[0]
+    VDC, ALDC, VDE, ALDE, VD, ALD, W4 = call(
+        DSKOR2, VC, ALC, 0.0, 0.0, RCD, FI4, 0.0, AAA)
+    VGH, ALGH, VGL, ALGL, VG, ALG = call(
+        DSKOR5, XH, YH, 0.0, 0.0, 0.0, PID2, 0.0, np.abs(W3) * RFG,
+        ALC, AAA)                                 # the book: DUGL3(FI3, PID2, W3) = ALC, L2515
+    VNM, ALNM, VNO1, ALNO1, VN, ALN, W9 = call(
+        DSKOR3, XM, YM, 0.0, -C, W1 * ROM, FI + PID2, 0.0, 0.0, FI9, AAA)
+    VPM, ALPM, VPN, ALPN, VP, ALP = call(                                  # E-IV15-5
+        DSKOR4, RO1P, FIO1P, FI9, RV, FV, 0.0, W9, 0.0, AAA)
+
+    # accelerations (L2520-2533)
+    ABAT, BBAT, ABFT, BBFT, AB, BB, E2, E3 = call(                         # E-IV15-6
+        DUSKR1, W1**2 * ROA, FI - PI, 0.0, 0.0, RAB, FI2, RBF, FI3, W2, W3, AAA)
+    AC = RCF * np.sqrt(W3**4 + E3**2)
+    # L2523 BC = DUGL3(FI3, PI - ATAN(ABS(E3)/W3 ** 2), E3); atan2: E-IV15-13
+    BC = call(DUGL3, FI3, PI - np.arctan2(np.abs(E3), W3**2), E3)[0]
+    ADCT, BDCT, ADE, BDE, E4, AD, BD = call(
+        DUSKR2, AC, BC, 0.0, 0.0, 0.0, 0.0, RCD, FI4, W4, 0.0, AAA)
+    AGH, BGH, AGL, BGL, AG, BG = call(                                     # E-IV15-7, -8
+        DUSKR5, XH, YH, 0.0, 0.0, 0.0, 0.0, 0.0, PID2, RFG * np.sqrt(W3**4 + E3**2), BC,
+        0.0, 0.0, 0.0, 0.0, AAA)
+    ANM, BNM, ANO1T, BNO1T, E9, AN, BN = call(                             # E-IV15-9
+        DUSKR3, W1**2 * ROM, FI, 0.0, 0.0, FI9, W9, RO1M, FIO1M,
+        2.0 * VNM * np.abs(W9), call(DUGL3, ALNM, PID2, W9)[0], AAA)
+    APR, BPR, APS, BPS, AP, BP = call(                                     # E-IV15-10, -11
+        DUSKR4, RO1P, FIO1P, FIO1P, 0.0, 0.0, 0.0, W9, E9, 0.0, 0.0,
+        2.0 * VPM * np.abs(W9), call(DUGL3, ALPM, PID2, W9)[0], 0.0, 0.0, AAA)
+
+    names = locals()
+    keep = ("FI XA YA FI2 FI3 XB YB XC YC XD Y FI4 XH YH XM YM RO1M FI9 FIO1M XP YP RO1P "
+            "FIO1P RV FV SGL SGH VBA ALBA VBF ALBF VB ALB W2 W3 VC ALC VDC ALDC VDE ALDE "
+            "VD ALD W4 VGH ALGH VGL ALGL VG ALG VNM ALNM VNO1 ALNO1 VN ALN W9 VPM ALPM "
+            "VPN ALPN VP ALP ABAT BBAT ABFT BBFT AB BB E2 E3 AC BC ADCT BDCT ADE BDE E4 "
+            "AD BD AGH BGH AGL BGL AG BG ANM BNM ANO1T BNO1T E9 AN BN APR BPR APS BPS AP "
+            "BP").split()
+    return {k: np.broadcast_to(np.asarray(names[k], dtype=float), FI.shape).copy()
+            for k in keep}
+
+
+def cells(card=None) -> dict:
+    """The computed table as {(row, column): value}; row = position number from 1."""
+    table = compute(card)
+    return {(str(k + 1), name): float(table[name][k])
+            for name in COLUMNS for k in range(len(table["FI"]))}
+
+
+def render(card=None) -> str:
+    """The program's printout in the book's layout: five lines per position
+    (PRINT 10, 11, 11, 11, 12 with FORMATs 10, 11, 12; L2534-2542), 125 lines."""
+    table = compute(card)
+    lines = []
+    for k in range(len(table["FI"])):
+        for fmt, names in PRINTS:
+            lines.append(fortran_write(fmt, [table[n][k] for n in names]))
+    return "\n".join(lines)

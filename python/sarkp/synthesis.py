@@ -1,0 +1,496 @@
+"""Chapter 3: synthesis of linkages with lower pairs (listings III.1-III.4, III.6; book
+lines L887-1440).
+
+Angles are in radians, lengths in any one unit (the book's examples are in metres).
+``PI`` is 3.14159 in as-printed mode, as in every listing of the book, and pi to
+double precision in corrected mode.  The book's coefficient of speed change
+``KW3 = omega_3x / omega_3p`` (return over working stroke, L1023) must exceed 1.
+
+The four-bar of this chapter is A-B-C-D: crank AB (L1) about A, coupler BC (L2), rocker
+DC (L3) about D, frame AD (LO).  The book writes every straight line through a slope
+(``k = tan(angle)`` or ``k = -dx/dy``), which fails for a vertical line; sarkp keeps the
+same lines in normal form (ERRATA E-SYN-1), so a symmetric swing such as the book's own
+``FI31 = PI/6, FI32 = 5*PI/6`` works in both modes.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+from collections import namedtuple
+
+import numpy as np
+
+from . import _sarkp
+from .errors import RequirementError, SignificanceWarning, SingularError
+from .library import (ST_OK, ST_REQUIREMENT, ST_SIGNIFICANCE, ST_SINGULAR,
+                      _first_index, book_routine)
+from .report import fortran_write
+
+_f = _sarkp.synthesis
+_s = _sarkp.sweeps_synthesis
+
+__all__ = ["DSNTZR", "DSNTZ1", "DSNTZ2", "DSNTZ3", "DSNTZK", "dsntz2_pivot"]
+
+
+def _lines(fmt, values=()):
+    return fortran_write(fmt, values)
+
+
+_KW3 = "KW3 <= 1 (no quick return: BETA = PI*(KW3-1)/(KW3+1) <= 0), or "
+
+
+# ---- III.1 DSNTZR -------------------------------------------------------------------
+
+_DSNTZR_RESULT = namedtuple("DSNTZR", ["L1", "L2", "FI11"])
+_DSNTZR_STATUS = namedtuple("DSNTZR_status", ["L1", "L2", "FI11", "status"])
+_DSNTZR_MESSAGES = {
+    ST_REQUIREMENT: "two of the three positions of C coincide in the crank's frame, or "
+                    "the circle through them is centred on the crank pivot: no crank",
+    ST_SINGULAR: "the three positions of C lie on one straight line (the perpendicular "
+                 "bisectors are parallel): no circle passes through them",
+}
+
+_DSNTZR_FORMATS = (
+    "(1X,'СИНТЕЗ МЕХАНИЗМА ШАРНИРНОГО'/' ЧЕТЫРЕХЗВЕННИКА И КРИВОШИПНО-ПОЛЗУННОГО'/"
+    "' МЕХАНИЗМА ПО ТРЕМ ПОЛОЖЕНИЯМ ВХОДНОГО И ВЫХОДНОГО'/' ЗВЕНЬЕВ.'//"
+    "' ИСХОДНЫЕ ДАННЫЕ:'//' L3 = ',F7.3/)",
+    "(4X,'LO',5X,'F11',4X,'F13')",
+    "(1X,3F7.3)",
+    "(1X,'ВЫХОДНЫЕ ПАРАМЕТРЫ: L1 = ',F7.3,' L2 = ',F7.3)",
+)
+
+
+def dsntzr_report(LO, L3, FI1, FI3, L1, L2) -> str:
+    """DSNTZR's printout for AAA = 0 (FORMATs 1-4, L1007-1017)."""
+    f1, f2, f3, f4 = _DSNTZR_FORMATS
+    out = [_lines(f1, [L3]), _lines(f2)]
+    out += [_lines(f3, [LO[k], FI1[k], FI3[k]]) for k in range(3)]
+    out.append(_lines(f4, [L1, L2]))
+    return "\n".join(out)
+
+
+def _vectors(name, **arrays):
+    out = {}
+    for arg, value in arrays.items():
+        a = np.asarray(value, dtype=float)
+        if a.ndim < 1 or a.shape[-1] != 3:
+            raise ValueError(f"{name}: {arg} must hold three values (last axis of length "
+                             f"3), not shape {a.shape}")
+        bad = ~np.isfinite(a)
+        if bad.any():
+            idx = _first_index(bad, a.shape)
+            raise ValueError(f"{name}: {arg}{list(idx)} = {a[idx]!r} is not a finite number")
+        out[arg] = a
+    return out
+
+
+def DSNTZR(LO, L3, FI1, FI3, AAA=1.0, *, on_error="raise"):
+    """Three-position synthesis of a four-bar or a crank-slider (listing III.1,
+    L887-1019; Table 3, L897-917).
+
+    The book's call is ``CALL DSNTZR(LO, L3, FI1, FI3, AAA, L1, L2)`` (III.1, printed
+    as ``F11, F13``); program X calls it with an 8th argument, the crank angle
+    ``FI11`` (L7316), which sarkp returns as the third result (ERRATA E-DSNTZR-3).
+
+    Inversion about the crank (Table 3): with ``d = FI1[0] - FI1[i]`` the rocker pin in
+    the crank's frame is ``C_i = LO[i] e(d) + L3 e(FI3[i] + d)``; the crank pin B is the
+    centre of the circle through C_1, C_2, C_3.  The mechanism passes exactly through
+    the three given positions.
+
+    Parameters
+    ----------
+    LO : array_like, last axis of length 3
+        Four-bar: the frame length AD three times.  Crank-slider: the three positions
+        of the slider pin along the guide (abscissae measured from the crank pivot).
+    L3 : float or array_like
+        Four-bar: the rocker length DC.  Crank-slider: the offset of the slider pin
+        (the guide is the line at distance L3 in the direction FI3); any sign.
+    FI1 : array_like, last axis of length 3
+        Crank angles of the three positions; only the differences count.
+    FI3 : array_like, last axis of length 3
+        Four-bar: the rocker angles.  Crank-slider: three equal angles giving the
+        direction of the offset (1.570 in the book's example, L1366).
+    AAA : float, optional
+        0 prints the book's report (L1006-1017); anything else is silent (default).
+    on_error : {"raise", "nan"}
+        "nan" returns NaN where the synthesis fails, plus a ``status`` field.
+
+    Returns
+    -------
+    DSNTZR(L1, L2, FI11)
+        ``L1`` crank AB, ``L2`` coupler BC, ``FI11`` the crank angle of the first
+        position in the frame with A at the origin and D (or the guide) along x
+        (Table 3 step 12, taken over the full circle, ERRATA E-DSNTZR-4).  The crank
+        angle of position i is ``FI11 + FI1[i] - FI1[0]``.
+
+    Raises
+    ------
+    RequirementError
+        Two positions of C coincide, or B falls on the crank pivot.
+    SingularError
+        The three positions of C are collinear: no circle passes through them.
+
+    Notes
+    -----
+    Three positions of the same assembly branch are not guaranteed (the classical
+    branch defect of three-position synthesis); nothing checks it, as in the book.
+    """
+    if on_error not in ("raise", "nan"):
+        raise ValueError(f"DSNTZR: on_error must be 'raise' or 'nan', not {on_error!r}")
+    v = _vectors("DSNTZR", LO=LO, FI1=FI1, FI3=FI3)
+    l3 = np.asarray(L3, dtype=float)
+    if not np.all(np.isfinite(l3)):
+        idx = _first_index(~np.isfinite(l3), l3.shape)
+        raise ValueError(f"DSNTZR: L3{list(idx)} = {l3[idx]!r} is not a finite number")
+    aaa = float(AAA)
+    shape = np.broadcast_shapes(v["LO"].shape[:-1], v["FI1"].shape[:-1],
+                                v["FI3"].shape[:-1], l3.shape)
+    if shape == ():
+        lo, fi1, fi3 = v["LO"], v["FI1"], v["FI3"]
+        l1, l2, fi11, status = _f.dsntzr(lo, float(l3), fi1, fi3, aaa)
+        status = int(status)
+        if status not in (ST_OK, ST_SIGNIFICANCE):
+            if on_error == "raise":
+                raise _error("DSNTZR", status, _DSNTZR_MESSAGES, None)
+            l1 = l2 = fi11 = math.nan
+        elif status == ST_SIGNIFICANCE:
+            warnings.warn("DSNTZR: GELG reported a loss of significance (IER > 0); the "
+                          "result was kept", SignificanceWarning, stacklevel=2)
+        if aaa == 0.0 and status in (ST_OK, ST_SIGNIFICANCE):
+            print(dsntzr_report(lo, float(l3), fi1, fi3, l1, l2))
+        if on_error == "nan":
+            return _DSNTZR_STATUS(float(l1), float(l2), float(fi11), status)
+        return _DSNTZR_RESULT(float(l1), float(l2), float(fi11))
+    n = int(np.prod(shape))
+
+    def cols(a):
+        return np.asfortranarray(np.broadcast_to(a, shape + (3,)).reshape(n, 3).T)
+
+    l1, l2, fi11, status = _s.dsntzr_sweep(cols(v["LO"]), np.broadcast_to(l3, shape).ravel(),
+                                           cols(v["FI1"]), cols(v["FI3"]))
+    out = [np.asarray(o, dtype=float).reshape(shape) for o in (l1, l2, fi11)]
+    status = np.asarray(status).reshape(shape)
+    out, status = _finish("DSNTZR", out, status, _DSNTZR_MESSAGES, on_error)
+    if on_error == "nan":
+        return _DSNTZR_STATUS(*out, status)
+    return _DSNTZR_RESULT(*out)
+
+
+def _error(name, status, messages, index):
+    where = "" if index is None else f" at index {list(index)}"
+    cls = RequirementError if status == ST_REQUIREMENT else SingularError
+    return cls(f"{name}{where}: {messages.get(status, f'status {status}')}")
+
+
+def _finish(name, out, status, messages, on_error):
+    failed = (status != ST_OK) & (status != ST_SIGNIFICANCE)
+    if failed.any():
+        if on_error == "raise":
+            idx = _first_index(failed, status.shape)
+            raise _error(name, int(status[idx]), messages, idx)
+        for o in out:
+            o[failed] = np.nan
+    if (status == ST_SIGNIFICANCE).any():
+        idx = _first_index(status == ST_SIGNIFICANCE, status.shape)
+        warnings.warn(f"{name}: GELG reported a loss of significance (IER > 0); the result "
+                      f"was kept (first at index {list(idx)})", SignificanceWarning,
+                      stacklevel=3)
+    return out, status
+
+
+# ---- III.2 DSNTZ1 -------------------------------------------------------------------
+
+_DSNTZ1_FORMAT = (
+    "(1X,'СИНТЕЗ МЕХАНИЗМА ШАРНИРНОГО'/' ЧЕТЫРЕХЗВЕННИКА ПО ДВУМ ПОЛОЖЕНИЯМ И KW3.'/"
+    "' ВХОДНЫЕ ПАРАМЕТРЫ:'/' KW3 = ',F5.3,' FI31 = ',F7.4,' FI32 = ',F7.4,' L3 = ',F6.3,"
+    "' XD = ',F7.3,' Q = ',F3.0//1X,'ВЫХОДНЫЕ ПАРАМЕТРЫ:'/"
+    "' L1 = ',F7.3,' L2 = ',F7.3,' LO = ',F7.3)")
+
+
+def _dsntz1_report(i, o):
+    return _lines(_DSNTZ1_FORMAT, [i["KW3"], i["FI31"], i["FI32"], i["L3"], i["XD"],
+                                   i["Q"], *o])
+
+
+DSNTZ1 = book_routine(
+    "DSNTZ1", listing="III.2", lines="L1023-1105",
+    inputs=["KW3", "FI31", "FI32", "L3", "XD", "Q", "AAA"], outputs=["L1", "L2", "LO"],
+    scalar=_f.dsntz1, sweep=_s.dsntz1_sweep, lengths=["L3"],
+    report=_dsntz1_report,
+    messages={
+        ST_REQUIREMENT: _KW3 + "no crank-rocker with the crank pivot on the x axis meets the "
+                        "requirement: FI31 = FI32, or the circle through C1 and C2 misses "
+                        "the x axis, or with this Q the crank comes out <= 0 (C1 must be "
+                        "the farther extreme position: try the other Q), or the crank "
+                        "cannot make a full turn between the two extreme positions",
+        ST_SINGULAR: "the line through C1 at FI31 + BETA is parallel to the perpendicular "
+                     "bisector of C1C2"},
+    doc="""Four-bar from the two extreme rocker positions and the coefficient of speed
+    change (listing III.2, L1023-1105; Table 4, L1034-1051).
+
+    The book's call is ``CALL DSNTZ1(KW3, FI31, FI32, L3, XD, Q, AAA, L1, L2, LO)``.
+
+    The listing's construction is implemented: C1, C2 = D + L3 e(FI31), D + L3 e(FI32)
+    with D = (XD, 0); E = intersection of the perpendicular bisector of C1C2 (through D)
+    with the line through C1 at the direction ``FI31 + BETA``,
+    ``BETA = PI (KW3 - 1)/(KW3 + 1)``; the crank pivot A is where the circle
+    (E, |EC1|) meets the x axis, ``XA = XE + sign(Q) sqrt(R**2 - YE**2)``;
+    ``L1 = (|AC1| - |AC2|)/2``, ``L2 = |AC1| - L1``, ``LO = |XD - XA|``.
+
+    Parameters
+    ----------
+    KW3 : float
+        Coefficient of speed change of the rocker, omega_return / omega_work (> 1).
+    FI31, FI32 : float
+        Rocker angles of the two extreme positions: C1 (crank and coupler stretched
+        out) and C2 (folded).
+    L3 : float
+        Rocker length DC (> 0).
+    XD : float
+        Abscissa of the rocker pivot D = (XD, 0); the crank pivot A is on the x axis.
+    Q : float
+        Assembly variant, by its sign only (0 acts as +1): -1 puts A "between O and D"
+        (L1055), +1 the other intersection.
+    AAA : float, optional
+        0 prints the book's report (L1097-1103); anything else is silent (default).
+
+    Returns
+    -------
+    DSNTZ1(L1, L2, LO)
+        Crank AB, coupler BC, frame AD.
+
+    Raises
+    ------
+    RequirementError
+        KW3 <= 1, FI31 = FI32, the circle misses the axis, a crank <= 0 (wrong Q), or
+        a crank that cannot make a full turn between the extreme positions.
+    SingularError
+        The two lines that define E are parallel.
+
+    Notes
+    -----
+    The listing's line through C1 at the fixed direction ``FI31 + BETA`` is not the
+    construction of the prose (angle BETA to SD, L1029, L1053): the mechanism has the
+    requested extreme rocker positions but in general not the requested KW3, and the
+    book's own example prints 0.411 / 0.904 / 0.858 where the listing gives
+    0.406 / 0.835 / 0.782 (ERRATA E-DSNTZ1-4, open).  The book's unconditional debug
+    ``PRINT 5`` (L1094) is dropped (E-DSNTZ1-2).
+    """)
+
+
+# ---- III.3 DSNTZ2 -------------------------------------------------------------------
+
+_DSNTZ2_FORMATS = (
+    "(1X,'СИНТЕЗ ШАРНИРНОГО ЧЕТЫРЕХЗВЕННИКА ПО'/' УГЛУ ПЕРЕДАЧИ ДВИЖЕНИЯ И КОЭФФИЦИЕНТУ "
+    "ИЗМЕНЕНИЯ'/' СКОРОСТИ ВЫХОДНОГО ЗВЕНА'//)",
+    "(1X,'ВХОДНЫЕ ПАРАМЕТРЫ СИНТЕЗА:'/' KW3 = ',F6.4,' FI3 = ',F6.4,' L3 = ',F7.4,"
+    "' XD = ',F7.4,' GMIN = ',F6.4,' GMAX = ',F6.4/1X,'ВЫХОДНЫЕ ПАРАМЕТРЫ СИНТЕЗА:'/"
+    "' L1 = ',F7.4,' L2 = ',F7.4,' LO = ',F7.4,' XA = ',F7.4,' YA = ',F7.4//)",
+)
+
+
+def dsntz2_pivot():
+    """The crank pivot (XA, YA) found by the last scalar DSNTZ2 call (the book prints
+    it in DSNTZ2's report, L1174-1179, but does not return it)."""
+    return float(_f.dsntz2_xa), float(_f.dsntz2_ya)
+
+
+def _dsntz2_report(i, o):
+    return "\n".join([_lines(_DSNTZ2_FORMATS[0]),
+                      _lines(_DSNTZ2_FORMATS[1], [i["KW3"], i["FI3"], i["L3"], i["XD"],
+                                                  i["GMIN"], i["GMAX"], *o,
+                                                  *dsntz2_pivot()])])
+
+
+DSNTZ2 = book_routine(
+    "DSNTZ2", listing="III.3", lines="L1109-1181",
+    inputs=["KW3", "FI3", "L3", "XD", "GMIN", "GMAX", "AAA"], outputs=["L1", "L2", "LO"],
+    scalar=_f.dsntz2, sweep=_s.dsntz2_sweep, lengths=["L3"],
+    report=_dsntz2_report,
+    messages={
+        ST_REQUIREMENT: _KW3 + "no crank-rocker meets the requirement: the swing "
+                        "PSI = BETA + GMAX - GMIN is 0, or the crank comes out <= 0, or "
+                        "the crank cannot make a full turn between the two extreme "
+                        "positions, or they lie on different assembly branches",
+        ST_SINGULAR: "the lines C1A and C2A are parallel"},
+    doc="""Four-bar from the coefficient of speed change and the transmission angles at
+    the extreme positions (listing III.3, L1109-1181; Table 5, L1114-1130).
+
+    The book's call is ``CALL DSNTZ2(KW3, FI3, L3, XD, GMIN, GMAX, AAA, L1, L2, LO)``.
+
+    ``BETA = PI (KW3 - 1)/(KW3 + 1)``, swing ``PSI = BETA + GMAX - GMIN``;
+    C1 = D + L3 e(FI3), C2 = D + L3 e(FI3 + PSI) with D = (XD, 0); the crank pivot A is
+    the intersection of the line through C1 at ``FI3 - GMIN`` with the line through C2
+    at ``FI3 + PSI - GMAX``; ``L1 = (|AC1| - |AC2|)/2``, ``L2 = |AC1| - L1``,
+    ``LO = |AD|``.  The resulting crank-rocker has its extreme rocker angles at FI3
+    and FI3 + PSI, the coefficient of speed change KW3, and the transmission angle
+    (angle BCD) GMIN in the stretched-out and GMAX in the folded extreme position
+    (verified in tests/test_synthesis.py).
+
+    Parameters
+    ----------
+    KW3 : float
+        Coefficient of speed change of the rocker (> 1).
+    FI3 : float
+        Rocker angle of the first (stretched-out) extreme position.
+    L3 : float
+        Rocker length DC (> 0).
+    XD : float
+        Abscissa of the rocker pivot D = (XD, 0).
+    GMIN, GMAX : float
+        Transmission angles at the two extreme positions.
+    AAA : float, optional
+        0 prints the book's report with XA and YA (L1169-1179); else silent (default).
+
+    Returns
+    -------
+    DSNTZ2(L1, L2, LO)
+        Crank AB, coupler BC, frame AD.  The crank pivot of the last scalar call is
+        :func:`dsntz2_pivot`.
+
+    Raises
+    ------
+    RequirementError
+        KW3 <= 1, a zero swing, a crank <= 0, or a crank that cannot make a full turn
+        between the extreme positions (or they lie on different assembly branches).
+    SingularError
+        The lines C1A and C2A are parallel.
+    """)
+
+
+# ---- III.4 DSNTZ3 -------------------------------------------------------------------
+
+_DSNTZ3_FORMAT = (
+    "(1X,'СИНТЕЗ МЕХАНИЗМА ШАРНИРНОГО'/' ЧЕТЫРЕХЗВЕННИКА ПО ДВУМ ПОЛОЖЕНИЯМ ШАТУНА.'//"
+    "1X,'ВХОДНЫЕ ПАРАМЕТРЫ:'//' XB1 = ',F7.3,' YB1 = ',F7.3,' XB2 = ',F7.3,"
+    "' YB2 = ',F7.3,' F11 = ',F7.3,' ALC1 = ',F7.3//1X,'ВЫХОДНЫЕ ПАРАМЕТРЫ:'//"
+    "' L1 = ',F7.3,' L3 = ',F7.3,' LO = ',F7.3//)")
+
+
+def _dsntz3_report(i, o):
+    return _lines(_DSNTZ3_FORMAT, [i["XB1"], i["YB1"], i["XB2"], i["YB2"], i["FI1"],
+                                   i["ALC1"], *o])
+
+
+DSNTZ3 = book_routine(
+    "DSNTZ3", listing="III.4", lines="L1185-1264",
+    inputs=["XB1", "YB1", "XB2", "YB2", "XC1", "YC1", "XC2", "YC2", "FI1", "ALC1", "AAA"],
+    outputs=["L1", "L3", "LO"], scalar=_f.dsntz3, sweep=_s.dsntz3_sweep,
+    report=_dsntz3_report,
+    messages={
+        ST_REQUIREMENT: "the two positions of B (or of C) coincide, or a length comes out "
+                        "zero",
+        ST_SINGULAR: "the line B1A is parallel to the bisector of B1B2 (FI1 = 0 mod 2 PI), "
+                     "or the normal to the velocity of C1 is parallel to the bisector of "
+                     "C1C2"},
+    doc="""Four-bar from two positions of the coupler (listing III.4, L1185-1264;
+    Table 6, L1192-1212).
+
+    The book's call is
+    ``CALL DSNTZ3(XB1, YB1, XB2, YB2, XC1, YC1, XC2, YC2, FI1, ALC1, AAA, L1, L3, LO)``
+    (the printed header ends ``L1, L2, LO``; the body computes L3, Table 6 too:
+    ERRATA E-DSNTZ3-1).
+
+    The crank pivot A is the intersection of the perpendicular bisector of B1B2 with the
+    line through B1 at ``FIB1B2 - PI/2 + FI1/2`` (AB1B2 is isosceles with apex angle
+    FI1); the rocker pivot D is the intersection of the perpendicular bisector of C1C2
+    with the normal to the velocity of C1.  ``L1 = |AB1|``, ``L3 = |DC1|``,
+    ``LO = |AD|``.
+
+    Parameters
+    ----------
+    XB1, YB1, XB2, YB2 : float
+        The crank pin B in the two positions.
+    XC1, YC1, XC2, YC2 : float
+        The rocker pin C in the two positions (|B1C1| should equal |B2C2|; not
+        checked, the routine does not use the coupler length).
+    FI1 : float
+        Crank rotation from position 1 to position 2.  With the listing's line
+        direction the crank turns from B1 to B2 clockwise by FI1 (i.e. by -FI1 in the
+        counter-clockwise sense; verified in tests).
+    ALC1 : float
+        Direction of the velocity of C in position 1.
+    AAA : float, optional
+        0 prints the book's report (L1256-1262); anything else is silent (default).
+
+    Returns
+    -------
+    DSNTZ3(L1, L3, LO)
+        Crank AB, rocker DC, frame AD.
+
+    Notes
+    -----
+    As printed, the run behind Fig. 10 had KB1A, KS2D and L3 as implicit INTEGERs
+    (ERRATA E-DSNTZ3-2): as-printed mode truncates them and gives the printed
+    0.401 / 0.0 / 0.574; corrected mode gives 0.412 / 0.425 / 0.575.
+
+    Raises
+    ------
+    RequirementError
+        Coincident positions of B or C, or a zero length.
+    SingularError
+        Parallel lines (FI1 = 0, or the normal at C1 parallel to the bisector of C1C2).
+    """)
+
+
+# ---- III.6 DSNTZK -------------------------------------------------------------------
+
+_DSNTZK_FORMAT = ("(1X,'ДЛИНА КРИВОШИПА L1 = ',F6.4,'МЕЖЦЕНТРОВОЕ РАССТОЯНИЕ LO = ',F6.4,"
+                  "'ДЛИНА КУЛИСЫ L3 = ',F6.4)")
+
+
+def _dsntzk_report(i, o):
+    return _lines(_DSNTZK_FORMAT, list(o))
+
+
+DSNTZK = book_routine(
+    "DSNTZK", listing="III.6", lines="L1397-1437",
+    inputs=["KW3", "S", "H", "Q", "AAA"], outputs=["L1", "LO", "L3"],
+    scalar=_f.dsntzk, sweep=_s.dsntzk_sweep, lengths=["S"], nonnegative=["H"],
+    report=_dsntzk_report,
+    messages={ST_REQUIREMENT: _KW3 + "the reserve H is not smaller than the slotted link "
+                              "L3 = S/(2 sin BETA) (oscillating) or S/2 (rotating): "
+                              "no room for the crank and the centre distance"},
+    doc="""Slotted-link (crank and slotted lever) mechanism (listing III.6, L1397-1437;
+    operator function SNTZK, eq. (3.3)).
+
+    The book's call is ``CALL DSNTZK(KW3, S, H, Q, AAA, L1, LO, L3)``.
+
+    ``BETA = (PI/2)(KW3 - 1)/(KW3 + 1)`` is half the swing of the slotted link.
+    Oscillating link (Q != 0): ``LAMBDA = sin(BETA)``, ``L3 = S/(2 LAMBDA)``; rotating
+    link (Q = 0): ``LAMBDA = 1/sin(BETA)``, ``L3 = S/2``; then
+    ``LO = (L3 - H)/(1 + LAMBDA)``, ``L1 = LAMBDA LO``, so that ``L3 = LO + L1 + H``.
+
+    Parameters
+    ----------
+    KW3 : float
+        Coefficient of speed change of the output (> 1).
+    S : float
+        Stroke (> 0): the chord swept by the end of the oscillating slotted link, or
+        the stroke 2 L3 of a slider driven by the end of the rotating one along a line
+        through the link's pivot perpendicular to the centre line.  The listing's
+        comment says "stroke of the slotted link", the prose (L1399) "stroke of the
+        driven link" (ERRATA E-DSNTZK-2).
+    H : float
+        Reserve (>= 0): how much longer the slotted link is than the largest distance
+        LO + L1 from its pivot to the crank pin.
+    Q : float
+        0 for a rotating slotted link, any other value for an oscillating one (L1401).
+    AAA : float, optional
+        0 prints the book's report (L1432-1435); anything else is silent (default).
+
+    Returns
+    -------
+    DSNTZK(L1, LO, L3)
+        Crank, centre distance, slotted-link length.
+
+    Raises
+    ------
+    RequirementError
+        KW3 <= 1, or H >= L3 (no room left for the crank).
+
+    Notes
+    -----
+    The book prints no example of DSNTZK.
+    """)

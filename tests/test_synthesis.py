@@ -1,0 +1,585 @@
+"""Chapter 3, synthesis (listings III.1-III.6): DSNTZR, DSNTZ1, DSNTZ2, DSNTZ3, DSNTZK.
+
+Every synthesis is verified by analysis: the synthesized mechanism is assembled and moved
+by closed-form geometry written here (circle intersections, no chapter-4 code), and it
+must show what was asked for (precision positions, extreme rocker angles, coefficient of
+speed change, transmission angles, stroke) to 1e-9, in corrected mode, for random valid
+inputs (hypothesis).  The book's printed Fig. 10 is compared cell by cell from
+sarkp/book/data/fig10.csv.
+"""
+
+from __future__ import annotations
+
+import math
+import warnings
+
+import numpy as np
+import pytest
+from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import strategies as st
+
+import sarkp
+from sarkp import RequirementError, SarkpError, SingularError
+from sarkp.synthesis import DSNTZ1, DSNTZ2, DSNTZ3, DSNTZK, DSNTZR, dsntz2_pivot
+
+TOL = 1e-9
+TWO_PI = 2.0 * math.pi
+HYP = settings(max_examples=150, deadline=None,
+               suppress_health_check=[HealthCheck.filter_too_much, HealthCheck.too_slow])
+
+
+@pytest.fixture(autouse=True)
+def corrected():
+    with sarkp.mode("corrected"):
+        yield
+
+
+# ---- closed-form geometry ----------------------------------------------------------
+
+def sub(u, v):
+    return (u[0] - v[0], u[1] - v[1])
+
+
+def cross(u, v):
+    return u[0] * v[1] - u[1] * v[0]
+
+
+def circles(p, r1, q, r2):
+    """Both intersections of circle (p, r1) and circle (q, r2), or [] if none."""
+    dx, dy = q[0] - p[0], q[1] - p[1]
+    d = math.hypot(dx, dy)
+    if d == 0.0:
+        return []
+    a = (r1 * r1 - r2 * r2 + d * d) / (2.0 * d)
+    h2 = r1 * r1 - a * a
+    if h2 < -1e-12 * r1 * r1:
+        return []
+    h = math.sqrt(max(h2, 0.0))                    # a tangent point, up to rounding
+    ux, uy = dx / d, dy / d
+    bx, by = p[0] + a * ux, p[1] + a * uy
+    return [(bx - h * uy, by + h * ux), (bx + h * uy, by - h * ux)]
+
+
+def angdiff(a, b):
+    """a - b wrapped to (-pi, pi]."""
+    d = math.fmod(a - b, TWO_PI)
+    if d > math.pi:
+        d -= TWO_PI
+    if d <= -math.pi:
+        d += TWO_PI
+    return d
+
+
+def angle_at(p, q, r):
+    """Interior angle PQR in [0, pi]."""
+    u, v = sub(p, q), sub(r, q)
+    return math.atan2(abs(cross(u, v)), u[0] * v[0] + u[1] * v[1])
+
+
+class FourBar:
+    """Crank AB (l1) about A, coupler BC (l2), rocker DC (l3) about D, assembled on the
+    branch (side of BD) given by ``s`` or by a reference rocker-pin position."""
+
+    def __init__(self, A, D, l1, l2, l3, s=None, C_ref=None, th_ref=None):
+        self.A, self.D, self.l1, self.l2, self.l3 = A, D, l1, l2, l3
+        if s is None:
+            B = self.B(th_ref)
+            s = 1.0 if cross(sub(D, B), sub(C_ref, B)) > 0 else -1.0
+        self.s = s
+
+    def B(self, th):
+        return (self.A[0] + self.l1 * math.cos(th), self.A[1] + self.l1 * math.sin(th))
+
+    def C(self, th):
+        B = self.B(th)
+        for c in circles(B, self.l2, self.D, self.l3):
+            if cross(sub(self.D, B), sub(c, B)) * self.s >= 0.0:
+                return c
+        return None
+
+    def rocker(self, th):
+        c = self.C(th)
+        return math.atan2(c[1] - self.D[1], c[0] - self.D[0])
+
+    def _f(self, th):
+        B, c = self.B(th), self.C(th)
+        return cross(sub(B, self.A), sub(c, B))      # 0 <=> crank and coupler in line
+
+    def limits(self, n=720):
+        """The crank angles over one full turn where the rocker stops (its velocity,
+        proportional to the cross product of crank and coupler, changes sign), each by
+        bisection to machine precision, with a flag: crank and coupler stretched out."""
+        ths = [0.123456789 + TWO_PI * k / n for k in range(n + 1)]   # off any round angle
+        fs = [self._f(t) for t in ths]
+        out = []
+        for k in range(n):
+            if fs[k] == 0.0 or fs[k] * fs[k + 1] < 0.0:
+                lo, hi, flo = ths[k], ths[k + 1], fs[k]
+                while fs[k] != 0.0:
+                    mid = 0.5 * (lo + hi)
+                    if mid in (lo, hi):
+                        break
+                    fm = self._f(mid)
+                    if fm == 0.0:
+                        lo = hi = mid
+                        break
+                    if (fm > 0.0) == (flo > 0.0):
+                        lo, flo = mid, fm
+                    else:
+                        hi = mid
+                th = lo if fs[k] == 0.0 else 0.5 * (lo + hi)
+                B, c = self.B(th), self.C(th)
+                out.append((th, (B[0] - self.A[0]) * (c[0] - B[0])
+                            + (B[1] - self.A[1]) * (c[1] - B[1]) > 0.0))
+        return out
+
+
+def time_ratio(th_a, th_b):
+    d = (th_b - th_a) % TWO_PI
+    return max(d, TWO_PI - d) / min(d, TWO_PI - d)
+
+
+def check_crank_rocker(A, D, l1, l2, l3, C1, phi1, phi2, kw3):
+    """Move the four-bar through a full crank turn; return the errors of the extreme
+    rocker angles, of the coefficient of speed change, and the two limit positions."""
+    fb = FourBar(A, D, l1, l2, l3, C_ref=C1,
+                 th_ref=math.atan2(C1[1] - A[1], C1[0] - A[0]))
+    for k in range(360):
+        assert fb.C(TWO_PI * k / 360) is not None, "the crank cannot make a full turn"
+    lim = fb.limits()
+    assert len(lim) == 2, lim
+    (t1, e1), (t2, e2) = lim
+    if not e1:
+        (t1, e1), (t2, e2) = (t2, e2), (t1, e1)
+    assert e1 and not e2
+    errs = (abs(angdiff(fb.rocker(t1), phi1)), abs(angdiff(fb.rocker(t2), phi2)),
+            abs(time_ratio(t1, t2) - kw3))
+    return errs, fb, t1, t2
+
+
+def pivot_from(C1, C2, l1, l2, D, lo, on_x=False):
+    """The crank pivot recovered from the synthesized lengths alone:
+    |AC1| = l1 + l2 (stretched out), |AC2| = l2 - l1 (folded), |AD| = lo."""
+    cands = circles(C1, l1 + l2, C2, l2 - l1)
+    assert cands
+
+    def err(a):
+        return abs(math.hypot(a[0] - D[0], a[1] - D[1]) - lo) + (abs(a[1]) if on_x else 0)
+
+    return min(cands, key=err)
+
+
+# ---- Fig. 10 (program III.5) -------------------------------------------------------
+
+def _fig10(mode):
+    from sarkp.book import figures, prog_iii_5
+    fig = figures.load_figure("10")
+    with sarkp.mode(mode):
+        return fig, figures.compare(fig, prog_iii_5.compute())
+
+
+def test_fig10_as_printed_all_reproducible_cells():
+    fig, cmp = _fig10("as-printed")
+    bad = [c for c in cmp if c.cell.reproducible and not c.matches]
+    assert not bad, [(c.cell.row, c.cell.column, c.cell.printed, c.computed) for c in bad]
+    assert sum(c.cell.reproducible for c in cmp) == 50
+
+
+def test_fig10_corrected_differs_only_in_dsntz3():
+    fig, cmp = _fig10("corrected")
+    bad = {(c.cell.row, c.cell.column) for c in cmp if c.cell.reproducible and not c.matches}
+    assert bad == {("DSNTZ3", "L1"), ("DSNTZ3", "L3"), ("DSNTZ3", "LO")}
+
+
+def test_fig10_dsntz1_not_reproducible_E_DSNTZ1_4():
+    fig, cmp = _fig10("as-printed")
+    cells = {(c.cell.row, c.cell.column): c for c in cmp}
+    for name, listing in (("L1", 0.4055734), ("L2", 0.8347419), ("LO", 0.7818461)):
+        c = cells[("DSNTZ1", name)]
+        assert not c.cell.reproducible and "E-DSNTZ1-4" in c.cell.errata
+        assert c.computed == pytest.approx(listing, abs=2e-7)
+
+
+def test_fig10_slider_needs_0535_E_FIG10_1():
+    with sarkp.as_printed():
+        good = DSNTZR([0.95, 0.825, 0.535], 0.15, [0.349, 1.047, 1.745], [1.57] * 3)
+        ocr = DSNTZR([0.95, 0.825, 0.525], 0.15, [0.349, 1.047, 1.745], [1.57] * 3)
+    assert (round(good.L1, 3), round(good.L2, 3)) == (0.399, 0.564)
+    assert (round(ocr.L1, 3), round(ocr.L2, 3)) == (0.410, 0.554)
+
+
+def test_dsntz3_truncation_switch_E_DSNTZ3_2():
+    args = (0.2, 0.4, 0.6, 0.5, 0.8, 0.85, 1.343, 0.6)
+    with sarkp.as_printed():
+        pi = 3.14159
+        r = DSNTZ3(*args, pi / 3, pi / 9.0)
+    assert r == pytest.approx((0.4006938, 0.0, 0.5739535), abs=2e-7)
+    r = DSNTZ3(*args, math.pi / 3, math.pi / 9.0)
+    assert r == pytest.approx((0.4123106, 0.4247681, 0.5753025), abs=2e-7)
+
+
+def test_fig10_dsntz2_pivot():
+    r = DSNTZ2(1.5, math.pi / 6, 0.5, 0.75, math.pi / 18, math.pi / 3)
+    xa, ya = dsntz2_pivot()
+    assert (round(xa, 4), round(ya, 4)) == (0.1403, -0.1295)
+    assert r.LO == pytest.approx(math.hypot(0.75 - xa, ya), abs=1e-15)
+
+
+def test_dsntz1_vertical_bisector_E_DSNTZ1_3():
+    # The book's own example has YC2 = YC1 exactly when PI is exact: the listing's slope
+    # -(XC2-XC1)/(YC2-YC1) is infinite there.  The normal form gives the finite answer,
+    # which the as-printed run (PI = 3.14159, slope 7.5e5) approaches.
+    r = DSNTZ1(1.5, math.pi / 6, 5 * math.pi / 6, 0.5, 0.75, -1.0)
+    assert all(math.isfinite(v) for v in r)
+    with sarkp.as_printed():
+        p = DSNTZ1(1.5, 3.14159 / 6, 3.14159 / 6 * 5, 0.5, 0.75, -1.0)
+    assert r == pytest.approx(p, abs=1e-5)
+
+
+def test_course_project_call_L7316():
+    # Program X: CALL DSNTZR(X5, H5, FICD, FI5, 1.0, RCD, RDE, FICD1); Fig. 84 prints
+    # RCD = 0.579, RDE = 0.701, FICD = -0.000.  The 8th result is Table 3 step 12; the
+    # printed -0.000 is not reproduced (ERRATA E-DSNTZR-3).
+    with sarkp.as_printed():
+        r = DSNTZR([0.82, 0.62, 0.42], 0.64, [0.0, 0.349, 0.698], [1.57] * 3, 1.0)
+    assert (round(r.L1, 3), round(r.L2, 3)) == (0.579, 0.701)
+    assert r.FI11 == pytest.approx(1.3562568, abs=1e-7)
+
+
+# ---- DSNTZR: three precision positions -----------------------------------------------
+
+lengths = st.floats(0.2, 2.0)
+angles = st.floats(-math.pi, math.pi)
+
+
+@HYP
+@given(l0=lengths, l1=lengths, l2=lengths, l3=lengths, th1=angles,
+       d2=st.floats(0.3, 2.0), d3=st.floats(0.3, 2.0), s=st.sampled_from([1.0, -1.0]),
+       offset=angles)
+def test_dsntzr_fourbar_recovers_the_mechanism(l0, l1, l2, l3, th1, d2, d3, s, offset):
+    """A four-bar moved to three crank angles gives three rocker angles; from them
+    DSNTZR must return that very four-bar (three positions fix the circle)."""
+    fb = FourBar((0.0, 0.0), (l0, 0.0), l1, l2, l3, s=s)
+    ths = [th1, th1 + d2, th1 + d2 + d3]
+    cs = [fb.C(t) for t in ths]
+    assume(all(c is not None for c in cs))
+    # keep away from (nearly) collinear or coincident pin positions in the crank frame
+    inv = []
+    for t, c in zip(ths, cs):
+        d = th1 - t
+        inv.append((c[0] * math.cos(d) - c[1] * math.sin(d),
+                    c[0] * math.sin(d) + c[1] * math.cos(d)))
+    d12, d23 = sub(inv[1], inv[0]), sub(inv[2], inv[1])
+    n12, n23 = math.hypot(*d12), math.hypot(*d23)
+    assume(min(n12, n23, math.hypot(*sub(inv[2], inv[0]))) > 0.05)
+    assume(abs(cross(d12, d23)) / (n12 * n23) > 0.05)
+    fi3 = [math.atan2(c[1], c[0] - l0) for c in cs]
+    r = DSNTZR([l0] * 3, l3, [t + offset for t in ths], fi3)
+    assert abs(r.L1 - l1) < TOL and abs(r.L2 - l2) < TOL
+    assert abs(angdiff(r.FI11, th1)) < TOL
+
+
+@HYP
+@given(l1=st.floats(0.1, 1.0), ratio=st.floats(1.5, 4.0), e=st.floats(-0.5, 0.5),
+       th1=angles, d2=st.floats(0.3, 1.5), d3=st.floats(0.3, 1.5))
+def test_dsntzr_crank_slider_recovers_the_mechanism(l1, ratio, e, th1, d2, d3):
+    """A crank-slider (guide y = e) at three crank angles gives three slider positions;
+    DSNTZR with LO = the positions, L3 = e, FI3 = pi/2 returns its crank and coupler."""
+    l2 = ratio * l1
+    assume(l2 > abs(e) + l1 + 0.05)
+    ths = [th1, th1 + d2, th1 + d2 + d3]
+    xs = [l1 * math.cos(t) + math.sqrt(l2**2 - (e - l1 * math.sin(t))**2) for t in ths]
+    assume(min(abs(xs[1] - xs[0]), abs(xs[2] - xs[1]), abs(xs[2] - xs[0])) > 0.02)
+    try:
+        r = DSNTZR(xs, e, ths, [math.pi / 2] * 3)
+    except SingularError:
+        assume(False)
+    # the in-line positions are well conditioned only when the chords are not parallel
+    inv = []
+    for t, x in zip(ths, xs):
+        d = th1 - t
+        inv.append((x * math.cos(d) - e * math.sin(d), x * math.sin(d) + e * math.cos(d)))
+    d12, d23 = sub(inv[1], inv[0]), sub(inv[2], inv[1])
+    assume(abs(cross(d12, d23)) / (math.hypot(*d12) * math.hypot(*d23)) > 0.05)
+    assert abs(r.L1 - l1) < TOL and abs(r.L2 - l2) < TOL
+    assert abs(angdiff(r.FI11, th1)) < TOL
+
+
+def test_dsntzr_bad_input():
+    with pytest.raises(SingularError, match="one straight line"):
+        DSNTZR([1.0, 2.0, 3.0], 0.0, [0.0, 0.0, 0.0], [0.0] * 3)      # C on the x axis
+    with pytest.raises(RequirementError, match="coincide"):
+        DSNTZR([1.0, 1.0, 2.0], 0.5, [0.3, 0.3, 0.0], [1.0, 1.0, 1.0])
+    with pytest.raises(ValueError, match="LO"):
+        DSNTZR([1.0, 1.0], 0.5, [0.0, 0.3, 0.6], [1.0] * 3)
+    with pytest.raises(ValueError, match="FI3"):
+        DSNTZR([1.0] * 3, 0.5, [0.0, 0.3, 0.6], [1.0, math.nan, 1.0])
+    r = DSNTZR([[1.0, 2.0, 3.0], [0.9] * 3], 0.0, [0.0, 0.0, 0.0],
+               [[0.0] * 3, [0.524, 1.57, 2.793]], on_error="nan")
+    assert np.isnan(r.L1[0]) and r.status[0] == sarkp.library.ST_SINGULAR
+    with pytest.raises(SingularError, match=r"index \[0\]"):
+        DSNTZR([[1.0, 2.0, 3.0], [0.9] * 3], 0.0, [0.0, 0.0, 0.0], [0.0] * 3)
+
+
+def test_dsntzr_sweep_matches_scalar():
+    rng = np.random.default_rng(7)
+    lo = rng.uniform(0.5, 1.5, (20, 3))
+    l3 = rng.uniform(0.2, 1.0, 20)
+    fi1 = np.cumsum(rng.uniform(0.3, 1.0, (20, 3)), axis=1)
+    fi3 = rng.uniform(0, 3, (20, 3))
+    r = DSNTZR(lo, l3, fi1, fi3, on_error="nan")
+    for k in range(20):
+        try:
+            s = DSNTZR(lo[k], l3[k], fi1[k], fi3[k])
+        except SarkpError:
+            assert np.isnan(r.L1[k])
+            continue
+        assert (r.L1[k], r.L2[k], r.FI11[k]) == (s.L1, s.L2, s.FI11)
+
+
+# ---- DSNTZ1: the listing's construction -----------------------------------------------
+
+@HYP
+@given(kw3=st.floats(1.05, 3.0), f31=angles, swing=st.floats(0.2, 2.5),
+       sign=st.sampled_from([1.0, -1.0]), l3=lengths, xd=st.floats(-2.0, 2.0),
+       q=st.sampled_from([1.0, -1.0]))
+def test_dsntz1_extreme_positions(kw3, f31, swing, sign, l3, xd, q):
+    """Whenever DSNTZ1 succeeds, the mechanism (crank pivot on the x axis) makes full
+    turns and its rocker stops exactly at FI31 (stretched out) and FI32 (folded)."""
+    f32 = f31 + sign * swing
+    try:
+        r = DSNTZ1(kw3, f31, f32, l3, xd, q)
+    except RequirementError:
+        assume(False)
+    D = (xd, 0.0)
+    C1 = (xd + l3 * math.cos(f31), l3 * math.sin(f31))
+    C2 = (xd + l3 * math.cos(f32), l3 * math.sin(f32))
+    assume(min(abs(C1[1]), abs(C2[1])) > 0.01)      # not a change point (C on line AD)
+    A = pivot_from(C1, C2, r.L1, r.L2, D, r.LO, on_x=True)
+    assert abs(A[1]) < TOL
+    errs, *_ = check_crank_rocker(A, D, r.L1, r.L2, l3, C1, f31, f32, kw3)
+    assert errs[0] < TOL and errs[1] < TOL
+
+
+@pytest.mark.xfail(strict=True, reason="E-DSNTZ1-4: the listing's line through C1 at "
+                   "FI31 + BETA does not give angle C1AC2 = BETA (open, with the lead)")
+def test_dsntz1_coefficient_of_speed_change():
+    f31, f32, l3, xd = math.pi / 6, 5 * math.pi / 6, 0.5, 0.75
+    r = DSNTZ1(1.5, f31, f32, l3, xd, -1.0)
+    D = (xd, 0.0)
+    C1 = (xd + l3 * math.cos(f31), l3 * math.sin(f31))
+    C2 = (xd + l3 * math.cos(f32), l3 * math.sin(f32))
+    A = pivot_from(C1, C2, r.L1, r.L2, D, r.LO, on_x=True)
+    errs, *_ = check_crank_rocker(A, D, r.L1, r.L2, l3, C1, f31, f32, 1.5)
+    assert errs[2] < TOL
+
+
+def test_dsntz1_bad_input():
+    with pytest.raises(RequirementError, match="KW3 <= 1"):
+        DSNTZ1(1.0, 0.5, 2.6, 0.5, 0.75, -1.0)
+    with pytest.raises(RequirementError, match="try the other Q"):
+        DSNTZ1(1.5, math.pi / 6, 5 * math.pi / 6, 0.5, 0.75, 1.0)   # the book's, Q = +1
+    with pytest.raises(RequirementError):
+        DSNTZ1(1.5, 0.5, 0.5, 0.5, 0.75, -1.0)                       # FI31 = FI32
+    with pytest.raises(ValueError, match="L3"):
+        DSNTZ1(1.5, 0.5, 2.6, -0.5, 0.75, -1.0)
+    with pytest.raises(ValueError, match="KW3"):
+        DSNTZ1(math.inf, 0.5, 2.6, 0.5, 0.75, -1.0)
+
+
+# ---- DSNTZ2: KW3 and transmission angles ----------------------------------------------
+
+@HYP
+@given(kw3=st.floats(1.02, 3.0), fi3=angles, l3=lengths, xd=st.floats(-2.0, 2.0),
+       gmin=st.floats(0.05, 1.5), dg=st.floats(0.0, 1.5))
+def test_dsntz2_meets_its_requirements(kw3, fi3, l3, xd, gmin, dg):
+    gmax = gmin + dg
+    try:
+        r = DSNTZ2(kw3, fi3, l3, xd, gmin, gmax)
+    except RequirementError:
+        assume(False)
+    beta = math.pi * (kw3 - 1) / (kw3 + 1)
+    psi = beta + gmax - gmin
+    D = (xd, 0.0)
+    C1 = (xd + l3 * math.cos(fi3), l3 * math.sin(fi3))
+    C2 = (xd + l3 * math.cos(fi3 + psi), l3 * math.sin(fi3 + psi))
+    A = pivot_from(C1, C2, r.L1, r.L2, D, r.LO)
+    assert math.hypot(A[0] - dsntz2_pivot()[0], A[1] - dsntz2_pivot()[1]) < TOL
+    errs, fb, t1, t2 = check_crank_rocker(A, D, r.L1, r.L2, l3, C1, fi3, fi3 + psi, kw3)
+    assert max(errs) < TOL, errs
+    # transmission angle BCD: GMIN stretched out, GMAX folded
+    assert abs(angle_at(fb.B(t1), fb.C(t1), D) - gmin) < TOL
+    assert abs(angle_at(fb.B(t2), fb.C(t2), D) - gmax) < TOL
+
+
+def test_dsntz2_bad_input():
+    with pytest.raises(RequirementError, match="KW3 <= 1"):
+        DSNTZ2(0.8, 0.5, 0.5, 0.75, 0.2, 1.0)
+    with pytest.raises(ValueError, match="L3"):
+        DSNTZ2(1.5, 0.5, 0.0, 0.75, 0.2, 1.0)
+    r = DSNTZ2([1.5, 0.5], math.pi / 6, 0.5, 0.75, math.pi / 18, math.pi / 3,
+               on_error="nan")
+    assert r.status.tolist() == [0, sarkp.library.ST_REQUIREMENT] and np.isnan(r.L1[1])
+    assert r.L1[0] == DSNTZ2(1.5, math.pi / 6, 0.5, 0.75, math.pi / 18, math.pi / 3).L1
+
+
+# ---- DSNTZ3: two positions of the coupler ---------------------------------------------
+
+@HYP
+@given(l0=lengths, l1=lengths, l2=lengths, l3=lengths, th1=angles,
+       fi1=st.floats(0.2, 2.5), s=st.sampled_from([1.0, -1.0]),
+       ax=st.floats(-1, 1), ay=st.floats(-1, 1), rot=angles,
+       vsign=st.sampled_from([1.0, -1.0]))
+def test_dsntz3_recovers_the_mechanism(l0, l1, l2, l3, th1, fi1, s, ax, ay, rot, vsign):
+    """A four-bar (placed anywhere) turned clockwise by FI1 gives two coupler
+    positions; with the direction of the velocity of C1, DSNTZ3 returns its crank,
+    rocker and frame."""
+    c, sn = math.cos(rot), math.sin(rot)
+    D = (ax + l0 * c, ay + l0 * sn)
+    fb = FourBar((ax, ay), D, l1, l2, l3, s=s)
+    th2 = th1 - fi1                                   # clockwise: see DSNTZ3's docstring
+    B1, B2, C1, C2 = fb.B(th1), fb.B(th2), fb.C(th1), fb.C(th2)
+    assume(C1 is not None and C2 is not None)
+    assume(math.hypot(*sub(C2, C1)) > 0.05)
+    alc1 = math.atan2(C1[1] - D[1], C1[0] - D[0]) + vsign * math.pi / 2
+    # the normal at C1 must not be (nearly) parallel to the bisector of C1C2
+    u = sub(C2, C1)
+    assume(abs(cross(u, (math.cos(alc1), math.sin(alc1)))) / math.hypot(*u) > 0.05)
+    r = DSNTZ3(*B1, *B2, *C1, *C2, fi1, alc1)
+    assert abs(r.L1 - l1) < TOL and abs(r.L3 - l3) < TOL and abs(r.LO - l0) < TOL
+
+
+def test_dsntz3_bad_input():
+    with pytest.raises(RequirementError, match="coincide"):
+        DSNTZ3(0.2, 0.4, 0.2, 0.4, 0.8, 0.85, 1.343, 0.6, 1.0, 0.3)
+    with pytest.raises(SingularError, match="parallel"):
+        DSNTZ3(0.2, 0.4, 0.6, 0.5, 0.8, 0.85, 1.343, 0.6, 0.0, 0.3)
+
+
+# ---- DSNTZK: slotted-link mechanism ---------------------------------------------------
+
+def _link_limits(f, n=720):
+    """Roots of f over one crank turn, by sign change and bisection."""
+    ths = [0.123456789 + TWO_PI * k / n for k in range(n + 1)]   # off any round angle
+    fs = [f(t) for t in ths]
+    roots = []
+    for k in range(n):
+        if fs[k] == 0.0 or fs[k] * fs[k + 1] < 0.0:
+            lo, hi, flo = ths[k], ths[k + 1], fs[k]
+            while fs[k] != 0.0:
+                mid = 0.5 * (lo + hi)
+                if mid in (lo, hi):
+                    break
+                fm = f(mid)
+                if (fm > 0.0) == (flo > 0.0):
+                    lo, flo = mid, fm
+                else:
+                    hi = mid
+            roots.append(lo if fs[k] == 0.0 else 0.5 * (lo + hi))
+    return roots
+
+
+@HYP
+@given(kw3=st.floats(1.05, 3.0), s=st.floats(0.05, 2.0), h=st.floats(0.0, 0.5),
+       q=st.sampled_from([1.0, -1.0, 0.5]))
+def test_dsntzk_oscillating(kw3, s, h, q):
+    """Crank l1 about A = origin, slotted link about C = (0, -LO) through the crank pin:
+    the link swings between the tangent positions; the chord at L3 is S, the crank
+    angles between them give KW3, and L3 = LO + L1 + H."""
+    try:
+        r = DSNTZK(kw3, s, h, q)
+    except RequirementError:
+        assume(False)
+    C = (0.0, -r.LO)
+
+    def pin(t):
+        return (r.L1 * math.cos(t), r.L1 * math.sin(t))
+
+    def link(t):
+        b = pin(t)
+        return math.atan2(b[1] - C[1], b[0] - C[0])
+
+    roots = _link_limits(lambda t: (pin(t)[0]) * (pin(t)[0] - C[0])
+                         + pin(t)[1] * (pin(t)[1] - C[1]))   # CB perpendicular to AB
+    assert len(roots) == 2
+    swing = abs(angdiff(link(roots[0]), link(roots[1])))
+    assert abs(2 * r.L3 * math.sin(swing / 2) - s) < TOL
+    assert abs(time_ratio(*roots) - kw3) < TOL
+    assert abs(r.L3 - (r.LO + r.L1 + h)) < TOL
+
+
+@HYP
+@given(kw3=st.floats(1.05, 3.0), s=st.floats(0.05, 2.0), h=st.floats(0.0, 0.5))
+def test_dsntzk_rotating(kw3, s, h):
+    """Q = 0: the link turns fully (L1 > LO); a slider on the link's end at L3 moving
+    along the line through C perpendicular to AC has stroke 2 L3 = S, and the crank
+    angles between its dead centres give KW3."""
+    try:
+        r = DSNTZK(kw3, s, h, 0.0)
+    except RequirementError:
+        assume(False)
+    assert r.L1 > r.LO
+    C = (0.0, -r.LO)
+    roots = _link_limits(lambda t: r.L1 * math.sin(t) - C[1])   # CB perpendicular to AC
+    assert len(roots) == 2
+    assert abs(2 * r.L3 - s) < TOL
+    assert abs(time_ratio(*roots) - kw3) < TOL
+    assert abs(r.L3 - (r.LO + r.L1 + h)) < TOL
+
+
+def test_dsntzk_values_and_bad_input():
+    # no printed example; values of the listing (notes, REAL*4) in double precision
+    assert DSNTZK(1.5, 0.3, 0.05, 1.0) == pytest.approx((0.1027864, 0.3326238, 0.4854102),
+                                                         abs=1e-7)
+    assert DSNTZK(1.5, 0.3, 0.05, 0.0) == pytest.approx((0.0763932, 0.0236068, 0.15),
+                                                         abs=1e-7)
+    with pytest.raises(RequirementError, match="KW3 <= 1"):
+        DSNTZK(1.0, 0.3, 0.05, 1.0)
+    with pytest.raises(RequirementError, match="reserve H"):
+        DSNTZK(1.5, 0.3, 0.2, 0.0)
+    with pytest.raises(ValueError, match="H"):
+        DSNTZK(1.5, 0.3, -0.1, 0.0)
+    with pytest.raises(ValueError, match="S"):
+        DSNTZK(1.5, 0.0, 0.1, 0.0)
+
+
+# ---- arrays, modes, reports -----------------------------------------------------------
+
+def test_sweeps_match_scalars():
+    rng = np.random.default_rng(3)
+    n = 40
+    kw3 = rng.uniform(1.05, 2.5, n)
+    cases = [
+        (DSNTZ1, (kw3, rng.uniform(0, 1, n), rng.uniform(1.5, 3, n), rng.uniform(.2, 1, n),
+                  rng.uniform(-1, 1, n), rng.choice([-1.0, 1.0], n))),
+        (DSNTZ2, (kw3, rng.uniform(0, 1, n), rng.uniform(.2, 1, n), rng.uniform(-1, 1, n),
+                  rng.uniform(.1, .5, n), rng.uniform(.5, 1.2, n))),
+        (DSNTZ3, tuple(rng.uniform(-1, 1, n) for _ in range(8))
+         + (rng.uniform(.2, 2, n), rng.uniform(-3, 3, n))),
+        (DSNTZK, (kw3, rng.uniform(.1, 1, n), rng.uniform(0, .2, n),
+                  rng.choice([0.0, 1.0], n))),
+    ]
+    for routine, args in cases:
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            arr = routine(*args, on_error="nan")
+            for k in range(n):
+                one = routine(*(a[k] for a in args), on_error="nan")
+                assert one.status == arr.status[k]
+                for name in routine.spec.outputs:
+                    a, b = getattr(arr, name)[k], getattr(one, name)
+                    assert (a == b) or (math.isnan(a) and math.isnan(b))
+
+
+def test_double_round_trip():
+    x = 0.1234567890123456
+    r = DSNTZK(1.5, 2 * x, 0.0, 0.0)
+    assert r.L3 == x
+
+
+def test_report_aaa_zero(capsys):
+    DSNTZR([0.9] * 3, 0.6, [0.349, 1.047, 1.745], [0.524, 1.57, 2.793], 0.0)
+    out = capsys.readouterr().out
+    assert "L1 =   0.868 L2 =   1.048" in out
+    DSNTZK(1.5, 0.3, 0.05, 1.0)
+    assert capsys.readouterr().out == ""
