@@ -63,3 +63,17 @@ def test_modes_switch_pi_and_restore():
         assert sarkp.DUGOL(-1.0).DUGOL == pytest.approx(2 * 3.14159 - 1.0, abs=1e-15)
     assert sarkp.get_mode() == "corrected"
     assert sarkp.DUGOL(-1.0).DUGOL == pytest.approx(2 * math.pi - 1.0, abs=1e-15)
+
+
+def test_nan_from_a_failed_step_passes_through_a_chain_with_on_error_nan():
+    first = sarkp.DUGL1([0.0, 1.0], [0.0, 1.0], [1.0, 1.0], [0.0, 1.0], on_error="nan")
+    assert list(first.status) == [0, 2]
+    second = sarkp.DUGL3(first.DUGL1, 1.0, 1.0, on_error="nan")
+    assert second.DUGL3[0] == 1.0 and np.isnan(second.DUGL3[1])
+    assert list(second.status) == [0, 5]                   # 5: an input was missing
+    scalar = sarkp.DVKT(0.0, 0.0, math.nan, 1.0, on_error="nan")
+    assert np.isnan(scalar.RZ) and scalar.status == 5
+    with pytest.raises(ValueError, match="X2"):           # but never silently by default
+        sarkp.DVKT(0.0, 0.0, math.nan, 1.0)
+    with pytest.raises(ValueError, match="X2"):           # and inf is never a missing value
+        sarkp.DVKT(0.0, 0.0, [math.inf], 1.0, on_error="nan")

@@ -35,8 +35,13 @@ ST_SINGULAR = int(_prmtr.st_singular)
 ST_SIGNIFICANCE = int(_prmtr.st_significance)
 ST_REQUIREMENT = int(_prmtr.st_requirement)
 
+#: Python-side status: an input was NaN, i.e. an earlier step of a chain failed and
+#: returned NaN under ``on_error="nan"``; the outputs there are NaN as well.
+ST_MISSING = 5
+
 STATUS_NAMES = {ST_OK: "ok", ST_ASSEMBLY: "assembly", ST_SINGULAR: "singular",
-                ST_SIGNIFICANCE: "significance", ST_REQUIREMENT: "requirement"}
+                ST_SIGNIFICANCE: "significance", ST_REQUIREMENT: "requirement",
+                ST_MISSING: "missing input"}
 
 _ERRORS = {ST_ASSEMBLY: AssemblyError, ST_SINGULAR: SingularError,
            ST_REQUIREMENT: RequirementError}
@@ -94,6 +99,10 @@ class Routine:
         self.sweep_inputs = (tuple(sweep_inputs) if sweep_inputs
                              else tuple(a for a in self.inputs if a != "AAA"))
         self._strict = bool(self.lengths or self.nonnegative or self.integers)
+        self._positive_at = tuple(i for i, a in enumerate(self.inputs) if a in self.lengths)
+        self._nonnegative_at = tuple(i for i, a in enumerate(self.inputs)
+                                     if a in self.nonnegative)
+        self._integer_at = tuple(i for i, a in enumerate(self.inputs) if a in self.integers)
         self._aaa_index = self.inputs.index("AAA") if "AAA" in self.inputs else None
         if self.report is not None and self._aaa_index is None:
             raise ValueError(f"{name}: a report needs the print flag AAA among the inputs")
@@ -116,25 +125,38 @@ class Routine:
             if arg in self.nonnegative and v < 0.0:
                 raise ValueError(f"{self.name}: {arg} = {v!r} must be >= 0")
 
-    def _check_arrays(self, arrays, shape):
+    def _out_of_range(self, args):
+        """True if a length is not positive, a bound is broken or an integer is wrong."""
+        return (any(not args[i] > 0.0 for i in self._positive_at)
+                or any(args[i] < 0.0 for i in self._nonnegative_at)
+                or any(args[i] != int(args[i]) or int(args[i]) not in
+                       self.integers[self.inputs[i]] for i in self._integer_at))
+
+    def _check_arrays(self, arrays, shape, allow_nan):
+        """Raise ValueError for a bad input; return where an input is NaN (if allowed)."""
+        missing = np.zeros(shape, dtype=bool)
         for arg, a in zip(self.inputs, arrays):
+            nan = np.isnan(a) if allow_nan else missing
             if arg in self.integers:
                 allowed = np.array(sorted(self.integers[arg]))
-                bad = ~np.isin(a, allowed)
+                bad = ~np.isin(a, allowed) & ~nan
                 what = f"is not one of {allowed.tolist()}"
             else:
-                bad = ~np.isfinite(a)
+                bad = ~np.isfinite(a) & ~nan
                 what = "is not a finite number"
                 if not bad.any():
                     if arg in self.lengths:
-                        bad = ~(a > 0.0)
+                        bad = ~(a > 0.0) & ~nan
                         what = "is a length and must be > 0"
                     elif arg in self.nonnegative:
-                        bad = a < 0.0
+                        bad = (a < 0.0) & ~nan
                         what = "must be >= 0"
             if bad.any():
                 idx = _first_index(bad, shape)
                 raise ValueError(f"{self.name}: {arg}{list(idx)} = {a[idx]!r} {what}")
+            if allow_nan:
+                missing |= nan
+        return missing
 
     # -- the call -----------------------------------------------------------------------
     def __call__(self, args, on_error="raise"):
@@ -153,11 +175,15 @@ class Routine:
     def _call_scalar(self, args, total, on_error):
         # The sum of the inputs is finite when every input is, except when it overflows:
         # only then, or when some input has a range to respect, look at each one.
-        if self._strict or not math.isfinite(total):
+        if not math.isfinite(total) or (self._strict and self._out_of_range(args)):
+            if on_error == "nan" and math.isnan(total):   # a failed earlier step
+                return self.result_with_status(*(math.nan,) * len(self.outputs), ST_MISSING)
             values = [float(a) for a in args]
             self._check_scalar(values)
-            args = [int(v) if n in self.integers else v
-                    for n, v in zip(self.inputs, values)]
+        if self._integer_at:
+            args = list(args)
+            for i in self._integer_at:
+                args[i] = int(args[i])
         status, failed_check = ST_OK, None
         if self.checks:
             named = dict(zip(self.inputs, args))
@@ -189,9 +215,10 @@ class Routine:
     def _call_arrays(self, args, on_error):
         arrays = np.broadcast_arrays(*[np.asarray(a, dtype=float) for a in args])
         shape = arrays[0].shape
-        self._check_arrays(arrays, shape)
+        # under on_error="nan" a NaN input (an earlier failure in a chain) passes through
+        missing = self._check_arrays(arrays, shape, allow_nan=on_error == "nan")
         named = dict(zip(self.inputs, arrays))
-        status = np.zeros(shape, dtype=np.int32)
+        status = np.where(missing, ST_MISSING, ST_OK).astype(np.int32)
         failed_check = np.full(shape, -1, dtype=np.int8)     # which check failed where
         for k, check in enumerate(self.checks):
             bad = np.asarray(check.bad(**named), dtype=bool) & (status == ST_OK)
