@@ -17,6 +17,7 @@ from .figures import Figure, compare, load_figure
 PROGRAMS = {
     "II.13": "prog_ii_13",
     "III.5": "prog_iii_5",
+    "IV.15": "prog_iv_15",
 }
 
 #: figure number -> listing of the program that prints it
