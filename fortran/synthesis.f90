@@ -156,20 +156,39 @@ contains
 
   ! III.2 DSNTZ1, L1023-1105 (Table 4, L1034-1051).  Four-bar from the two extreme rocker
   ! angles FI31, FI32, the rocker L3 with pivot D = (XD, 0), and the coefficient of speed
-  ! change KW3; the crank pivot A on the x axis, Q picks the intersection (sign only,
-  ! Q = 0 acts as +1).  The LISTING's construction is implemented: E = intersection of the
-  ! perpendicular bisector of C1C2 (through D) with the line through C1 at the fixed
-  ! direction FI31 + BETA; A = intersection of the circle (E, |EC1|) with the x axis.
-  ! That direction is not the one of the prose (L1029, L1053: angle BETA to SD), so the
-  ! mechanism has the requested extreme positions but in general not the requested KW3
-  ! (E-DSNTZ1-4, open); Fig. 10's 0.411/0.904/0.858 is not reproduced (0.406/0.835/0.782).
+  ! change KW3, BETA = PI (KW3 - 1)/(KW3 + 1); the crank pivot A on the x axis, Q picks
+  ! the intersection (sign only, Q = 0 acts as +1): XA = XE + SIGN(SQRT(R**2 - YE**2), Q),
+  ! Q = -1 the smaller XA ("A between O and D" in the book's example, L1055).
+  ! Both modes: C1 = D + L3 e(FI31), C2 = D + L3 e(FI32); E on the perpendicular bisector
+  ! SD of C1C2; circle (E, R = |EC1|); A where it meets the x axis; L1 = (|AC1|-|AC2|)/2,
+  ! L2 = |AC1| - L1, LO = |XD - XA| (Table 4 rows 9-13).  They differ in E (E-DSNTZ1-4):
+  !   corrected (printed_mode == 0): the prose's construction (L1029, L1053): the lines
+  !     through C1 and C2 at the angle BETA to SD meet on SD at E, so angle C1EC2 =
+  !     2 BETA and every point of the circle on D's side of the chord C1C2 sees it under
+  !     the inscribed angle C1AC2 = BETA, the angle the crank must turn beyond a half
+  !     turn: KW3 = (PI + BETA)/(PI - BETA) exactly.  With S the midpoint and
+  !     h = |C1C2|/2, E = S + h cot(BETA) (D - S)/|SD|, written as vectors (no slopes).
+  !     E is taken towards D: the x axis passes through D, which a crank-rocker's swing
+  !     (< PI) keeps off the chord, and this side gives the book's Q convention.  (The
+  !     mirror arc, beyond the chord, also sees C1C2 under BETA; where the axis meets it
+  !     a further, less common, solution may exist, which the book does not consider.)  An A
+  !     on the far side of the chord (there the circle sees C1C2 under PI - BETA) is
+  !     st_requirement, and so is |SD| = 0 (a swing of PI: no crank-rocker).
+  !   as-printed (printed_mode /= 0): the LISTING (L1077-1078, Table 4 rows 4-8): E on SD
+  !     and on the line through C1 at the fixed direction FI31 + BETA.  It keeps the
+  !     extreme positions but makes C1AC2 = PSI/2 - BETA, not BETA (book example:
+  !     K = 1.3077 for 1.5).  Both lines in normal form (E-SYN-1), solved by GELG.
+  ! Neither reproduces Fig. 10's 0.411/0.904/0.858 (corrected 0.390/0.722/0.650, listing
+  ! 0.406/0.835/0.782): E-DSNTZ1-4.
   ! ERRATA: E-DSNTZ1-1 (KCIE = KC1E), E-DSNTZ1-2 (debug PRINT 5 dropped), E-DSNTZ1-3
-  ! (vertical bisector: YC2 = YC1 in the book's own example), E-DSNTZ1-4, E-SYN-1.
+  ! (vertical bisector: YC2 = YC1 in the book's own example), E-DSNTZ1-4, E-DSNTZ1-6,
+  ! E-SYN-1, E-SYN-2.
   subroutine dsntz1(kw3, fi31, fi32, l3, xd, q, aaa, l1, l2, lo, ier)
     real(dp), intent(in) :: kw3, fi31, fi32, l3, xd, q, aaa
     real(dp), intent(out) :: l1, l2, lo
     integer, intent(out) :: ier
     real(dp) :: beta, xc1, yc1, xc2, yc2, a(2, 2), c(2), xe, ye, r, disc, xa, ac1, ac2
+    real(dp) :: xs, ys, h, sd, t
     logical :: ok
 
     l1 = 0.0_dp
@@ -184,11 +203,25 @@ contains
     yc2 = l3*sin(fi32)
     call line_bisector(xc1, yc1, xc2, yc2, a(1, 1), a(1, 2), c(1), ok)
     if (.not. ok) return                             ! FI31 = FI32: one position only
-    call line_dir(xc1, yc1, fi31 + beta, a(2, 1), a(2, 2), c(2))
-    call solve2(a, c, ier)
-    if (ier == st_singular) return
-    xe = c(1)
-    ye = c(2)
+    xs = 0.5_dp*(xc1 + xc2)
+    ys = 0.5_dp*(yc1 + yc2)
+    sd = hypot(xd - xs, ys)
+    if (printed_mode /= 0) then
+      ! E-DSNTZ1-4, as printed: KC1E = TAN(FI31 + BETA) (L1078), E on SD and on that line.
+      call line_dir(xc1, yc1, fi31 + beta, a(2, 1), a(2, 2), c(2))
+      call solve2(a, c, ier)
+      if (ier == st_singular) return
+      xe = c(1)
+      ye = c(2)
+    else
+      ! E-DSNTZ1-4, corrected: the prose (L1029, L1053), angle C1EC2 = 2 BETA, E towards D.
+      if (.not. sd > 64.0_dp*epsilon(1.0_dp)*l3) return   ! D on C1C2: a swing of PI
+      h = 0.5_dp*hypot(xc2 - xc1, yc2 - yc1)
+      t = h*cos(beta)/sin(beta)                      ! signed |SE| along S -> D
+      xe = xs + t*(xd - xs)/sd
+      ye = ys + t*(0.0_dp - ys)/sd
+      ier = st_ok
+    end if
     r = hypot(xe - xc1, ye - yc1)
     disc = (r - ye)*(r + ye)
     if (disc < 0.0_dp) then                          ! the circle misses the x axis
@@ -196,6 +229,13 @@ contains
       return
     end if
     xa = xe + book_sign(sqrt(disc), q)
+    if (printed_mode == 0) then
+      ! A must be on the arc seen under BETA: on D's side of the chord C1C2.
+      if (.not. ((xa - xs)*(xd - xs) + (0.0_dp - ys)*(0.0_dp - ys) > 0.0_dp)) then
+        ier = st_requirement
+        return
+      end if
+    end if
     ac1 = hypot(xa - xc1, yc1)
     ac2 = hypot(xa - xc2, yc2)
     l1 = 0.5_dp*(ac1 - ac2)

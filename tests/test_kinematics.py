@@ -17,7 +17,7 @@ from importlib import resources
 
 import numpy as np
 import pytest
-from hypothesis import given, settings
+from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 import sarkp
@@ -64,6 +64,13 @@ def angdiff(a, b):
 
 def close(a, b, scale, rtol):
     return np.all(np.abs(np.asarray(a) - np.asarray(b)) <= rtol * scale)
+
+
+def same(m1, a1, m2, a2, scale, rtol=1e-13):
+    """The vectors (modulus, direction) m1, a1 and m2, a2 agree to rtol*scale (a direction
+    is compared through its vector: it has no meaning for a zero modulus)."""
+    return close(vec(np.asarray(m1), np.asarray(a1)), vec(np.asarray(m2), np.asarray(a2)),
+                 scale, rtol)
 
 
 class Crank:
@@ -140,7 +147,10 @@ def test_kind1_positions_branch_and_closure(seed):
 @given(SEEDS)
 def test_kind1_velocities_and_accelerations_are_derivatives(seed):
     a, c, b, rz2, rz3, p = kind1(seed)
-    h = step(max(abs(a.w), abs(c.w)))
+    # the step follows the group's own rates
+    r0 = K.DPRM1(*a.pos(0.0)[:, 0], *c.pos(0.0)[:, 0], rz2, rz3, p)
+    v0 = K.DSKOR1(rz2, r0.FI2, rz3, r0.FI3, *a.vel(0.0), *c.vel(0.0))
+    h = step(max(abs(a.w), abs(c.w), abs(v0.W2), abs(v0.W3)), min(rz2, rz3))
     t = STEPS * h
     pa, pc = a.pos(t), c.pos(t)
     r = K.DPRM1(pa[0], pa[1], pc[0], pc[1], rz2, rz3, p)
@@ -178,16 +188,17 @@ def test_dknma1_equals_chain(seed, p, analog):
     assert close(angdiff([k.FI2, k.FI3], [r.FI2, r.FI3]), 0, 1, 1e-13)
     V = max(v.VB, va, vc, 1.0)
     assert close([k.VBA, k.VBC, k.VB], [v.VBA, v.VBC, v.VB], V, 1e-13)
-    assert close(angdiff([k.ALBA, k.ALBC, k.ALB], [v.ALBA, v.ALBC, v.ALB]), 0, 1, 1e-12)
+    assert same([k.VBA, k.VBC, k.VB], [k.ALBA, k.ALBC, k.ALB],
+                [v.VBA, v.VBC, v.VB], [v.ALBA, v.ALBC, v.ALB], V)
     assert close([k.W2, k.W3], [v.W2, v.W3], V / min(rz2, rz3), 1e-13)
     if analog == 1.0:
         assert k.AB == k.E2 == k.E3 == 0.0        # not computed
         return
     u = K.DUSKR1(aa, ba, ac, bc, rz2, r.FI2, rz3, r.FI3, v.W2, v.W3)
     A = max(u.AB, aa, ac, 1.0)
-    assert close([k.ABAT, k.ABCT, k.AB], [u.ABAT, u.ABCT, u.AB], A, 1e-12)
-    assert close([k.E2, k.E3], [u.E2, u.E3], A / min(rz2, rz3), 1e-12)
-    assert close([k.ABAN, k.ABCN], [v.W2**2 * rz2, v.W3**2 * rz3], A, 1e-12)
+    assert close([k.ABAT, k.ABCT, k.AB], [u.ABAT, u.ABCT, u.AB], A, 1e-13)
+    assert close([k.E2, k.E3], [u.E2, u.E3], A / min(rz2, rz3), 1e-13)
+    assert close([k.ABAN, k.ABCN], [v.W2**2 * rz2, v.W3**2 * rz3], A, 1e-13)
 
 
 def test_kind1_branch_conventions_dprm1_vs_dknma1():
@@ -346,17 +357,19 @@ def test_dknma2_equals_chain(seed, p, analog):
     assert close(angdiff(k.FI2, r.FI2), 0, 1, 1e-13)
     v = K.DSKOR2(va, ala, vbm, albm, rz2, r.FI2, g.f0)
     V = max(va, vbm, v.VB, 1.0)
-    assert close([k.VBA, k.VBBM, k.VB, k.W2 * rz2], [v.VBA, v.VBBM, v.VB, v.W2 * rz2], V, 1e-12)
-    assert close(angdiff([k.ALBA, k.ALBBM, k.ALB], [v.ALBA, v.ALBBM, v.ALB]), 0, 1, 1e-12)
+    assert close([k.VBA, k.VBBM, k.VB, k.W2 * rz2], [v.VBA, v.VBBM, v.VB, v.W2 * rz2], V, 1e-13)
+    assert same([k.VBA, k.VBBM, k.VB], [k.ALBA, k.ALBBM, k.ALB],
+                [v.VBA, v.VBBM, v.VB], [v.ALBA, v.ALBBM, v.ALB], V)
     if analog == 1.0:
         assert k.AB == k.E2 == 0.0
         return
     abk, bbk = 2 * abs(wm) * v.VBBM, sarkp.DUGL3(v.ALBBM, math.pi / 2, wm).DUGL3
-    assert close([k.ABK, k.ABAN], [abk, v.W2**2 * rz2], V, 1e-12)
+    assert close([k.ABK, k.ABAN], [abk, v.W2**2 * rz2], V, 1e-13)
     u = K.DUSKR2(aa, ba, abm, bbm, abk, bbk, rz2, r.FI2, v.W2, g.f0)
     A = max(aa, abm, abk, u.AB, 1.0)
-    assert close([k.ABAT, k.ABBM, k.AB, k.E2 * rz2], [u.ABAT, u.ABVM, u.AB, u.E2 * rz2], A, 1e-12)
-    assert close(angdiff([k.BB, k.BBAT, k.BBBM], [u.BB, u.VBAT, u.BVBM]), 0, 1, 1e-12)
+    assert close([k.ABAT, k.ABBM, k.AB, k.E2 * rz2], [u.ABAT, u.ABVM, u.AB, u.E2 * rz2], A, 1e-13)
+    assert same([k.AB, k.ABAT, k.ABBM], [k.BB, k.BBAT, k.BBBM],
+                [u.AB, u.ABAT, u.ABVM], [u.BB, u.VBAT, u.BVBM], A)
 
 
 # ---------------------------------------------------------------------------------------
@@ -443,14 +456,17 @@ def test_dknma3_equals_chain(seed, p, analog):
     (va, ala), (vc, alc), (aa, ba), (ac, bc) = a.vel(0), c.vel(0), a.acc(0), c.acc(0)
     k = K.DKNMA3(xa, ya, xc, yc, rz2, t0, va, ala, vc, alc, aa, ba, ac, bc, p, analog)
     r = K.DPRM3(xa, ya, xc, yc, rz2, t0, -p)          # DKNMA3's P is DPRM3's -P
+    # DKNMA3 takes the axis from C -> B: ill-conditioned when B nears C (the book's way)
+    assume(k.RZBC > 0.1 * r.RZAC)
     # the same axis; DKNMA3's FI3 is the ray C -> B, which may point the other way
-    assert close((k.FI3 - r.FI3 + math.pi / 2) % math.pi - math.pi / 2, 0, 1, 1e-12)
+    assert close((k.FI3 - r.FI3 + math.pi / 2) % math.pi - math.pi / 2, 0, 1, 1e-13)
     assert abs(math.hypot(k.XB - xa, k.YB - ya) - rz2) <= 1e-12 * max(rz2, 1.0)
     v = K.DSKOR3(xa, ya, xc, yc, va, ala, vc, alc, r.FI3)
     V = max(va, vc, v.VA3, 1.0)
     assert close([k.VAR, k.VAC, k.VA3, k.W3 * r.RZAC], [v.VA3A, v.VA3C, v.VA3, v.W3 * r.RZAC],
-                 V, 1e-12)
-    assert close(angdiff([k.ALAR, k.ALAC, k.ALA3], [v.ALA3A, v.ALA3C, v.ALA3]), 0, 1, 1e-11)
+                 V, 1e-13)
+    assert same([k.VAR, k.VAC, k.VA3], [k.ALAR, k.ALAC, k.ALA3],
+                [v.VA3A, v.VA3C, v.VA3], [v.ALA3A, v.ALA3C, v.ALA3], V)
     if analog == 1.0:
         assert k.AA3 == k.E3 == 0.0
         return
@@ -458,8 +474,9 @@ def test_dknma3_equals_chain(seed, p, analog):
     u = K.DUSKR3(aa, ba, ac, bc, r.FI3, v.W3, r.RZAC, r.FICA, aak, bak)
     A = max(aa, ac, aak, u.AA3, 1.0)
     assert close([k.AAK, k.AAR, k.AACT, k.AA3, k.E3 * r.RZAC],
-                 [aak, u.AA3AR, u.AA3CT, u.AA3, u.E3 * r.RZAC], A, 1e-11)
-    assert close(angdiff([k.BAR, k.BACT, k.BA3], [u.BA3AR, u.BA3CT, u.BA3]), 0, 1, 1e-10)
+                 [aak, u.AA3AR, u.AA3CT, u.AA3, u.E3 * r.RZAC], A, 1e-13)
+    assert same([k.AAR, k.AACT, k.AA3], [k.BAR, k.BACT, k.BA3],
+                [u.AA3AR, u.AA3CT, u.AA3], [u.BA3AR, u.BA3CT, u.BA3], A)
 
 
 # ---------------------------------------------------------------------------------------
@@ -517,8 +534,9 @@ def test_dknma4_equals_chain(seed, analog):
     assert close([k.XB, k.YB], [r.XB, r.YB], 3.0, 1e-13)
     v = K.DSKOR4(r.RVBM, r.FIVBM, m.f0, r.RVBN, r.FIVBN, n.f0, wm, wn)
     V = max(v.VB, 1.0)
-    assert close([k.VB2R, k.VB3R, k.VB], [v.VBBM, v.VBBN, v.VB], V, 1e-12)
-    assert close(angdiff([k.ALB2R, k.ALB3R, k.ALB], [v.ALBBM, v.ALBBN, v.ALB]), 0, 1, 1e-11)
+    assert close([k.VB2R, k.VB3R, k.VB], [v.VBBM, v.VBBN, v.VB], V, 1e-13)
+    assert same([k.VB2R, k.VB3R, k.VB], [k.ALB2R, k.ALB3R, k.ALB],
+                [v.VBBM, v.VBBN, v.VB], [v.ALBBM, v.ALBBN, v.ALB], V)
     if analog == 1.0:
         assert k.AB == 0.0
         return
@@ -527,8 +545,9 @@ def test_dknma4_equals_chain(seed, analog):
     u = K.DUSKR4(r.RVBM, r.FIVBM, m.f0, r.RVBN, r.FIVBN, n.f0, wm, em, wn, en, *ck)
     A = max(u.AB, 1.0)
     assert close([k.AB2K, k.AB3K, k.AB2R, k.AB3R, k.AB], [ck[0], ck[2], u.ABBMR, u.ABBNR, u.AB],
-                 A, 1e-12)
-    assert close(angdiff([k.BB2R, k.BB3R, k.BB], [u.BBBMR, u.BBBNR, u.BB]), 0, 1, 1e-10)
+                 A, 1e-13)
+    assert same([k.AB2R, k.AB3R, k.AB], [k.BB2R, k.BB3R, k.BB],
+                [u.ABBMR, u.ABBNR, u.AB], [u.BBBMR, u.BBBNR, u.BB], A)
 
 
 def test_dknma4_guide_acceleration_with_zero_omega():
@@ -599,8 +618,9 @@ def test_dknma5_equals_chain(seed, analog):
                  analog)
     v = K.DSKOR5(xc, yc, m.v[0], m.v[1], m.f0, t2, wm, vc, alc)
     V = max(vc, v.VC2, 1.0)
-    assert close([k.VC2C3, k.VC2CM, k.VC], [v.VC2C3, v.VC2CM, v.VC2], V, 1e-12)
-    assert close(angdiff([k.ALC2C3, k.ALC2CM, k.ALC], [v.ALC2C3, v.ALC2CM, v.ALC2]), 0, 1, 1e-11)
+    assert close([k.VC2C3, k.VC2CM, k.VC], [v.VC2C3, v.VC2CM, v.VC2], V, 1e-13)
+    assert same([k.VC2C3, k.VC2CM, k.VC], [k.ALC2C3, k.ALC2CM, k.ALC],
+                [v.VC2C3, v.VC2CM, v.VC2], [v.ALC2C3, v.ALC2CM, v.ALC2], V)
     if analog == 1.0:
         assert k.AC == 0.0
         return
@@ -608,8 +628,9 @@ def test_dknma5_equals_chain(seed, analog):
           2 * abs(wm) * v.VC2C3, sarkp.DUGL3(v.ALC2C3, math.pi / 2, wm).DUGL3)
     u = K.DUSKR5(xc, yc, m.v[0], m.v[1], m.f0, wm, em, t2, ac, bc, *ck)
     A = max(u.AC2, ac, 1.0)
-    assert close([k.AC2C3R, k.AC2CMR, k.AC], [u.AC2C3R, u.AC2CMR, u.AC2], A, 1e-12)
-    assert close(angdiff([k.BC2C3R, k.BC2CMR, k.BC], [u.BC2C3R, u.BC2CMR, u.BC2]), 0, 1, 1e-10)
+    assert close([k.AC2C3R, k.AC2CMR, k.AC], [u.AC2C3R, u.AC2CMR, u.AC2], A, 1e-13)
+    assert same([k.AC2C3R, k.AC2CMR, k.AC], [k.BC2C3R, k.BC2CMR, k.BC],
+                [u.AC2C3R, u.AC2CMR, u.AC2], [u.BC2C3R, u.BC2CMR, u.BC2], A)
 
 
 # ---------------------------------------------------------------------------------------
@@ -748,12 +769,14 @@ def _program_x():
                 E2=a1.E2, E3=a1.E3, E4=a2.E2, AE=a2.AB, BE=a2.BB)
 
 
-@pytest.mark.parametrize("group,columns,tol", [
-    ("positions", ["FI1", "FI2", "FICB", "XE", "FIDE", "XB", "YB"], 1.0e-4),
-    ("velocities", ["W2", "W3", "VE", "ALE", "W4"], 1.2e-4),
-    ("accelerations", ["E2", "E3", "E4", "AE", "BE"], 1.5e-4),
+@pytest.mark.parametrize("columns,tol", [
+    pytest.param(["FI1", "FI2", "FICB", "XE", "FIDE", "XB", "YB"], 1.0e-4, id="positions"),
+    pytest.param(["W2", "W3", "VE", "ALE", "W4"], 1.2e-4, id="velocities"),
+    pytest.param(["E2", "E3", "E4", "AE", "BE"], 1.5e-4, id="accelerations"),
 ])
-def test_fig91_as_printed(group, columns, tol):
+def test_fig91_as_printed(columns, tol):
+    # tolerances: the printed last digit (1e-4) plus the ES EVM's single precision; ALE at
+    # FI1 = 4.5378 is the direction of a velocity of 0.0082 (printed 3.1414, here 3.14152)
     printed = _fig91()
     with sarkp.as_printed():
         got = _program_x()

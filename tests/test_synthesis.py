@@ -15,7 +15,7 @@ import warnings
 
 import numpy as np
 import pytest
-from hypothesis import HealthCheck, assume, given, settings
+from hypothesis import HealthCheck, assume, example, given, settings
 from hypothesis import strategies as st
 
 import sarkp
@@ -191,13 +191,71 @@ def test_fig10_corrected_differs_only_in_dsntz3():
     assert bad == {("DSNTZ3", "L1"), ("DSNTZ3", "L3"), ("DSNTZ3", "LO")}
 
 
+def _listing_dsntz1(kw3, f31, f32, l3, xd, q, pi):
+    """Table 4 / listing III.2 retyped independently, slopes and all (L1076-1093):
+    KSD = -(XC2-XC1)/(YC2-YC1), KC1E = TAN(FI31+BETA), the 2x2 system for (YE, XE)
+    solved by Cramer's rule, XA = XE + SIGN(SQRT(R**2-YE**2), Q)."""
+    beta = pi * (kw3 - 1.0) / (kw3 + 1.0)
+    xc1, yc1 = xd + l3 * math.cos(f31), l3 * math.sin(f31)
+    xc2, yc2 = xd + l3 * math.cos(f32), l3 * math.sin(f32)
+    ksd = -(xc2 - xc1) / (yc2 - yc1)
+    kc1e = math.tan(f31 + beta)
+    # rows: YE - KSD*XE = -KSD*XD ; YE - KC1E*XE = -KC1E*XC1 + YC1
+    c1, c2 = -ksd * xd, -kc1e * xc1 + yc1
+    det = -kc1e + ksd
+    ye = (c1 * -kc1e - -ksd * c2) / det
+    xe = (c2 - c1) / det
+    r = math.sqrt((xe - xc1) ** 2 + (ye - yc1) ** 2)
+    xa = xe + math.copysign(math.sqrt(r ** 2 - ye ** 2), q)
+    ac1 = math.sqrt((xa - xc1) ** 2 + yc1 ** 2)
+    l1 = 0.5 * (ac1 - math.sqrt((xa - xc2) ** 2 + yc2 ** 2))
+    return l1, ac1 - l1, abs(xd - xa)
+
+
+def _book_dsntz1_inputs(pi):
+    """The call of program III.5 (L1281): DSNTZ1(1.5, PI/6., (PI/6.)*5., 0.5, 0.75, -1.)."""
+    return 1.5, pi / 6.0, (pi / 6.0) * 5.0, 0.5, 0.75, -1.0
+
+
+def test_dsntz1_as_printed_is_the_listing_E_DSNTZ1_4():
+    """As-printed mode runs the listing: on the book's example it gives what the
+    listing's own formulas give (0.4056 / 0.8347 / 0.7818), with the right extreme
+    positions but the time ratio of the angle C1AC2 = PSI/2 - BETA, not KW3."""
+    pi = 3.14159                                        # the listing's PI (L1073)
+    args = _book_dsntz1_inputs(pi)
+    listing = _listing_dsntz1(*args, pi)
+    with sarkp.as_printed():
+        r = DSNTZ1(*args)
+        from sarkp.book import prog_iii_5
+        cells = prog_iii_5.compute()
+    assert r == pytest.approx(listing, abs=1e-9)
+    assert [cells[("DSNTZ1", n)] for n in ("L1", "L2", "LO")] == list(r)
+    kw3, f31, f32, l3, xd, _ = args
+    D = (xd, 0.0)
+    C1 = (xd + l3 * math.cos(f31), l3 * math.sin(f31))
+    C2 = (xd + l3 * math.cos(f32), l3 * math.sin(f32))
+    A = pivot_from(C1, C2, r.L1, r.L2, D, r.LO, on_x=True)
+    errs, *_ = check_crank_rocker(A, D, r.L1, r.L2, l3, C1, f31, f32, kw3)
+    assert errs[0] < TOL and errs[1] < TOL
+    theta = (f32 - f31) / 2 - pi * (kw3 - 1) / (kw3 + 1)     # angle C1AC2 of the listing
+    assert angle_at(C1, A, C2) == pytest.approx(theta, abs=TOL)
+    realized = (math.pi + theta) / (math.pi - theta)
+    assert errs[2] == pytest.approx(abs(realized - kw3), abs=TOL)
+    assert abs(realized - kw3) > 0.19                          # 1.3077 for 1.5
+
+
 def test_fig10_dsntz1_not_reproducible_E_DSNTZ1_4():
-    fig, cmp = _fig10("as-printed")
-    cells = {(c.cell.row, c.cell.column): c for c in cmp}
-    for name, listing in (("L1", 0.4055734), ("L2", 0.8347419), ("LO", 0.7818461)):
-        c = cells[("DSNTZ1", name)]
-        assert not c.cell.reproducible and "E-DSNTZ1-4" in c.cell.errata
-        assert c.computed == pytest.approx(listing, abs=2e-7)
+    """Fig. 10's DSNTZ1 triple (L1325) is reproduced by neither mode: not by the
+    listing (as-printed) nor by the prose's construction (corrected)."""
+    for mode in ("as-printed", "corrected"):
+        fig, cmp = _fig10(mode)
+        cells = {(c.cell.row, c.cell.column): c for c in cmp}
+        triple = [cells[("DSNTZ1", n)] for n in ("L1", "L2", "LO")]
+        for c in triple:
+            assert not c.cell.reproducible and "E-DSNTZ1-4" in c.cell.errata
+        assert not all(c.matches for c in triple), mode
+        # not even close: L2 and LO miss by more than 50 units of the last digit
+        assert min(abs(triple[1].units), abs(triple[2].units)) > 50, mode
 
 
 def test_fig10_slider_needs_0535_E_FIG10_1():
@@ -227,13 +285,16 @@ def test_fig10_dsntz2_pivot():
 
 def test_dsntz1_vertical_bisector_E_DSNTZ1_3():
     # The book's own example has YC2 = YC1 exactly when PI is exact: the listing's slope
-    # -(XC2-XC1)/(YC2-YC1) is infinite there.  The normal form gives the finite answer,
-    # which the as-printed run (PI = 3.14159, slope 7.5e5) approaches.
-    r = DSNTZ1(1.5, math.pi / 6, 5 * math.pi / 6, 0.5, 0.75, -1.0)
+    # -(XC2-XC1)/(YC2-YC1) is infinite there.  As-printed mode keeps the listing's
+    # lines in normal form and gives the finite answer, which the book's run
+    # (PI = 3.14159, slope 7.5e5) approaches; corrected mode needs no slope at all.
+    r = DSNTZ1(*_book_dsntz1_inputs(math.pi))
     assert all(math.isfinite(v) for v in r)
     with sarkp.as_printed():
-        p = DSNTZ1(1.5, 3.14159 / 6, 3.14159 / 6 * 5, 0.5, 0.75, -1.0)
-    assert r == pytest.approx(p, abs=1e-5)
+        exact = DSNTZ1(*_book_dsntz1_inputs(math.pi))
+        book = DSNTZ1(*_book_dsntz1_inputs(3.14159))
+    assert all(math.isfinite(v) for v in exact)
+    assert exact == pytest.approx(book, abs=1e-5)
 
 
 def test_course_project_call_L7316():
@@ -337,16 +398,11 @@ def test_dsntzr_sweep_matches_scalar():
         assert (r.L1[k], r.L2[k], r.FI11[k]) == (s.L1, s.L2, s.FI11)
 
 
-# ---- DSNTZ1: the listing's construction -----------------------------------------------
+# ---- DSNTZ1: extreme positions and KW3 --------------------------------------------
 
-@HYP
-@given(kw3=st.floats(1.05, 3.0), f31=angles, swing=st.floats(0.2, 2.5),
-       sign=st.sampled_from([1.0, -1.0]), l3=lengths, xd=st.floats(-2.0, 2.0),
-       q=st.sampled_from([1.0, -1.0]))
-def test_dsntz1_extreme_positions(kw3, f31, swing, sign, l3, xd, q):
-    """Whenever DSNTZ1 succeeds, the mechanism (crank pivot on the x axis) makes full
-    turns and its rocker stops exactly at FI31 (stretched out) and FI32 (folded)."""
-    f32 = f31 + sign * swing
+def _dsntz1_check(kw3, f31, f32, l3, xd, q):
+    """Synthesize, recover the pivot from the lengths, move the mechanism: errors of
+    the two extreme rocker angles and of the coefficient of speed change."""
     try:
         r = DSNTZ1(kw3, f31, f32, l3, xd, q)
     except RequirementError:
@@ -358,20 +414,49 @@ def test_dsntz1_extreme_positions(kw3, f31, swing, sign, l3, xd, q):
     A = pivot_from(C1, C2, r.L1, r.L2, D, r.LO, on_x=True)
     assert abs(A[1]) < TOL
     errs, *_ = check_crank_rocker(A, D, r.L1, r.L2, l3, C1, f31, f32, kw3)
+    return errs
+
+
+dsntz1_inputs = dict(kw3=st.floats(1.05, 3.0), f31=angles, swing=st.floats(0.2, 2.5),
+                     sign=st.sampled_from([1.0, -1.0]), l3=lengths,
+                     xd=st.floats(-2.0, 2.0), q=st.sampled_from([1.0, -1.0]))
+
+
+@pytest.mark.parametrize("mode", ["corrected", "as-printed"])
+@HYP
+@given(**dsntz1_inputs)
+def test_dsntz1_extreme_positions(mode, kw3, f31, swing, sign, l3, xd, q):
+    """Whenever DSNTZ1 succeeds, in either mode, the mechanism (crank pivot on the x
+    axis) makes full turns and its rocker stops exactly at FI31 (stretched out) and
+    FI32 (folded)."""
+    with sarkp.mode(mode):
+        errs = _dsntz1_check(kw3, f31, f31 + sign * swing, l3, xd, q)
     assert errs[0] < TOL and errs[1] < TOL
 
 
-@pytest.mark.xfail(strict=True, reason="E-DSNTZ1-4: the listing's line through C1 at "
-                   "FI31 + BETA does not give angle C1AC2 = BETA (open, with the lead)")
-def test_dsntz1_coefficient_of_speed_change():
-    f31, f32, l3, xd = math.pi / 6, 5 * math.pi / 6, 0.5, 0.75
-    r = DSNTZ1(1.5, f31, f32, l3, xd, -1.0)
+@HYP
+@given(**dsntz1_inputs)
+@example(kw3=1.5, f31=math.pi / 6, swing=2 * math.pi / 3, sign=1.0, l3=0.5, xd=0.75,
+         q=-1.0)                                    # the book's example (program III.5)
+def test_dsntz1_coefficient_of_speed_change(kw3, f31, swing, sign, l3, xd, q):
+    """Corrected mode (the prose's construction, E-DSNTZ1-4): the mechanism has the
+    requested coefficient of speed change as well as the extreme positions."""
+    errs = _dsntz1_check(kw3, f31, f31 + sign * swing, l3, xd, q)
+    assert max(errs) < TOL, errs
+
+
+def test_dsntz1_book_example_corrected():
+    """The book's example in corrected mode: exact KW3 = 1.5, angle C1AC2 = BETA."""
+    kw3, f31, f32, l3, xd, q = _book_dsntz1_inputs(math.pi)
+    r = DSNTZ1(kw3, f31, f32, l3, xd, q)
     D = (xd, 0.0)
     C1 = (xd + l3 * math.cos(f31), l3 * math.sin(f31))
     C2 = (xd + l3 * math.cos(f32), l3 * math.sin(f32))
     A = pivot_from(C1, C2, r.L1, r.L2, D, r.LO, on_x=True)
-    errs, *_ = check_crank_rocker(A, D, r.L1, r.L2, l3, C1, f31, f32, 1.5)
-    assert errs[2] < TOL
+    assert angle_at(C1, A, C2) == pytest.approx(math.pi * (kw3 - 1) / (kw3 + 1), abs=TOL)
+    assert 0.0 < A[0] < xd                            # Q = -1: A between O and D (L1055)
+    errs, *_ = check_crank_rocker(A, D, r.L1, r.L2, l3, C1, f31, f32, kw3)
+    assert max(errs) < TOL
 
 
 def test_dsntz1_bad_input():

@@ -11,6 +11,9 @@ from .operators import (DFRNCL, DINTGR, DMOMNT, DOMEGA, DSMVKT, DUGL1, DUGL2, DU
                         DUGL4, DUGL5, DUGOL, DVKT)
 from .solver import GELG
 from .synthesis import DSNTZ1, DSNTZ2, DSNTZ3, DSNTZK, DSNTZR
+from .kinematics import (DKNMA1, DKNMA2, DKNMA3, DKNMA4, DKNMA5, DPRM1, DPRM2, DPRM3,
+                         DPRM4, DPRM5, DSKOR1, DSKOR2, DSKOR3, DSKOR4, DSKOR5, DUSKR1,
+                         DUSKR2, DUSKR3, DUSKR4, DUSKR5)
 
 __version__ = "0.1.0"
 
@@ -22,4 +25,9 @@ __all__ = [
     "DOMEGA", "DVKT", "DSMVKT",
     # chapter 3
     "DSNTZR", "DSNTZ1", "DSNTZ2", "DSNTZ3", "DSNTZK",
+    # chapter 4 (DPRM5 is sarkp's extension: the book has no kind-5 positions)
+    "DPRM1", "DPRM2", "DPRM3", "DPRM4", "DPRM5",
+    "DSKOR1", "DSKOR2", "DSKOR3", "DSKOR4", "DSKOR5",
+    "DUSKR1", "DUSKR2", "DUSKR3", "DUSKR4", "DUSKR5",
+    "DKNMA1", "DKNMA2", "DKNMA3", "DKNMA4", "DKNMA5",
 ]

@@ -739,7 +739,9 @@ DKNMA3 = book_routine(
     -------
     DKNMA3(XB, YB, RZBC, FI3, VAR, ALAR, VAC, ALAC, W3, VA3, ALA3, AAK, BAK, AAR, BAR,
     AACT, BACT, AA3, BA3, E3, AACN)
-        B, CB and the axis direction C -> B in (-pi, pi]; velocity of A3 relative to A
+        B, CB and the axis direction C -> B in (-pi, pi] (taken from the points, so it
+        loses accuracy as B nears C; ``DPRM3`` gives the axis from A and C and does not);
+        velocity of A3 relative to A
         (along the axis) and to C; W3; absolute velocity of A3; Coriolis, relative and
         tangential accelerations; absolute acceleration of A3; E3; ``AACN = W3**2*AC``.
 """ + _raises(assembly=True, singular="A = C or B = C."))

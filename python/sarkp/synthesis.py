@@ -221,22 +221,36 @@ DSNTZ1 = book_routine(
     messages={
         ST_REQUIREMENT: _KW3 + "no crank-rocker with the crank pivot on the x axis meets the "
                         "requirement: FI31 = FI32, or the circle through C1 and C2 misses "
-                        "the x axis, or with this Q the crank comes out <= 0 (C1 must be "
-                        "the farther extreme position: try the other Q), or the crank "
-                        "cannot make a full turn between the two extreme positions",
-        ST_SINGULAR: "the line through C1 at FI31 + BETA is parallel to the perpendicular "
-                     "bisector of C1C2"},
+                        "the x axis, or (corrected mode) it meets the axis only where it "
+                        "sees C1C2 under PI - BETA or the swing is half a turn, or with "
+                        "this Q the crank comes out <= 0 (C1 must be the farther extreme "
+                        "position: try the other Q), or the crank cannot make a full turn "
+                        "between the two extreme positions",
+        ST_SINGULAR: "as-printed mode: the listing's line through C1 at FI31 + BETA is "
+                     "parallel to the perpendicular bisector of C1C2"},
     doc="""Four-bar from the two extreme rocker positions and the coefficient of speed
     change (listing III.2, L1023-1105; Table 4, L1034-1051).
 
     The book's call is ``CALL DSNTZ1(KW3, FI31, FI32, L3, XD, Q, AAA, L1, L2, LO)``.
 
-    The listing's construction is implemented: C1, C2 = D + L3 e(FI31), D + L3 e(FI32)
-    with D = (XD, 0); E = intersection of the perpendicular bisector of C1C2 (through D)
-    with the line through C1 at the direction ``FI31 + BETA``,
-    ``BETA = PI (KW3 - 1)/(KW3 + 1)``; the crank pivot A is where the circle
-    (E, |EC1|) meets the x axis, ``XA = XE + sign(Q) sqrt(R**2 - YE**2)``;
-    ``L1 = (|AC1| - |AC2|)/2``, ``L2 = |AC1| - L1``, ``LO = |XD - XA|``.
+    C1, C2 = D + L3 e(FI31), D + L3 e(FI32) with D = (XD, 0),
+    ``BETA = PI (KW3 - 1)/(KW3 + 1)``; E is a point of the perpendicular bisector SD of
+    C1C2 (S its midpoint); the crank pivot A is where the circle (E, |EC1|) meets the
+    x axis, ``XA = XE + sign(Q) sqrt(R**2 - YE**2)``; ``L1 = (|AC1| - |AC2|)/2``,
+    ``L2 = |AC1| - L1``, ``LO = |XD - XA|``.  The two modes differ in E
+    (ERRATA E-DSNTZ1-4):
+
+    * corrected (default): the construction of the prose (L1029, L1053).  The lines
+      through C1 and C2 at the angle BETA to SD meet on SD at E, on D's side:
+      ``E = S + (|C1C2|/2) cot(BETA) (D - S)/|SD|``.  The angle C1EC2 is 2 BETA, so
+      from A (on D's side of the chord) C1C2 is seen under BETA and the mechanism has
+      exactly the requested KW3 = (PI + BETA)/(PI - BETA) as well as the requested
+      extreme positions.  For the book's example (Fig. 10 inputs, exact pi):
+      L1, L2, LO = 0.3903, 0.7216, 0.6504.
+    * as-printed: the listing, ``KC1E = TAN(FI31 + BETA)`` (L1078): E on SD and on the
+      line through C1 at the fixed direction FI31 + BETA.  The extreme positions are
+      right, but the angle C1AC2 is PSI/2 - BETA instead of BETA, so KW3 is in general
+      not met (the book's example realizes 1.3077 for 1.5): 0.4056, 0.8347, 0.7818.
 
     Parameters
     ----------
@@ -250,8 +264,8 @@ DSNTZ1 = book_routine(
     XD : float
         Abscissa of the rocker pivot D = (XD, 0); the crank pivot A is on the x axis.
     Q : float
-        Assembly variant, by its sign only (0 acts as +1): -1 puts A "between O and D"
-        (L1055), +1 the other intersection.
+        Assembly variant, by its sign only (0 acts as +1): -1 takes the smaller XA
+        (A "between O and D" in the book's example, L1055), +1 the other intersection.
     AAA : float, optional
         0 prints the book's report (L1097-1103); anything else is silent (default).
 
@@ -263,19 +277,22 @@ DSNTZ1 = book_routine(
     Raises
     ------
     RequirementError
-        KW3 <= 1, FI31 = FI32, the circle misses the axis, a crank <= 0 (wrong Q), or
-        a crank that cannot make a full turn between the extreme positions.
+        KW3 <= 1, FI31 = FI32, the circle misses the axis, a crank <= 0 (wrong Q), a
+        crank that cannot make a full turn between the extreme positions; in corrected
+        mode also a swing of half a turn, or an A on the far side of the chord C1C2
+        (where the circle sees C1C2 under PI - BETA).
     SingularError
-        The two lines that define E are parallel.
+        As-printed mode only: the two lines that define E are parallel.
 
     Notes
     -----
-    The listing's line through C1 at the fixed direction ``FI31 + BETA`` is not the
-    construction of the prose (angle BETA to SD, L1029, L1053): the mechanism has the
-    requested extreme rocker positions but in general not the requested KW3, and the
-    book's own example prints 0.411 / 0.904 / 0.858 where the listing gives
-    0.406 / 0.835 / 0.782 (ERRATA E-DSNTZ1-4, open).  The book's unconditional debug
-    ``PRINT 5`` (L1094) is dropped (E-DSNTZ1-2).
+    Neither mode reproduces the book's printed 0.411 / 0.904 / 0.858 (Fig. 10), nor the
+    course project's ROA 0.166, RAB 2.335, ROC 2.090 (ch. 10); no reading of the
+    listing or the prose that was tried gives both (ERRATA E-DSNTZ1-4).  The mirror
+    arc of the circle beyond the chord also sees C1C2 under BETA; where the x axis
+    meets it there may be a further, less common, solution, which the book does not
+    consider and DSNTZ1 does not return.  The book's unconditional debug ``PRINT 5``
+    (L1094) is dropped (E-DSNTZ1-2).
     """)
 
 

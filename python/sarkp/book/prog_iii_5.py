@@ -13,10 +13,13 @@ The card is not printed; its values are the printed echo, with the third slider
 position 0.535 where the OCR reads 0.525 (ERRATA E-FIG10-1: only 0.535 gives the
 printed L1 = 0.399, L2 = 0.564).  Output: Fig. 10 (L1300-1369).
 
-Known differences from the printed figure: DSNTZ1's printed 0.411 / 0.904 / 0.858 is not
-what its printed listing computes (0.406 / 0.835 / 0.782, ERRATA E-DSNTZ1-4); DSNTZ3's
-printed 0.401 / 0.0 / 0.574 comes from implicit-INTEGER truncation, which as-printed mode
-repeats and corrected mode fixes (0.412 / 0.425 / 0.575, E-DSNTZ3-2).
+Known differences from the printed figure: DSNTZ1's printed 0.411 / 0.904 / 0.858 is
+reproduced by neither mode (ERRATA E-DSNTZ1-4): as-printed runs the listing
+(0.406 / 0.835 / 0.782, which misses the requested KW3), corrected runs the prose's
+construction (0.390 / 0.722 / 0.650, which meets it); the three cells are marked not
+reproducible in data/fig10.csv.  DSNTZ3's printed 0.401 / 0.0 / 0.574 comes from
+implicit-INTEGER truncation, which as-printed mode repeats and corrected mode fixes
+(0.412 / 0.425 / 0.575, E-DSNTZ3-2).
 """
 
 from __future__ import annotations
@@ -35,6 +38,7 @@ FOURBAR = {"LO": (0.9, 0.9, 0.9), "L3": 0.6, "FI1": (0.349, 1.047, 1.745),
 SLIDER_CARD = {"L3": 0.150, "FI1": (0.3490, 1.0470, 1.7450),
                "FI3": (1.5700, 1.5700, 1.5700), "LO": (0.9500, 0.8250, 0.5350)}
 #: Why a printed cell differs in corrected mode (see docs/ERRATA.md).
+#: (The DSNTZ1 cells differ in both modes and carry E-DSNTZ1-4 in the figure data.)
 CORRECTED_DIFFERENCES = {"*": "E-DSNTZ3-2 (DSNTZ3 cells: corrected typing)"}
 
 
