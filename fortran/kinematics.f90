@@ -33,7 +33,7 @@
 ! vertical guide); DPRM4/DKNMA4 write the guide lines as n.B = n.A + offset (the printed rows
 ! multiplied by COS(FI)), so that a vertical guide works.
 !
-! ERRATA ids of this chapter: E-<ROUTINE>-<n>, listed in docs/errata_ch4.md.
+! ERRATA ids of this chapter: E-<ROUTINE>-<n>, listed in docs/ERRATA.md.
 module kinematics
   use prmtr, only: dp, pi, pid2, printed_mode, book_sign, st_ok, st_assembly, st_singular, &
                    st_significance

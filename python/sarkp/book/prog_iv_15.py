@@ -24,7 +24,7 @@ The book prints no output of this program (chapter 4 has no result figure), so
 :data:`FIGURES` is empty and nothing here is compared with printed numbers; the tests
 hold it against geometry and physics instead (tests/test_iv15.py).
 
-The listing as printed does not compile (docs/errata_iv15.md, E-IV15-1..12): a lost comma
+The listing as printed does not compile (docs/ERRATA.md, E-IV15-1..12): a lost comma
 in the DPRM1 call, a missing argument of DUSKR5 and of DUSKR4, a DSKOR4 call with VPM
 for VPN, ``RGD`` in DATA for the RCD of the body, ``2.0 VNM * A(W9)`` and the like.
 Every one is corrected in both modes: no printed figure depends on them.  Corrected mode
