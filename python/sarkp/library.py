@@ -233,31 +233,51 @@ class Routine:
             status = np.where(status != ST_OK, status, np.asarray(out[-1]).reshape(shape))
             out = out[:-1]
         out = [np.asarray(o, dtype=float).reshape(shape) for o in out]
-        failed = (status != ST_OK) & (status != ST_SIGNIFICANCE)
-        if failed.any():
-            if on_error == "raise":
-                idx = _first_index(failed, shape)
-                k = int(failed_check[idx])
-                raise self._error(int(status[idx]), idx, self.checks[k] if k >= 0 else None)
-            for o in out:
-                o[failed] = np.nan
-        if (status == ST_SIGNIFICANCE).any():
-            idx = _first_index(status == ST_SIGNIFICANCE, shape)
-            warnings.warn(f"{self.name}: {self.messages[ST_SIGNIFICANCE]} "
-                          f"(first at index {list(idx)})", SignificanceWarning, stacklevel=3)
+
+        def message(status, index):
+            k = int(failed_check[index])
+            return self.checks[k].message if k >= 0 else None
+
+        out = settle_arrays(self.name, out, status, on_error, self.messages, message)
         if on_error == "nan":
             return self.result_with_status(*out, status)
         return self.result(*out)
 
     def _error(self, status, index, check=None):
         """The exception for ``status``: the failed check's words, else the routine's."""
-        where = "" if index is None else f" at index {list(index)}"
-        if check is not None:
-            message = check.message
-        else:
-            message = self.messages.get(status, STATUS_NAMES.get(status, f"status {status}"))
-        cls = _ERRORS.get(status, SingularError)
-        return cls(f"{self.name}{where}: {message}")
+        return status_error(self.name, status, index, self.messages,
+                            None if check is None else check.message)
+
+
+def status_error(name, status, index, messages, message=None):
+    """The exception for a failed ``status`` of routine ``name`` at ``index``."""
+    where = "" if index is None else f" at index {list(index)}"
+    if message is None:
+        message = messages.get(status, _DEFAULT_MESSAGES.get(status, f"status {status}"))
+    return _ERRORS.get(status, SingularError)(f"{name}{where}: {message}")
+
+
+def settle_arrays(name, out, status, on_error, messages, message_at=None):
+    """Apply the error policy to arrays ``out`` computed with ``status``.
+
+    Raises the error of the first failed position (``on_error="raise"``) or puts NaN
+    there (``"nan"``); warns once for a loss of significance.  ``message_at(status,
+    index)`` may give a more precise message for a failed position.
+    """
+    failed = (status != ST_OK) & (status != ST_SIGNIFICANCE)
+    if failed.any():
+        if on_error == "raise":
+            idx = _first_index(failed, status.shape)
+            code = int(status[idx])
+            raise status_error(name, code, idx, messages,
+                               message_at(code, idx) if message_at else None)
+        for o in out:
+            o[failed] = np.nan
+    if (status == ST_SIGNIFICANCE).any():
+        idx = _first_index(status == ST_SIGNIFICANCE, status.shape)
+        warnings.warn(f"{name}: {messages.get(ST_SIGNIFICANCE, _DEFAULT_MESSAGES[ST_SIGNIFICANCE])}"
+                      f" (first at index {list(idx)})", SignificanceWarning, stacklevel=4)
+    return out
 
 
 def _first_index(mask, shape):

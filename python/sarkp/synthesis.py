@@ -22,9 +22,9 @@ from collections import namedtuple
 import numpy as np
 
 from . import _sarkp
-from .errors import RequirementError, SignificanceWarning, SingularError
+from .errors import SignificanceWarning
 from .library import (ST_OK, ST_REQUIREMENT, ST_SIGNIFICANCE, ST_SINGULAR,
-                      _first_index, book_routine)
+                      _first_index, book_routine, settle_arrays, status_error)
 from .report import fortran_write
 
 _f = _sarkp.synthesis
@@ -152,7 +152,7 @@ def DSNTZR(LO, L3, FI1, FI3, AAA=1.0, *, on_error="raise"):
         status = int(status)
         if status not in (ST_OK, ST_SIGNIFICANCE):
             if on_error == "raise":
-                raise _error("DSNTZR", status, _DSNTZR_MESSAGES, None)
+                raise status_error("DSNTZR", status, None, _DSNTZR_MESSAGES)
             l1 = l2 = fi11 = math.nan
         elif status == ST_SIGNIFICANCE:
             warnings.warn("DSNTZR: GELG reported a loss of significance (IER > 0); the "
@@ -171,32 +171,10 @@ def DSNTZR(LO, L3, FI1, FI3, AAA=1.0, *, on_error="raise"):
                                            cols(v["FI1"]), cols(v["FI3"]))
     out = [np.asarray(o, dtype=float).reshape(shape) for o in (l1, l2, fi11)]
     status = np.asarray(status).reshape(shape)
-    out, status = _finish("DSNTZR", out, status, _DSNTZR_MESSAGES, on_error)
+    out = settle_arrays("DSNTZR", out, status, on_error, _DSNTZR_MESSAGES)
     if on_error == "nan":
         return _DSNTZR_STATUS(*out, status)
     return _DSNTZR_RESULT(*out)
-
-
-def _error(name, status, messages, index):
-    where = "" if index is None else f" at index {list(index)}"
-    cls = RequirementError if status == ST_REQUIREMENT else SingularError
-    return cls(f"{name}{where}: {messages.get(status, f'status {status}')}")
-
-
-def _finish(name, out, status, messages, on_error):
-    failed = (status != ST_OK) & (status != ST_SIGNIFICANCE)
-    if failed.any():
-        if on_error == "raise":
-            idx = _first_index(failed, status.shape)
-            raise _error(name, int(status[idx]), messages, idx)
-        for o in out:
-            o[failed] = np.nan
-    if (status == ST_SIGNIFICANCE).any():
-        idx = _first_index(status == ST_SIGNIFICANCE, status.shape)
-        warnings.warn(f"{name}: GELG reported a loss of significance (IER > 0); the result "
-                      f"was kept (first at index {list(idx)})", SignificanceWarning,
-                      stacklevel=3)
-    return out, status
 
 
 # ---- III.2 DSNTZ1 -------------------------------------------------------------------
