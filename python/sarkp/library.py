@@ -213,32 +213,49 @@ class Routine:
         return self.result(*out)
 
     def _call_arrays(self, args, on_error):
-        arrays = np.broadcast_arrays(*[np.asarray(a, dtype=float) for a in args])
+        given = [np.asarray(a, dtype=float) for a in args]
+        arrays = np.broadcast_arrays(*given)
         shape = arrays[0].shape
-        # under on_error="nan" a NaN input (an earlier failure in a chain) passes through
-        missing = self._check_arrays(arrays, shape, allow_nan=on_error == "nan")
+        status = None                                        # None: all positions ok
+        if self._strict or not all(np.isfinite(a.sum()) for a in given):
+            # under on_error="nan" a NaN input (an earlier failure in a chain) passes through
+            missing = self._check_arrays(arrays, shape, allow_nan=on_error == "nan")
+            if missing.any():
+                status = np.where(missing, ST_MISSING, ST_OK).astype(np.int32)
+        # (otherwise every input is finite: a finite sum cannot hide an inf or a NaN)
         named = dict(zip(self.inputs, arrays))
-        status = np.where(missing, ST_MISSING, ST_OK).astype(np.int32)
-        failed_check = np.full(shape, -1, dtype=np.int8)     # which check failed where
+        failed_check = None                                  # which check failed where
         for k, check in enumerate(self.checks):
-            bad = np.asarray(check.bad(**named), dtype=bool) & (status == ST_OK)
-            status[bad] = check.status
-            failed_check[bad] = k
+            bad = np.broadcast_to(np.asarray(check.bad(**named), dtype=bool), shape)
+            if status is not None:
+                bad = bad & (status == ST_OK)
+            if bad.any():
+                if status is None:
+                    status = np.zeros(shape, dtype=np.int32)
+                    failed_check = np.full(shape, -1, dtype=np.int8)
+                elif failed_check is None:
+                    failed_check = np.full(shape, -1, dtype=np.int8)
+                status[bad] = check.status
+                failed_check[bad] = k
         flat = [np.ascontiguousarray(named[n]).ravel() for n in self.sweep_inputs]
         out = self.sweep(*flat)
         if not isinstance(out, tuple):
             out = (out,)
         if self.has_status:
-            # a failed check outranks whatever the routine computed there
-            status = np.where(status != ST_OK, status, np.asarray(out[-1]).reshape(shape))
+            computed = np.asarray(out[-1]).reshape(shape)
+            # a failed check (or a missing input) outranks whatever the routine computed
+            status = computed if status is None else np.where(status != ST_OK, status,
+                                                              computed)
             out = out[:-1]
         out = [np.asarray(o, dtype=float).reshape(shape) for o in out]
+        if status is None:
+            status = np.zeros(shape, dtype=np.int32) if on_error == "nan" else None
+        else:
+            def message(code, index):
+                k = -1 if failed_check is None else int(failed_check[index])
+                return self.checks[k].message if k >= 0 else None
 
-        def message(status, index):
-            k = int(failed_check[index])
-            return self.checks[k].message if k >= 0 else None
-
-        out = settle_arrays(self.name, out, status, on_error, self.messages, message)
+            out = settle_arrays(self.name, out, status, on_error, self.messages, message)
         if on_error == "nan":
             return self.result_with_status(*out, status)
         return self.result(*out)
@@ -264,6 +281,8 @@ def settle_arrays(name, out, status, on_error, messages, message_at=None):
     there (``"nan"``); warns once for a loss of significance.  ``message_at(status,
     index)`` may give a more precise message for a failed position.
     """
+    if not status.any():                                 # the common case: all ok
+        return out
     failed = (status != ST_OK) & (status != ST_SIGNIFICANCE)
     if failed.any():
         if on_error == "raise":
