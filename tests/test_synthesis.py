@@ -668,3 +668,24 @@ def test_report_aaa_zero(capsys):
     assert "L1 =   0.868 L2 =   1.048" in out
     DSNTZK(1.5, 0.3, 0.05, 1.0)
     assert capsys.readouterr().out == ""
+
+
+@pytest.mark.parametrize("routine, args", [
+    ("DSNTZ1", (1.0, math.pi / 6, 2.0, 0.5, 0.75, -1.0)),
+    ("DSNTZ1", (-1.0, math.pi / 6, 2.0, 0.5, 0.75, -1.0)),
+    ("DSNTZ2", (0.9, math.pi / 6, 0.5, 0.75, math.pi / 18, math.pi / 3)),
+    ("DSNTZK", (1.0, 0.3, 0.05, 1.0)),
+])
+def test_errors_say_which_requirement_kw3(routine, args):
+    with pytest.raises(sarkp.RequirementError, match="KW3 <= 1"):
+        getattr(sarkp, routine)(*args)
+    res = getattr(sarkp, routine)(*[np.array([a, a]) for a in args], on_error="nan")
+    assert np.isnan(res[0]).all() and list(res.status) == [4, 4]
+
+
+def test_errors_say_which_requirement_coincident_extremes():
+    with pytest.raises(sarkp.RequirementError, match="FI31 = FI32"):
+        sarkp.DSNTZ1(1.5, 0.7, 0.7 + 2 * math.pi, 0.5, 0.75, -1.0)
+    with pytest.raises(sarkp.RequirementError, match="circle") as err:
+        sarkp.DSNTZ1(1.5, math.pi / 6, 5 * math.pi / 6, 0.5, 0.75, 1.0)   # crank <= 0
+    assert "KW3" not in str(err.value)

@@ -23,7 +23,7 @@ import numpy as np
 
 from . import _sarkp
 from .errors import SignificanceWarning
-from .library import (ST_OK, ST_REQUIREMENT, ST_SIGNIFICANCE, ST_SINGULAR,
+from .library import (ST_OK, ST_REQUIREMENT, ST_SIGNIFICANCE, ST_SINGULAR, Check,
                       _first_index, book_routine, settle_arrays, status_error)
 from .report import fortran_write
 
@@ -37,7 +37,14 @@ def _lines(fmt, values=()):
     return fortran_write(fmt, values)
 
 
-_KW3 = "KW3 <= 1 (no quick return: BETA = PI*(KW3-1)/(KW3+1) <= 0), or "
+# Requirements that the inputs alone decide, checked before the Fortran runs so that the
+# error says which one is not met (the Fortran reports them too, as st_requirement).
+_KW3_ABOVE_ONE = Check(lambda KW3, **_: KW3 <= 1.0, ST_REQUIREMENT,
+                       "KW3 <= 1: the coefficient of speed change must exceed 1 "
+                       "(BETA = PI (KW3 - 1)/(KW3 + 1) is the overtravel angle, > 0)")
+_DISTINCT_EXTREMES = Check(
+    lambda FI31, FI32, **_: np.abs(np.sin((FI31 - FI32) / 2.0)) < 1e-12, ST_REQUIREMENT,
+    "FI31 = FI32 (mod 2 pi): the two extreme positions of the rocker coincide")
 
 
 # ---- III.1 DSNTZR -------------------------------------------------------------------
@@ -195,10 +202,11 @@ DSNTZ1 = book_routine(
     "DSNTZ1", listing="III.2", lines="L1023-1105",
     inputs=["KW3", "FI31", "FI32", "L3", "XD", "Q", "AAA"], outputs=["L1", "L2", "LO"],
     scalar=_f.dsntz1, sweep=_s.dsntz1_sweep, lengths=["L3"],
+    checks=(_KW3_ABOVE_ONE, _DISTINCT_EXTREMES),
     report=_dsntz1_report,
     messages={
-        ST_REQUIREMENT: _KW3 + "no crank-rocker with the crank pivot on the x axis meets the "
-                        "requirement: FI31 = FI32, or the circle through C1 and C2 misses "
+        ST_REQUIREMENT: "no crank-rocker with the crank pivot on the x axis meets the "
+                        "requirement: the circle through C1 and C2 misses "
                         "the x axis, or (corrected mode) it meets the axis only where it "
                         "sees C1C2 under PI - BETA or the swing is half a turn, or with "
                         "this Q the crank comes out <= 0 (C1 must be the farther extreme "
@@ -302,9 +310,9 @@ DSNTZ2 = book_routine(
     "DSNTZ2", listing="III.3", lines="L1109-1181",
     inputs=["KW3", "FI3", "L3", "XD", "GMIN", "GMAX", "AAA"], outputs=["L1", "L2", "LO"],
     scalar=_f.dsntz2, sweep=_s.dsntz2_sweep, lengths=["L3"],
-    report=_dsntz2_report,
+    checks=(_KW3_ABOVE_ONE,), report=_dsntz2_report,
     messages={
-        ST_REQUIREMENT: _KW3 + "no crank-rocker meets the requirement: the swing "
+        ST_REQUIREMENT: "no crank-rocker meets the requirement: the swing "
                         "PSI = BETA + GMAX - GMIN is 0, or the crank comes out <= 0, or "
                         "the crank cannot make a full turn between the two extreme "
                         "positions, or they lie on different assembly branches",
@@ -443,8 +451,8 @@ DSNTZK = book_routine(
     "DSNTZK", listing="III.6", lines="L1397-1437",
     inputs=["KW3", "S", "H", "Q", "AAA"], outputs=["L1", "LO", "L3"],
     scalar=_f.dsntzk, sweep=_s.dsntzk_sweep, lengths=["S"], nonnegative=["H"],
-    report=_dsntzk_report,
-    messages={ST_REQUIREMENT: _KW3 + "the reserve H is not smaller than the slotted link "
+    checks=(_KW3_ABOVE_ONE,), report=_dsntzk_report,
+    messages={ST_REQUIREMENT: "the reserve H is not smaller than the slotted link "
                               "L3 = S/(2 sin BETA) (oscillating) or S/2 (rotating): "
                               "no room for the crank and the centre distance"},
     doc="""Slotted-link (crank and slotted lever) mechanism (listing III.6, L1397-1437;
