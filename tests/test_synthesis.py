@@ -258,12 +258,27 @@ def test_fig10_dsntz1_not_reproducible_E_DSNTZ1_4():
         assert min(abs(triple[1].units), abs(triple[2].units)) > 50, mode
 
 
+def _printed(case):
+    """The printed cells of one Fig. 10 case, {quantity: Cell}, from the package data."""
+    from sarkp.book import figures
+    return {c.column: c for c in figures.load_figure("10").cells if c.row == case}
+
+
 def test_fig10_slider_needs_0535_E_FIG10_1():
+    cells = _printed("DSNTZR-slider")
+    lo3 = cells["LO(3)"]
+    assert lo3.ocr == "Ø.525" and lo3.errata == "E-FIG10-1"
+    lo = [cells[f"LO({i})"].value for i in (1, 2, 3)]
+    fi1 = [cells[f"FI1({i})"].value for i in (1, 2, 3)]
+    fi3 = [cells[f"FI3({i})"].value for i in (1, 2, 3)]
+    l3 = cells["L3"].value
     with sarkp.as_printed():
-        good = DSNTZR([0.95, 0.825, 0.535], 0.15, [0.349, 1.047, 1.745], [1.57] * 3)
-        ocr = DSNTZR([0.95, 0.825, 0.525], 0.15, [0.349, 1.047, 1.745], [1.57] * 3)
-    assert (round(good.L1, 3), round(good.L2, 3)) == (0.399, 0.564)
-    assert (round(ocr.L1, 3), round(ocr.L2, 3)) == (0.410, 0.554)
+        good = DSNTZR(lo, l3, fi1, fi3)
+        ocr = DSNTZR(lo[:2] + [float(lo3.ocr.replace("Ø", "0"))], l3, fi1, fi3)
+    for name in ("L1", "L2"):
+        printed = cells[name]
+        assert abs(getattr(good, name) - printed.value) <= 0.5 * printed.unit
+        assert abs(getattr(ocr, name) - printed.value) > 5 * printed.unit
 
 
 def test_dsntz3_truncation_switch_E_DSNTZ3_2():
@@ -663,9 +678,12 @@ def test_double_round_trip():
 
 
 def test_report_aaa_zero(capsys):
-    DSNTZR([0.9] * 3, 0.6, [0.349, 1.047, 1.745], [0.524, 1.57, 2.793], 0.0)
+    cells = _printed("DSNTZR")
+    DSNTZR([cells[f"LO({i})"].value for i in (1, 2, 3)], cells["L3"].value,
+           [cells[f"FI1({i})"].value for i in (1, 2, 3)],
+           [cells[f"FI3({i})"].value for i in (1, 2, 3)], 0.0)
     out = capsys.readouterr().out
-    assert "L1 =   0.868 L2 =   1.048" in out
+    assert f"L1 = {cells['L1'].printed:>7s} L2 = {cells['L2'].printed:>7s}" in out
     DSNTZK(1.5, 0.3, 0.05, 1.0)
     assert capsys.readouterr().out == ""
 
