@@ -9,11 +9,9 @@ Errors: non-assembly -> AssemblyError, dead centre -> SingularError, a sweep los
 assembly partway with on_error='nan'.  Golden: Fig. 91 of chapter 10 (package data).
 """
 
-import csv
 import math
 import os
 import warnings
-from importlib import resources
 
 import numpy as np
 import pytest
@@ -22,6 +20,7 @@ from hypothesis import strategies as st
 
 import sarkp
 from sarkp import kinematics as K
+from sarkp.book.figures import load_figure
 
 TWO_PI = 2.0 * math.pi
 SEEDS = st.integers(min_value=0, max_value=2**32 - 1)
@@ -737,11 +736,10 @@ def test_duskr1_as_printed_switch():
 # ---------------------------------------------------------------------------------------
 
 def _fig91():
-    text = resources.files("sarkp").joinpath("book/data/fig91.csv").read_text(encoding="utf-8")
-    rows = list(csv.DictReader(line for line in text.splitlines() if not line.startswith("#")))
+    """Fig. 91's printed columns, from the package data, as arrays over the 37 rows."""
     cols = {}
-    for r in rows:
-        cols.setdefault(r["column"], {})[int(r["row"])] = float(r["printed"])
+    for cell in load_figure("91").cells:
+        cols.setdefault(cell.column, {})[int(cell.row)] = cell.value
     return {c: np.array([v[i] for i in sorted(v)]) for c, v in cols.items()}
 
 
