@@ -17,10 +17,10 @@
 ! Complete pivoting is LAPACK's DGETC2 (A = P L U Q), the solve DGESC2.  SSP's pivots are
 ! the same complete pivots, so the step K reported is SSP's step.
 module gelg_mod
-  use prmtr, only: dp
+  use prmtr, only: dp, st_ok, st_singular, st_significance
   implicit none
   private
-  public :: gelg, xerbla_calls, xerbla_last_routine, xerbla_last_info, lapack_probe
+  public :: gelg, gelg2, xerbla_calls, xerbla_last_routine, xerbla_last_info, lapack_probe
 
   integer :: xerbla_calls = 0                 ! how often LAPACK reported a bad argument
   character(len=32) :: xerbla_last_routine = ''
@@ -69,6 +69,24 @@ contains
       r(:, j) = work
     end do
   end subroutine gelg
+
+  ! The 2x2 call every routine of the book makes, CALL GELG(C, A, 2, 1, 0.0001, IER)
+  ! (L525), with IER mapped to a status: st_singular for IER = -1 or a solution that
+  ! overflowed (C is then zero), st_significance for IER > 0 (C kept), else st_ok.
+  subroutine gelg2(a, c, st)
+    real(dp), intent(inout) :: a(2, 2), c(2)
+    integer, intent(out) :: st
+    integer :: ier
+    call gelg(c, a, 2, 1, 0.0001_dp, ier)
+    if (ier < 0 .or. .not. (abs(c(1)) <= huge(1.0_dp) .and. abs(c(2)) <= huge(1.0_dp))) then
+      st = st_singular
+      c = 0.0_dp
+    else if (ier > 0) then
+      st = st_significance
+    else
+      st = st_ok
+    end if
+  end subroutine gelg2
 
   subroutine lapack_probe(info)
     ! Call LAPACK with an invalid argument on purpose (DGETRF with M = -1) and return

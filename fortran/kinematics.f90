@@ -38,7 +38,7 @@ module kinematics
   use prmtr, only: dp, pi, pid2, printed_mode, book_sign, st_ok, st_assembly, st_singular, &
                    st_significance
   use operators, only: dugl1, dugl2, dugl3, dugl4, dugl5, dugol, domega, dvkt, dsmvkt
-  use gelg_mod, only: gelg
+  use gelg_mod, only: gelg2
   implicit none
   private
   public :: dprm1, dprm2, dprm3, dprm4, dprm5
@@ -46,7 +46,6 @@ module kinematics
   public :: duskr1, duskr2, duskr3, duskr4, duskr5
   public :: dknma1, dknma2, dknma3, dknma4, dknma5
 
-  real(dp), parameter :: gelg_eps = 0.0001_dp     ! the tolerance of every GELG call (L1645 ...)
 
 contains
 
@@ -61,32 +60,12 @@ contains
     real(dp), intent(in) :: a11, a12, a21, a22, b1, b2
     real(dp), intent(out) :: y1, y2
     integer, intent(out) :: st
-    real(dp) :: x(2, 2), y(2, 1)
-    integer :: ier
-    x(1, 1) = a11
-    x(1, 2) = a12
-    x(2, 1) = a21
-    x(2, 2) = a22
-    y(1, 1) = b1
-    y(2, 1) = b2
-    call gelg(y, x, 2, 1, gelg_eps, ier)
-    if (ier == -1) then
-      st = st_singular
-      y1 = 0.0_dp
-      y2 = 0.0_dp
-      return
-    end if
-    y1 = y(1, 1)
-    y2 = y(2, 1)
-    if (.not. (abs(y1) <= huge(y1) .and. abs(y2) <= huge(y2))) then
-      st = st_singular                            ! overflow: no finite answer
-      y1 = 0.0_dp
-      y2 = 0.0_dp
-    else if (ier > 0) then
-      st = st_significance
-    else
-      st = st_ok
-    end if
+    real(dp) :: x(2, 2), y(2)
+    x = reshape([a11, a21, a12, a22], [2, 2])
+    y = [b1, b2]
+    call gelg2(x, y, st)
+    y1 = y(1)
+    y2 = y(2)
   end subroutine solve2
 
   ! A failure (assembly, singular) wins over a significance warning, which wins over ok.

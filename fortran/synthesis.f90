@@ -22,12 +22,11 @@ module synthesis
   use prmtr, only: dp, pi, printed_mode, book_sign, st_ok, st_singular, &
                    st_significance, st_requirement
   use operators, only: dugl2
-  use gelg_mod, only: gelg
+  use gelg_mod, only: gelg2
   implicit none
   private
   public :: dsntzr, dsntz1, dsntz2, dsntz3, dsntzk
 
-  real(dp), parameter :: book_eps = 0.0001_dp       ! GELG tolerance of every call (L525)
 
   ! The crank pivot A found by the last DSNTZ2 call: the book prints XA, YA in DSNTZ2's
   ! report (L1174-1179) but does not return them; the Python layer reads them here.
@@ -65,24 +64,6 @@ contains
     a2 = (y2 - y1)/d
     c = a1*0.5_dp*(x1 + x2) + a2*0.5_dp*(y1 + y2)
   end subroutine line_bisector
-
-  ! Solve the 2x2 system with the book's GELG and tolerance; map IER to a status.
-  subroutine solve2(a, c, st)
-    real(dp), intent(inout) :: a(2, 2), c(2)
-    integer, intent(out) :: st
-    integer :: ier
-    call gelg(c, a, 2, 1, book_eps, ier)
-    if (ier < 0) then
-      st = st_singular
-    else if (ier > 0) then
-      st = st_significance
-    else
-      st = st_ok
-    end if
-    if (st /= st_singular) then
-      if (.not. (abs(c(1)) <= huge(1.0_dp) .and. abs(c(2)) <= huge(1.0_dp))) st = st_singular
-    end if
-  end subroutine solve2
 
   ! The four-bar A-B-C-D (crank l1 = AB, coupler l2 = BC, rocker l3 = DC, frame l0 = AD)
   ! found from the extreme rocker positions C1 (crank and coupler stretched out) and C2
@@ -138,7 +119,7 @@ contains
       ier = st_requirement
       return
     end if
-    call solve2(a, c, ier)
+    call gelg2(a, c, ier)
     if (ier == st_singular) return                   ! C_1, C_2, C_3 on one line
     scale = maxval(abs(xc)) + maxval(abs(yc))
     l1 = hypot(c(1), c(2))
@@ -209,7 +190,7 @@ contains
     if (printed_mode /= 0) then
       ! E-DSNTZ1-4, as printed: KC1E = TAN(FI31 + BETA) (L1078), E on SD and on that line.
       call line_dir(xc1, yc1, fi31 + beta, a(2, 1), a(2, 2), c(2))
-      call solve2(a, c, ier)
+      call gelg2(a, c, ier)
       if (ier == st_singular) return
       xe = c(1)
       ye = c(2)
@@ -282,7 +263,7 @@ contains
     if (.not. ok) return                             ! PSI = 0 (mod 2 pi)
     call line_dir(xc1, yc1, fi3 - gmin, a(1, 1), a(1, 2), c(1))
     call line_dir(xc2, yc2, fi3 + psi - gmax, a(2, 1), a(2, 2), c(2))
-    call solve2(a, c, ier)
+    call gelg2(a, c, ier)
     if (ier == st_singular) return                   ! the two lines are parallel
     xa = c(1)
     ya = c(2)
@@ -359,8 +340,8 @@ contains
       call line_dir(xc1, yc1, alc1 + pi/2.0_dp, a2(1, 1), a2(1, 2), c2(1))
       call line_bisector(xc1, yc1, xc2, yc2, a2(2, 1), a2(2, 2), c2(2), okc)
     end if
-    call solve2(a1, c1, st1)
-    call solve2(a2, c2, st2)
+    call gelg2(a1, c1, st1)
+    call gelg2(a2, c2, st2)
     if (st1 == st_singular .or. st2 == st_singular) then
       ier = st_singular
       return

@@ -33,10 +33,6 @@ _s = _sarkp.sweeps_synthesis
 __all__ = ["DSNTZR", "DSNTZ1", "DSNTZ2", "DSNTZ3", "DSNTZK", "dsntz2_pivot"]
 
 
-def _lines(fmt, values=()):
-    return fortran_write(fmt, values)
-
-
 # Requirements that the inputs alone decide, checked before the Fortran runs so that the
 # error says which one is not met (the Fortran reports them too, as st_requirement).
 _KW3_ABOVE_ONE = Check(lambda KW3, **_: KW3 <= 1.0, ST_REQUIREMENT,
@@ -71,9 +67,9 @@ _DSNTZR_FORMATS = (
 def dsntzr_report(LO, L3, FI1, FI3, L1, L2) -> str:
     """DSNTZR's printout for AAA = 0 (FORMATs 1-4, L1007-1017)."""
     f1, f2, f3, f4 = _DSNTZR_FORMATS
-    out = [_lines(f1, [L3]), _lines(f2)]
-    out += [_lines(f3, [LO[k], FI1[k], FI3[k]]) for k in range(3)]
-    out.append(_lines(f4, [L1, L2]))
+    out = [fortran_write(f1, [L3]), fortran_write(f2)]
+    out += [fortran_write(f3, [LO[k], FI1[k], FI3[k]]) for k in range(3)]
+    out.append(fortran_write(f4, [L1, L2]))
     return "\n".join(out)
 
 
@@ -194,7 +190,7 @@ _DSNTZ1_FORMAT = (
 
 
 def _dsntz1_report(i, o):
-    return _lines(_DSNTZ1_FORMAT, [i["KW3"], i["FI31"], i["FI32"], i["L3"], i["XD"],
+    return fortran_write(_DSNTZ1_FORMAT, [i["KW3"], i["FI31"], i["FI32"], i["L3"], i["XD"],
                                    i["Q"], *o])
 
 
@@ -300,8 +296,8 @@ def dsntz2_pivot():
 
 
 def _dsntz2_report(i, o):
-    return "\n".join([_lines(_DSNTZ2_FORMATS[0]),
-                      _lines(_DSNTZ2_FORMATS[1], [i["KW3"], i["FI3"], i["L3"], i["XD"],
+    return "\n".join([fortran_write(_DSNTZ2_FORMATS[0]),
+                      fortran_write(_DSNTZ2_FORMATS[1], [i["KW3"], i["FI3"], i["L3"], i["XD"],
                                                   i["GMIN"], i["GMAX"], *o,
                                                   *dsntz2_pivot()])])
 
@@ -372,7 +368,7 @@ _DSNTZ3_FORMAT = (
 
 
 def _dsntz3_report(i, o):
-    return _lines(_DSNTZ3_FORMAT, [i["XB1"], i["YB1"], i["XB2"], i["YB2"], i["FI1"],
+    return fortran_write(_DSNTZ3_FORMAT, [i["XB1"], i["YB1"], i["XB2"], i["YB2"], i["FI1"],
                                    i["ALC1"], *o])
 
 
@@ -444,7 +440,7 @@ _DSNTZK_FORMAT = ("(1X,'ДЛИНА КРИВОШИПА L1 = ',F6.4,'МЕЖЦЕН�
 
 
 def _dsntzk_report(i, o):
-    return _lines(_DSNTZK_FORMAT, list(o))
+    return fortran_write(_DSNTZK_FORMAT, list(o))
 
 
 DSNTZK = book_routine(

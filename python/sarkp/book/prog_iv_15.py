@@ -132,19 +132,8 @@ def compute(card=None, positions: int | None = None, angles=None,
           else np.atleast_1d(np.asarray(angles, dtype=float)))
 
     def call(routine, *args):
-        n_out = len(routine.spec.outputs)
-        if on_error == "raise":
-            return tuple(routine(*args))
-        # "nan": a position where an earlier group failed (NaN inputs) is NaN here too;
-        # the library refuses NaN inputs, so only the others are passed on.
-        args = np.broadcast_arrays(*[np.asarray(a, dtype=float) for a in args])
-        good = np.all([np.isfinite(a) for a in args], axis=0)
-        out = [np.full(FI.shape, np.nan) for _ in range(n_out)]
-        if good.any():
-            res = routine(*[a[good] for a in args], on_error="nan")
-            for o, r in zip(out, tuple(res)[:n_out]):
-                o[good] = r
-        return tuple(out)
+        # under "nan" a position where an earlier group failed (NaN inputs) is NaN here too
+        return tuple(routine(*args, on_error=on_error))[:len(routine.spec.outputs)]
 
     # positions (L2495-2507)
     YA = ROA * np.sin(FI)
