@@ -9,13 +9,15 @@
 !   R(M,N)  right-hand sides in, solution out;   A(M,M)  destroyed;
 !   EPS     relative pivot tolerance;
 !   IER = 0   no loss of significance;
-!   IER = -1  M < 1, or a pivot that is zero to working precision (no solution: R is
-!             left unchanged);
+!   IER = -1  M < 1, EPS negative or NaN, or a pivot that is zero to working precision,
+!             or a solution that overflows (no solution: R is left unchanged);
 !   IER = K   (K >= 1) complete-pivoting Gauss elimination met, at step K+1, a pivot
 !             |p| <= EPS * max|a_ij|: the first K steps were sound, so A has numerical
 !             rank K at tolerance EPS.  The solution is still returned, as in SSP.
 ! Complete pivoting is LAPACK's DGETC2 (A = P L U Q), the solve DGESC2.  SSP's pivots are
 ! the same complete pivots, so the step K reported is SSP's step.
+! A and each column of R are scaled by powers of 2 before the elimination (exact, same
+! pivots and IER) so that huge or tiny coefficients neither overflow nor underflow in it.
 module gelg_mod
   use prmtr, only: dp, st_ok, st_singular, st_significance
   implicit none
@@ -35,14 +37,21 @@ contains
     real(dp), intent(in) :: eps
     integer, intent(out) :: ier
     integer :: ipiv(max(m, 1)), jpiv(max(m, 1)), info, k, j
-    real(dp) :: amax, tol, scale, work(max(m, 1))
+    real(dp) :: amax, rmax, tol, scl, work(max(m, 1)), sol(m, n)
+    integer :: ea, er
     external :: dgetc2, dgesc2
 
     ier = -1
     if (m < 1 .or. n < 1) return
+    if (.not. (eps >= 0.0_dp)) return        ! NaN or negative EPS (the Python layer names it)
     amax = maxval(abs(a))
     if (.not. (amax > 0.0_dp) .or. amax > huge(amax)) return   ! zero, NaN or inf matrix
-    tol = eps*amax
+    ! Scale A by a power of 2 so that max|a_ij| is about 1: exact, leaves the pivot order
+    ! and every pivot ratio (hence IER) unchanged, and keeps the elimination from
+    ! overflowing (1e308 - (-1e308)) or underflowing.
+    ea = exponent(amax)
+    a = scale(a, -ea)
+    tol = eps*maxval(abs(a))
 
     call dgetc2(m, a, m, ipiv, jpiv, info)
     ! DGETC2 sets INFO = k when it had to replace a pivot smaller than eps*max|a|:
@@ -60,14 +69,31 @@ contains
     end do
 
     do j = 1, n
-      work = r(:, j)
-      call dgesc2(m, a, m, work, ipiv, jpiv, scale)
-      if (scale /= 1.0_dp) then                 ! DGESC2 scaled to avoid overflow
+      ! each right-hand side scaled by a power of 2 as well (exact); DGESC2 solves
+      ! A x = scl*b when it must scale to avoid overflow, so x/scl is the solution.
+      rmax = maxval(abs(r(:, j)))
+      if (.not. (rmax <= huge(rmax))) then
         ier = -1
         return
       end if
-      r(:, j) = work
+      er = 0
+      if (rmax > 0.0_dp) er = exponent(rmax)
+      work = scale(r(:, j), -er)
+      call dgesc2(m, a, m, work, ipiv, jpiv, scl)
+      ! the solution of the original system is work/scl * 2**(er - ea): representable?
+      if (.not. (scl > 0.0_dp)) then
+        ier = -1
+        return
+      end if
+      if (maxval(abs(work)) > 0.0_dp) then
+        if (exponent(maxval(abs(work))) - exponent(scl) + er - ea >= maxexponent(1.0_dp)) then
+          ier = -1                               ! the solution overflows
+          return
+        end if
+      end if
+      sol(:, j) = scale(work, er - ea - exponent(scl))/fraction(scl)
     end do
+    r = sol
   end subroutine gelg
 
   ! The 2x2 call every routine of the book makes, CALL GELG(C, A, 2, 1, 0.0001, IER)

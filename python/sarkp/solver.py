@@ -32,7 +32,7 @@ def GELG(R, A, M, N, EPS):
         Number of right-hand sides (the book's gloss "method of computation" is wrong:
         ERRATA E-GELG-1).
     EPS : float
-        Relative pivot tolerance.
+        Relative pivot tolerance, >= 0 (NaN or negative: ValueError).
 
     Returns
     -------
@@ -44,6 +44,9 @@ def GELG(R, A, M, N, EPS):
         K at tolerance EPS (SSP's meaning; the solution is still returned).  The
         pivots are LAPACK's complete pivots (DGETC2), the solve DGESC2.
     """
+    eps = float(EPS)
+    if not eps >= 0.0:                      # NaN fails this too
+        raise ValueError(f"GELG: EPS must be a nonnegative number, got {EPS!r}")
     r_in = np.asarray(R, dtype=float)
     a = np.array(A, dtype=float, order="F", copy=True)
     M, N = int(M), int(N)
@@ -57,5 +60,5 @@ def GELG(R, A, M, N, EPS):
         if not np.isfinite(v).all():
             raise ValueError(f"GELG: {name} holds a value that is not a finite number")
     r = np.array(r_in.reshape((M, N), order="F"), order="F", copy=True)
-    ier = _sarkp.gelg_mod.gelg(r, a, float(EPS))
+    ier = _sarkp.gelg_mod.gelg(r, a, eps)
     return _GELG_RESULT(r.reshape(r_in.shape, order="F"), int(ier))
