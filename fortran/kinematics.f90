@@ -41,6 +41,7 @@ module kinematics
   use gelg_mod, only: gelg2
   implicit none
   private
+  real(dp), parameter :: uround = epsilon(1.0_dp)/2     ! unit roundoff, 2**-53
   public :: dprm1, dprm2, dprm3, dprm4, dprm5
   public :: dskor1, dskor2, dskor3, dskor4, dskor5
   public :: duskr1, duskr2, duskr3, duskr4, duskr5
@@ -68,40 +69,167 @@ contains
     y2 = y(2)
   end subroutine solve2
 
-  ! A failure (assembly, singular) wins over a significance warning, which wins over ok.
-  pure integer function worse(s1, s2)
-    integer, intent(in) :: s1, s2
-    if (s1 /= st_ok .and. s1 /= st_significance) then
-      worse = s1
-    else if (s2 /= st_ok .and. s2 /= st_significance) then
-      worse = s2
-    else if (s1 == st_significance .or. s2 == st_significance) then
-      worse = st_significance
-    else
-      worse = st_ok
+  ! solve2 plus the error estimate of the dead-centre policy (module header).  The matrix
+  ! entries are components of unit vectors whose directions are known to +-da (radians);
+  ! the right-hand side is known to +-db (absolute, as a vector) and sb is the size of the
+  ! data it was built from (the sum of the moduli of its terms).  By the perturbation bound
+  ! |dy| <= |A^-1| (|dA| |y| + |db|) with Frobenius norms (|A^-1|_F = |A|_F/|det A| for a
+  ! 2x2), plus the elimination's own backward error (a few units of roundoff of |A|):
+  !   rel = |A^-1|_F ((2 da + 4u |A|_F) |y| + db) / max(|y|, sb/|A|_F),
+  ! the error relative to the larger of the result and the size of the data.
+  ! A GELG loss-of-significance flag (pivot <= 1e-4 of the largest) is not a status here:
+  ! rel measures what is left.
+  subroutine solve2e(a11, a12, a21, a22, b1, b2, da, db, sb, y1, y2, st, rel)
+    real(dp), intent(in) :: a11, a12, a21, a22, b1, b2, da, db, sb
+    real(dp), intent(out) :: y1, y2, rel
+    integer, intent(out) :: st
+    real(dp) :: na, det, ny, den
+    rel = huge(1.0_dp)
+    call solve2(a11, a12, a21, a22, b1, b2, y1, y2, st)
+    if (failed(st)) return
+    st = st_ok
+    na = sqrt(a11**2 + a12**2 + a21**2 + a22**2)
+    det = a11*a22 - a12*a21
+    if (det == 0.0_dp) then
+      st = st_singular
+      y1 = 0.0_dp; y2 = 0.0_dp
+      return
     end if
-  end function worse
+    ny = hypot(y1, y2)
+    den = max(ny, sb/na)
+    if (den == 0.0_dp) then
+      rel = 0.0_dp                                ! no data: y = 0 exactly
+    else
+      rel = na/abs(det)*((2.0_dp*da + 4.0_dp*uround*na)*ny + db)/den
+    end if
+  end subroutine solve2e
+
+  ! The kind-5 system  y1*e(FIM + T2) - y2*e(FIM) = b  written in the frame of the guide
+  ! (b1, b2 = components of b along e(FIM), e(FIM + pi/2)):  y1*cos(T2) - y2 = b1,
+  ! y1*sin(T2) = b2.  FIM + T2 is never formed, so a small T2 keeps its digits.  db, sb
+  ! as for solve2e; the error bound is propagated through the two formulas (sin and cos
+  ! of T2 to an ulp, T2 itself known to an ulp).  SIN(T2) = 0: st_singular.
+  subroutine solve_kind5(t2, b1, b2, db, sb, y1, y2, st, rel)
+    real(dp), intent(in) :: t2, b1, b2, db, sb
+    real(dp), intent(out) :: y1, y2, rel
+    integer, intent(out) :: st
+    real(dp) :: s, c, ds, dc, e1, e2, den
+    y1 = 0.0_dp; y2 = 0.0_dp
+    rel = huge(1.0_dp)
+    st = st_singular
+    s = sin(t2)
+    c = cos(t2)
+    if (s == 0.0_dp) return                       ! slot parallel to the guide
+    y1 = b2/s
+    y2 = y1*c - b1
+    if (.not. (abs(y1) <= huge(y1) .and. abs(y2) <= huge(y2))) then
+      y1 = 0.0_dp; y2 = 0.0_dp
+      return
+    end if
+    st = st_ok
+    ds = 2.0_dp*uround*(abs(s) + abs(t2*c))
+    dc = 2.0_dp*uround*(abs(c) + abs(t2*s))
+    e1 = db/abs(s) + abs(y1)*(ds/abs(s) + 2.0_dp*uround)
+    e2 = e1*abs(c) + abs(y1)*dc + db + 2.0_dp*uround*(abs(y1*c) + abs(b1) + abs(y2))
+    den = max(hypot(y1, y2), sb)
+    if (den == 0.0_dp) then
+      rel = 0.0_dp
+    else
+      rel = hypot(e1, e2)/den
+    end if
+  end subroutine solve_kind5
+
+  ! The status of the dead-centre policy from the estimated relative error est:
+  !   est > 0.1 (or NaN): st_singular -- not even the first significant digit is assured;
+  !   1e-8 < est <= 0.1 : 100 + d, d = floor(-log10(est)) in 1..7 correct digits;
+  !   est <= 1e-8       : st_ok.
+  pure integer function policy(est)
+    real(dp), intent(in) :: est
+    integer :: d
+    if (.not. (est <= 0.1_dp)) then
+      policy = st_singular
+    else if (est > 1.0e-8_dp) then
+      d = int(floor(-log10(est)))
+      policy = 100 + max(1, min(7, d))
+    else
+      policy = st_ok
+    end if
+  end function policy
+
+  ! The final status: a failure already found, else a non-finite result (an overflow of
+  ! an intermediate or of the answer: st_singular), else the policy's verdict on est.
+  pure integer function settle(st, est, outs)
+    integer, intent(in) :: st
+    real(dp), intent(in) :: est, outs(:)
+    if (failed(st)) then
+      settle = st
+    else if (.not. all(abs(outs) <= huge(1.0_dp))) then
+      settle = st_singular
+    else
+      settle = policy(est)
+    end if
+  end function settle
 
   pure logical function failed(st)
     integer, intent(in) :: st
-    failed = st /= st_ok .and. st /= st_significance
+    failed = st /= st_ok .and. st /= st_significance .and. st < 100
   end function failed
+
+  ! Angle in (-pi, pi] (the DUGL2 range) of an angle in (-5 pi, 5 pi].
+  pure real(dp) function wrap_pi(x)
+    real(dp), intent(in) :: x
+    wrap_pi = x
+    do while (wrap_pi > pi)
+      wrap_pi = wrap_pi - 2.0_dp*pi
+    end do
+    do while (wrap_pi <= -pi)
+      wrap_pi = wrap_pi + 2.0_dp*pi
+    end do
+  end function wrap_pi
+
+  ! Error (radians) of an angle found as arccos/arcsin of a quantity c known to +-dc:
+  ! dc/sqrt(1 - c**2) away from |c| = 1, sqrt(2 dc) at it (second order).
+  pure real(dp) function angle_sensitivity(c, dc)
+    real(dp), intent(in) :: c, dc
+    real(dp) :: sn
+    sn = sqrt(max(0.0_dp, (1.0_dp - abs(c))*(1.0_dp + abs(c))))
+    if (sn > 0.0_dp) then
+      angle_sensitivity = min(dc/sn, sqrt(2.0_dp*dc))
+    else
+      angle_sensitivity = sqrt(2.0_dp*dc)
+    end if
+  end function angle_sensitivity
 
   ! Angles of the triangle with base d = AC and sides l2 = AB, l3 = CB:
   !   anga = angle BAC, angc = angle BCA   (the book's UGBAC, UGBCA of the cosine law).
   ! Height by Kahan's Heron formula, angles by atan2: accurate for flat triangles too.
+  ! The sides are first scaled by a power of 2 (exact; the angles do not change), so that
+  ! lengths of 1e-300 or 1e300 neither underflow nor overflow.
+  ! dang: how far the angles move when d, l2, l3 move by one rounding (the sensitivity of
+  ! the position, radians; h = the triangle's height on d), plus a few roundings of the
+  ! computation itself.
   ! st_assembly when the sides violate the triangle inequality by more than rounding.
-  subroutine tri_angles(d, l2, l3, anga, angc, st)
-    real(dp), intent(in) :: d, l2, l3
-    real(dp), intent(out) :: anga, angc
+  subroutine tri_angles(d0, l20, l30, anga, angc, dang, st)
+    real(dp), intent(in) :: d0, l20, l30
+    real(dp), intent(out) :: anga, angc, dang
     integer, intent(out) :: st
-    real(dp) :: a, b, c, t, f1, f2, f3, f4, area, h, pa, tol
+    real(dp) :: d, l2, l3, a, b, c, t, f1, f2, f3, f4, area, h, pa, tol, dc
+    integer :: e
     anga = 0.0_dp
     angc = 0.0_dp
-    if (.not. (d > 0.0_dp .and. l2 > 0.0_dp .and. l3 > 0.0_dp)) then
+    dang = 0.0_dp
+    if (.not. (d0 > 0.0_dp .and. l20 > 0.0_dp .and. l30 > 0.0_dp)) then
       st = st_assembly
       return
     end if
+    if (.not. (max(d0, l20, l30) <= huge(1.0_dp))) then
+      st = st_assembly
+      return
+    end if
+    e = exponent(max(d0, l20, l30))
+    d = scale(d0, -e)
+    l2 = scale(l20, -e)
+    l3 = scale(l30, -e)
     ! sort a >= b >= c
     a = d
     b = l2
@@ -130,6 +258,15 @@ contains
     pa = (d*d + (l2 - l3)*(l2 + l3))/(2.0_dp*d)  ! projection of AB on AC
     anga = atan2(h, pa)
     angc = atan2(h, d - pa)
+    ! first order both angles move by 2u(d^2+l2^2+l3^2)/(d h); second order (flat triangle)
+    ! by sqrt(2 dc), dc the larger move of the two cosines
+    dc = 2.0_dp*uround*(d*d + l2*l2 + l3*l3)/(d*min(l2, l3))
+    if (h > 0.0_dp) then
+      dang = min(2.0_dp*uround*(d*d + l2*l2 + l3*l3)/(d*h), sqrt(2.0_dp*dc))
+    else
+      dang = sqrt(2.0_dp*dc)
+    end if
+    dang = dang + 16.0_dp*uround
     st = st_ok
   end subroutine tri_angles
 
@@ -139,11 +276,8 @@ contains
   ! direction, in [0, 2*PI), of the vector from point 1 (ordinate Y1) to point 2 (ordinate
   ! Y2), where DX = X1 - X2 and FI is that direction modulo pi (its arctangent, redundant
   ! and dropped here): DKNMA1 with it puts B at AB = RZ2, CB = RZ3; the opposite reading does
-  ! not.  Implemented through II.3 DUGL1 on the points (DX, Y1) -> (0, Y2).
-  pure real(dp) function dugl1_dx(y1, y2, dx)
-    real(dp), intent(in) :: y1, y2, dx
-    dugl1_dx = dugl1(dx, y1, 0.0_dp, y2)
-  end function dugl1_dx
+  ! not.  That is II.3 DUGL1 on the two points, DUGL1(X1, Y1, X2, Y2), which is what
+  ! DKNMA3 calls (direction A->C); DKNMA1 takes its directions from the triangle's angles.
 
   ! Direction of the acceleration of a point at direction FI from the centre of a link
   ! rotating with W, E: FI + sign(E)*(pi - atan(|E|/W**2)), i.e. the book's
@@ -168,7 +302,7 @@ contains
     real(dp), intent(in) :: xa, ya, xc, yc, rz2, rz3, p, aaa
     real(dp), intent(out) :: fi2, fi3, xb, yb
     integer, intent(out) :: ier
-    real(dp) :: rzac, fiac, ugbac, ugbca, q
+    real(dp) :: rzac, fiac, ugbac, ugbca, q, dang
     fi2 = 0.0_dp; fi3 = 0.0_dp; xb = 0.0_dp; yb = 0.0_dp
     call dvkt(xa, ya, xc, yc, rzac, fiac)
     if (rzac == 0.0_dp) then
@@ -179,7 +313,7 @@ contains
       end if
       return
     end if
-    call tri_angles(rzac, rz2, rz3, ugbac, ugbca, ier)
+    call tri_angles(rzac, rz2, rz3, ugbac, ugbca, dang, ier)
     if (failed(ier)) return
     q = book_sign(1.0_dp, p)
     fiac = dugol(fiac)
@@ -187,6 +321,10 @@ contains
     fi3 = dugol(fiac + q*ugbca - q*pi)
     xb = xa + rz2*cos(fi2)
     yb = ya + rz2*sin(fi2)
+    ier = settle(ier, dang + 8.0_dp*uround*(1.0_dp + abs(fiac)), [xb, yb])
+    if (failed(ier)) then
+      fi2 = 0.0_dp; fi3 = 0.0_dp; xb = 0.0_dp; yb = 0.0_dp
+    end if
   end subroutine dprm1
 
   ! IV.2 DPRM2, L1531-1558 (Table 8, Fig. 15).  Kind 2 (RRP) positions.
@@ -201,39 +339,47 @@ contains
     real(dp), intent(in) :: xa, ya, xk, yk, fim, rz2, rz3, t, aaa
     real(dp), intent(out) :: xb, yb, fi2
     integer, intent(out) :: ier
-    real(dp) :: cm, sm, s, xo1, yo1, dao, r, fir, b, x, y, off
+    real(dp) :: cm, sm, dx, dy, so, r, b, x, y, off, c, dc, tow
     xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp
     ier = st_ok
-    if (.not. (rz2 > 0.0_dp)) then
+    if (.not. (rz2 > 0.0_dp .and. rz2 <= huge(rz2))) then
       ier = st_assembly
       return
     end if
     cm = cos(fim)
     sm = sin(fim)
-    s = (xa - xk)*cm + (ya - yk)*sm
-    xo1 = xk + s*cm
-    yo1 = yk + s*sm
-    dao = hypot(xa - xo1, ya - yo1)
+    dx = xa - xk
+    dy = ya - yk
+    so = -dx*sm + dy*cm                           ! signed offset of A from the guide axis
     off = rz3*sin(t)
-    if (dao == 0.0_dp .and. off /= 0.0_dp) then
+    if (so == 0.0_dp .and. off /= 0.0_dp) then
       ier = st_singular                           ! A on the guide: side of the offset undefined
       return
     end if
-    r = dao - off
-    fir = dugl2(xa, ya, xo1, yo1)
-    if (abs(r) > rz2) then
-      if (abs(r) - rz2 > 8.0_dp*epsilon(1.0_dp)*max(rz2, abs(r))) then
+    ! A -> O' (foot of the perpendicular) is -sign(so) along the left normal (-sm, cm)
+    tow = -sign(1.0_dp, so)
+    r = abs(so) - off
+    c = r/rz2
+    if (abs(c) > 1.0_dp) then
+      if (abs(c) - 1.0_dp > 8.0_dp*epsilon(1.0_dp)) then
         ier = st_assembly                         ! B cannot reach the guide
         return
       end if
-      r = sign(rz2, r)
+      c = sign(1.0_dp, c)
     end if
-    b = sqrt((rz2 - r)*(rz2 + r))
-    x = r*cos(fir) + b*cm
-    y = r*sin(fir) + b*sm
+    b = rz2*sqrt((1.0_dp - c)*(1.0_dp + c))
+    x = tow*rz2*c*(-sm) + b*cm
+    y = tow*rz2*c*cm + b*sm
     fi2 = dugl5(x, y)
     xb = xa + rz2*cos(fi2)
     yb = ya + rz2*sin(fi2)
+    ! sensitivity: c moves with the offsets and, through FIM, with the lever |A - K|
+    dc = 4.0_dp*uround*(abs(so) + abs(off) + abs(rz3) + rz2 &
+                        + (1.0_dp + abs(fim) + abs(t))*(abs(dx) + abs(dy)))/rz2
+    ier = settle(ier, angle_sensitivity(c, dc) + 8.0_dp*uround*(1.0_dp + abs(fim)), [xb, yb])
+    if (failed(ier)) then
+      xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp
+    end if
   end subroutine dprm2
 
   ! IV.3 DPRM3, L1577-1598 (Table 9, Fig. 16).  Kind 3 (RPR, slotted lever) positions.
@@ -245,7 +391,7 @@ contains
     real(dp), intent(in) :: xa, ya, xc, yc, rz2, t, p, aaa
     real(dp), intent(out) :: rzac, fi3, fica
     integer, intent(out) :: ier
-    real(dp) :: h, s, ugbca
+    real(dp) :: h, s, ugbca, ds
     rzac = 0.0_dp; fi3 = 0.0_dp; fica = 0.0_dp
     ier = st_ok
     h = rz2*sin(t)
@@ -271,6 +417,11 @@ contains
     fica = dugl2(xc, yc, xa, ya)
     ugbca = asin(s)
     fi3 = fica + book_sign(1.0_dp, p)*ugbca
+    ds = 4.0_dp*uround*(abs(s)*(1.0_dp + abs(t)) + abs(rz2/rzac)*abs(t))
+    ier = settle(ier, angle_sensitivity(s, ds) + 8.0_dp*uround*(1.0_dp + abs(fica)), [rzac])
+    if (failed(ier)) then
+      rzac = 0.0_dp; fi3 = 0.0_dp; fica = 0.0_dp
+    end if
   end subroutine dprm3
 
   ! IV.4 DPRM4, L1622-1657 (Table 10, Fig. 17).  Kind 4 (PRP) positions.
@@ -287,18 +438,33 @@ contains
     real(dp), intent(in) :: xvm, yvm, xa, ya, fim, xvn, yvn, xc, yc, fin, rz2, t2, rz3, t3, aaa
     real(dp), intent(out) :: xb, yb, rvbm, fivbm, rvbn, fivbn
     integer, intent(out) :: ier
-    real(dp) :: sm, cm, sn, cn
+    real(dp) :: sm, cm, sn, cn, dxc, dyc, bx, by, d2, d3, sb, da, rel, mx, my, nx, ny
     xb = 0.0_dp; yb = 0.0_dp; rvbm = 0.0_dp; fivbm = 0.0_dp; rvbn = 0.0_dp; fivbn = 0.0_dp
     sm = sin(fim); cm = cos(fim)
     sn = sin(fin); cn = cos(fin)
-    ! unknowns (YB, XB) as printed:  cos(FI)*YB - sin(FI)*XB = cos(FI)*YA - sin(FI)*XA + d
-    call solve2(cm, -sm, cn, -sn, cm*ya - sm*xa + rz2*sin(t2), cn*yc - sn*xc + rz3*sin(t3), &
-                yb, xb, ier)
+    ! unknowns (YB - YA, XB - XA), the printed rows relative to A:
+    !   cos(FI)*(YB - YA) - sin(FI)*(XB - XA) = cos(FI)*(Y - YA) - sin(FI)*(X - XA) + d
+    dxc = xc - xa
+    dyc = yc - ya
+    d2 = rz2*sin(t2)
+    d3 = rz3*sin(t3)
+    sb = abs(d2) + abs(dxc) + abs(dyc) + abs(d3)
+    da = 4.0_dp*uround*(1.0_dp + max(abs(fim), abs(fin)))
+    call solve2e(cm, -sm, cn, -sn, d2, cn*dyc - sn*dxc + d3, da, &
+                 4.0_dp*uround*(2.0_dp + abs(fin) + abs(t2) + abs(t3))*sb, sb, by, bx, ier, rel)
     if (failed(ier)) return
-    rvbm = hypot(xb - xvm, yb - yvm)
-    fivbm = dugol(dugl2(xvm, yvm, xb, yb))
-    rvbn = hypot(xb - xvn, yb - yvn)
-    fivbn = dugol(dugl2(xvn, yvn, xb, yb))
+    xb = xa + bx
+    yb = ya + by
+    mx = bx + (xa - xvm); my = by + (ya - yvm)
+    nx = bx - dxc + (xc - xvn); ny = by - dyc + (yc - yvn)
+    rvbm = hypot(mx, my)
+    fivbm = dugol(dugl2(0.0_dp, 0.0_dp, mx, my))
+    rvbn = hypot(nx, ny)
+    fivbn = dugol(dugl2(0.0_dp, 0.0_dp, nx, ny))
+    ier = settle(ier, rel, [xb, yb, rvbm, rvbn])
+    if (failed(ier)) then
+      xb = 0.0_dp; yb = 0.0_dp; rvbm = 0.0_dp; fivbm = 0.0_dp; rvbn = 0.0_dp; fivbn = 0.0_dp
+    end if
   end subroutine dprm4
 
   ! DPRM5 -- EXTENSION, not in the book.  The book prints no position routine for kind 5
@@ -315,11 +481,25 @@ contains
     real(dp), intent(in) :: xa, ya, fim, xc, yc, t2, aaa
     real(dp), intent(out) :: xk, yk, s2, s3
     integer, intent(out) :: ier
+    real(dp) :: cm, sm, dx, dy, d1, d2, sb, rel
     xk = 0.0_dp; yk = 0.0_dp; s2 = 0.0_dp; s3 = 0.0_dp
-    call solve2(cos(fim), cos(fim + t2), sin(fim), sin(fim + t2), xc - xa, yc - ya, s2, s3, ier)
+    cm = cos(fim)
+    sm = sin(fim)
+    dx = xc - xa
+    dy = yc - ya
+    d1 = dx*cm + dy*sm                            ! C - A in the frame of the guide
+    d2 = -dx*sm + dy*cm
+    sb = abs(dx) + abs(dy)
+    ! s3*e(T2) - (-s2)*e(0) = (d1, d2)
+    call solve_kind5(t2, d1, d2, 4.0_dp*uround*(2.0_dp + abs(fim))*sb, sb, s3, s2, ier, rel)
     if (failed(ier)) return
-    xk = xa + s2*cos(fim)
-    yk = ya + s2*sin(fim)
+    s2 = -s2
+    xk = xa + s2*cm
+    yk = ya + s2*sm
+    ier = settle(ier, rel, [xk, yk, s2, s3])
+    if (failed(ier)) then
+      xk = 0.0_dp; yk = 0.0_dp; s2 = 0.0_dp; s3 = 0.0_dp
+    end if
   end subroutine dprm5
 
   ! ============================================================================
@@ -334,11 +514,14 @@ contains
     real(dp), intent(in) :: rz2, fi2, rz3, fi3, va, ala, vc, alc, aaa
     real(dp), intent(out) :: vba, alba, vbc, albc, vb, alb, w2, w3
     integer, intent(out) :: ier
-    real(dp) :: y1, y2
+    real(dp) :: y1, y2, sb, rel
     vba = 0.0_dp; alba = 0.0_dp; vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp
     w2 = 0.0_dp; w3 = 0.0_dp
-    call solve2(cos(fi2 + pid2), -cos(fi3 + pid2), sin(fi2 + pid2), -sin(fi3 + pid2), &
-                vc*cos(alc) - va*cos(ala), vc*sin(alc) - va*sin(ala), y1, y2, ier)
+    sb = abs(va) + abs(vc)
+    call solve2e(cos(fi2 + pid2), -cos(fi3 + pid2), sin(fi2 + pid2), -sin(fi3 + pid2), &
+                 vc*cos(alc) - va*cos(ala), vc*sin(alc) - va*sin(ala), &
+                 4.0_dp*uround*(2.0_dp + max(abs(fi2), abs(fi3))), &
+                 4.0_dp*uround*(1.0_dp + max(abs(ala), abs(alc)))*sb, sb, y1, y2, ier, rel)
     if (failed(ier)) return
     alba = dugl3(fi2, pid2, y1)
     vba = abs(y1)
@@ -347,6 +530,11 @@ contains
     call dsmvkt(va, ala, vba, alba, vb, alb)
     w2 = domega(rz2, vba, alba - fi2)
     w3 = domega(rz3, vbc, albc - fi3)
+    ier = settle(ier, rel, [vba, vbc, vb, w2, w3])
+    if (failed(ier)) then
+      vba = 0.0_dp; alba = 0.0_dp; vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp
+      w2 = 0.0_dp; w3 = 0.0_dp
+    end if
   end subroutine dskor1
 
   ! IV.6 DSKOR2, L1740-1774 (Table 12, Fig. 20).  Kind 2 velocities:
@@ -359,11 +547,14 @@ contains
     real(dp), intent(in) :: va, ala, vbm, albm, rz2, fi2, fim, aaa
     real(dp), intent(out) :: vba, alba, vbbm, albbm, vb, alb, w2
     integer, intent(out) :: ier
-    real(dp) :: y1, y2
+    real(dp) :: y1, y2, sb, rel
     vba = 0.0_dp; alba = 0.0_dp; vbbm = 0.0_dp; albbm = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp
     w2 = 0.0_dp
-    call solve2(cos(fi2 + pid2), -cos(fim), sin(fi2 + pid2), -sin(fim), &
-                vbm*cos(albm) - va*cos(ala), vbm*sin(albm) - va*sin(ala), y1, y2, ier)
+    sb = abs(va) + abs(vbm)
+    call solve2e(cos(fi2 + pid2), -cos(fim), sin(fi2 + pid2), -sin(fim), &
+                 vbm*cos(albm) - va*cos(ala), vbm*sin(albm) - va*sin(ala), &
+                 4.0_dp*uround*(2.0_dp + max(abs(fi2), abs(fim))), &
+                 4.0_dp*uround*(1.0_dp + max(abs(ala), abs(albm)))*sb, sb, y1, y2, ier, rel)
     if (failed(ier)) return
     alba = dugl3(fi2, pid2, y1)
     vba = abs(y1)
@@ -371,6 +562,11 @@ contains
     vbbm = abs(y2)
     w2 = domega(rz2, vba, alba - fi2)
     call dsmvkt(va, ala, vba, alba, vb, alb)
+    ier = settle(ier, rel, [vba, vbbm, vb, w2])
+    if (failed(ier)) then
+      vba = 0.0_dp; alba = 0.0_dp; vbbm = 0.0_dp; albbm = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp
+      w2 = 0.0_dp
+    end if
   end subroutine dskor2
 
   ! IV.7 DSKOR3, L1805-1854 (Table 13, Fig. 21).  Kind 3 velocities:
@@ -382,7 +578,7 @@ contains
     real(dp), intent(in) :: xa, ya, xc, yc, va, ala, vc, alc, fi3, aaa
     real(dp), intent(out) :: va3a, ala3a, va3c, ala3c, va3, ala3, w3
     integer, intent(out) :: ier
-    real(dp) :: rzac, fica, y1, y2
+    real(dp) :: rzac, fica, y1, y2, sb, rel
     va3a = 0.0_dp; ala3a = 0.0_dp; va3c = 0.0_dp; ala3c = 0.0_dp; va3 = 0.0_dp; ala3 = 0.0_dp
     w3 = 0.0_dp
     rzac = hypot(xa - xc, ya - yc)
@@ -391,8 +587,11 @@ contains
       return
     end if
     fica = dugl2(xc, yc, xa, ya)
-    call solve2(cos(fi3), -cos(fica + pid2), sin(fi3), -sin(fica + pid2), &
-                vc*cos(alc) - va*cos(ala), vc*sin(alc) - va*sin(ala), y1, y2, ier)
+    sb = abs(va) + abs(vc)
+    call solve2e(cos(fi3), -cos(fica + pid2), sin(fi3), -sin(fica + pid2), &
+                 vc*cos(alc) - va*cos(ala), vc*sin(alc) - va*sin(ala), &
+                 4.0_dp*uround*(2.0_dp + max(abs(fi3), abs(fica))), &
+                 4.0_dp*uround*(1.0_dp + max(abs(ala), abs(alc)))*sb, sb, y1, y2, ier, rel)
     if (failed(ier)) return
     ala3a = dugl4(fi3, pi, y1)
     va3a = abs(y1)
@@ -400,6 +599,11 @@ contains
     va3c = abs(y2)
     w3 = domega(rzac, va3c, ala3c - fi3)
     call dsmvkt(va, ala, va3a, ala3a, va3, ala3)
+    ier = settle(ier, rel, [va3a, va3c, va3, w3])
+    if (failed(ier)) then
+      va3a = 0.0_dp; ala3a = 0.0_dp; va3c = 0.0_dp; ala3c = 0.0_dp; va3 = 0.0_dp
+      ala3 = 0.0_dp; w3 = 0.0_dp
+    end if
   end subroutine dskor3
 
   ! IV.8 DSKOR4, L1879-1918 (Table 14, Fig. 22).  Kind 4 velocities:
@@ -412,21 +616,28 @@ contains
     real(dp), intent(in) :: rvbm, fivbm, fim, rvbn, fivbn, fin, wm, wn, aaa
     real(dp), intent(out) :: vbbm, albbm, vbbn, albbn, vb, alb
     integer, intent(out) :: ier
-    real(dp) :: vbm, albm, albn, y1, y2
+    real(dp) :: vbm, vbn, albm, albn, y1, y2, sb, rel
     vbbm = 0.0_dp; albbm = 0.0_dp; vbbn = 0.0_dp; albbn = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp
     vbm = abs(wm)*rvbm
+    vbn = abs(wn)*rvbn
     albm = dugl3(fivbm, pid2, wm)
     albn = dugl3(fivbn, pid2, wn)
+    sb = vbm + vbn
     ! E-DSKOR4-3: the book's first factor is ABS(WM)
-    call solve2(cos(fim), -cos(fin), sin(fim), -sin(fin), &
-                abs(wn)*cos(albn)*rvbn - abs(wm)*cos(albm)*rvbm, &
-                abs(wn)*rvbn*sin(albn) - abs(wm)*rvbm*sin(albm), y1, y2, ier)
+    call solve2e(cos(fim), -cos(fin), sin(fim), -sin(fin), &
+                 vbn*cos(albn) - vbm*cos(albm), vbn*sin(albn) - vbm*sin(albm), &
+                 4.0_dp*uround*(1.0_dp + max(abs(fim), abs(fin))), &
+                 4.0_dp*uround*(2.0_dp + max(abs(fivbm), abs(fivbn)))*sb, sb, y1, y2, ier, rel)
     if (failed(ier)) return
     albbm = dugl4(fim, pi, y1)
     vbbm = abs(y1)
     albbn = dugl4(fin, pi, y2)
     vbbn = abs(y2)
     call dsmvkt(vbm, albm, vbbm, albbm, vb, alb)
+    ier = settle(ier, rel, [vbbm, vbbn, vb])
+    if (failed(ier)) then
+      vbbm = 0.0_dp; albbm = 0.0_dp; vbbn = 0.0_dp; albbn = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp
+    end if
   end subroutine dskor4
 
   ! IV.9 DSKOR5, L1947-1978 (Table 15, Fig. 23).  Kind 5 velocities:
@@ -438,18 +649,27 @@ contains
     real(dp), intent(in) :: xc3, yc3, xvm, yvm, fim, t2, wm, vc3, alc3, aaa
     real(dp), intent(out) :: vc2c3, alc2c3, vc2cm, alc2cm, vc2, alc2
     integer, intent(out) :: ier
-    real(dp) :: vcm, alcm, y1, y2
+    real(dp) :: vcm, alcm, y1, y2, sb, rel
     vc2c3 = 0.0_dp; alc2c3 = 0.0_dp; vc2cm = 0.0_dp; alc2cm = 0.0_dp; vc2 = 0.0_dp; alc2 = 0.0_dp
     vcm = abs(wm)*hypot(xc3 - xvm, yc3 - yvm)
     alcm = dugl3(dugl2(xvm, yvm, xc3, yc3), pid2, wm)
-    call solve2(cos(fim + t2), -cos(fim), sin(fim + t2), -sin(fim), &
-                vcm*cos(alcm) - vc3*cos(alc3), vcm*sin(alcm) - vc3*sin(alc3), y1, y2, ier)
+    sb = vcm + abs(vc3)
+    ! y1*e(FIM + T2) - y2*e(FIM) = v_CM - v_C3, in the guide's frame
+    call solve_kind5(t2, vcm*cos(alcm - fim) - vc3*cos(alc3 - fim), &
+                     vcm*sin(alcm - fim) - vc3*sin(alc3 - fim), &
+                     4.0_dp*uround*(2.0_dp + abs(fim) + max(abs(alcm), abs(alc3)))*sb, sb, &
+                     y1, y2, ier, rel)
     if (failed(ier)) return
     alc2c3 = dugl4(fim + t2, pi, y1)
     vc2c3 = abs(y1)
     alc2cm = dugl4(fim, pi, y2)
     vc2cm = abs(y2)
     call dsmvkt(vc3, alc3, vc2c3, alc2c3, vc2, alc2)
+    ier = settle(ier, rel, [vc2c3, vc2cm, vc2])
+    if (failed(ier)) then
+      vc2c3 = 0.0_dp; alc2c3 = 0.0_dp; vc2cm = 0.0_dp; alc2cm = 0.0_dp; vc2 = 0.0_dp
+      alc2 = 0.0_dp
+    end if
   end subroutine dskor5
 
   ! ============================================================================
@@ -465,13 +685,18 @@ contains
     real(dp), intent(in) :: aa, ba, ac, bc, rz2, fi2, rz3, fi3, w2, w3, aaa
     real(dp), intent(out) :: abat, bbat, abct, bbct, ab, bb, e2, e3
     integer, intent(out) :: ier
-    real(dp) :: y1, y2, a, b
+    real(dp) :: y1, y2, a, b, an2, an3, sb, rel
     abat = 0.0_dp; bbat = 0.0_dp; abct = 0.0_dp; bbct = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp
     e2 = 0.0_dp; e3 = 0.0_dp
-    call solve2(cos(fi2 + pid2), -cos(fi3 + pid2), sin(fi2 + pid2), -sin(fi3 + pid2), &
-                ac*cos(bc) + w3**2*rz3*cos(fi3 - pi) - aa*cos(ba) - w2**2*rz2*cos(fi2 - pi), &
-                ac*sin(bc) + w3**2*rz3*sin(fi3 - pi) - aa*sin(ba) - w2**2*rz2*sin(fi2 - pi), &
-                y1, y2, ier)
+    an2 = w2**2*rz2
+    an3 = w3**2*rz3
+    sb = abs(aa) + abs(ac) + an2 + an3
+    call solve2e(cos(fi2 + pid2), -cos(fi3 + pid2), sin(fi2 + pid2), -sin(fi3 + pid2), &
+                 ac*cos(bc) + an3*cos(fi3 - pi) - aa*cos(ba) - an2*cos(fi2 - pi), &
+                 ac*sin(bc) + an3*sin(fi3 - pi) - aa*sin(ba) - an2*sin(fi2 - pi), &
+                 4.0_dp*uround*(2.0_dp + max(abs(fi2), abs(fi3))), &
+                 4.0_dp*uround*(4.0_dp + max(abs(ba), abs(bc), abs(fi2), abs(fi3)))*sb, sb, &
+                 y1, y2, ier, rel)
     if (failed(ier)) return
     bbat = dugl3(fi2, pid2, y1)
     abat = abs(y1)
@@ -481,10 +706,15 @@ contains
     else
       abct = abs(y2)          ! E-DUSKR1-1: corrected
     end if
-    call dsmvkt(aa, ba, w2**2*rz2, fi2 - pi, a, b)
+    call dsmvkt(aa, ba, an2, fi2 - pi, a, b)
     call dsmvkt(a, b, abat, bbat, ab, bb)
     e2 = domega(rz2, abat, bbat - fi2)
     e3 = domega(rz3, abct, bbct - fi3)
+    ier = settle(ier, rel, [abat, abct, ab, e2, e3])
+    if (failed(ier)) then
+      abat = 0.0_dp; bbat = 0.0_dp; abct = 0.0_dp; bbct = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp
+      e2 = 0.0_dp; e3 = 0.0_dp
+    end if
   end subroutine duskr1
 
   ! IV.11 DUSKR2, L2077-2119 (Table 17, Fig. 25).  Kind 2 accelerations:
@@ -498,21 +728,30 @@ contains
     real(dp), intent(in) :: aa, ba, abm, bvm, abk, bvk, rz2, fi2, w2, fim, aaa
     real(dp), intent(out) :: abat, vbat, abvm, bvbm, e2, ab, bb
     integer, intent(out) :: ier
-    real(dp) :: y1, y2, a, b
+    real(dp) :: y1, y2, a, b, an2, sb, rel
     abat = 0.0_dp; vbat = 0.0_dp; abvm = 0.0_dp; bvbm = 0.0_dp; e2 = 0.0_dp; ab = 0.0_dp
     bb = 0.0_dp
-    call solve2(cos(fi2 + pid2), -cos(fim), sin(fi2 + pid2), -sin(fim), &
-                abm*cos(bvm) + abk*cos(bvk) - aa*cos(ba) - w2**2*rz2*cos(fi2 - pi), &
-                abm*sin(bvm) + abk*sin(bvk) - aa*sin(ba) - w2**2*rz2*sin(fi2 - pi), &
-                y1, y2, ier)
+    an2 = w2**2*rz2
+    sb = abs(aa) + abs(abm) + abs(abk) + an2
+    call solve2e(cos(fi2 + pid2), -cos(fim), sin(fi2 + pid2), -sin(fim), &
+                 abm*cos(bvm) + abk*cos(bvk) - aa*cos(ba) - an2*cos(fi2 - pi), &
+                 abm*sin(bvm) + abk*sin(bvk) - aa*sin(ba) - an2*sin(fi2 - pi), &
+                 4.0_dp*uround*(2.0_dp + max(abs(fi2), abs(fim))), &
+                 4.0_dp*uround*(4.0_dp + max(abs(ba), abs(bvm), abs(bvk), abs(fi2)))*sb, sb, &
+                 y1, y2, ier, rel)
     if (failed(ier)) return
     vbat = dugl3(fi2, pid2, y1)
     abat = abs(y1)
     bvbm = dugl4(fim, pi, y2)
     abvm = abs(y2)
     e2 = domega(rz2, abat, vbat - fi2)
-    call dsmvkt(aa, ba, w2**2*rz2, fi2 - pi, a, b)
+    call dsmvkt(aa, ba, an2, fi2 - pi, a, b)
     call dsmvkt(a, b, abat, vbat, ab, bb)
+    ier = settle(ier, rel, [abat, abvm, e2, ab])
+    if (failed(ier)) then
+      abat = 0.0_dp; vbat = 0.0_dp; abvm = 0.0_dp; bvbm = 0.0_dp; e2 = 0.0_dp; ab = 0.0_dp
+      bb = 0.0_dp
+    end if
   end subroutine duskr2
 
   ! IV.12 DUSKR3, L2150-2184 (Table 18, Fig. 26).  Kind 3 accelerations:
@@ -525,21 +764,30 @@ contains
     real(dp), intent(in) :: aa, ba, ac, bc, fi3, w3, rzac, fica, aa3ak, ba3ak, aaa
     real(dp), intent(out) :: aa3ar, ba3ar, aa3ct, ba3ct, e3, aa3, ba3
     integer, intent(out) :: ier
-    real(dp) :: y1, y2, a, b
+    real(dp) :: y1, y2, a, b, an3, sb, rel
     aa3ar = 0.0_dp; ba3ar = 0.0_dp; aa3ct = 0.0_dp; ba3ct = 0.0_dp; e3 = 0.0_dp; aa3 = 0.0_dp
     ba3 = 0.0_dp
-    call solve2(cos(fi3), -cos(fica + pid2), sin(fi3), -sin(fica + pid2), &
-                ac*cos(bc) + w3**2*rzac*cos(fica - pi) - aa*cos(ba) - aa3ak*cos(ba3ak), &
-                ac*sin(bc) + w3**2*rzac*sin(fica - pi) - aa*sin(ba) - aa3ak*sin(ba3ak), &
-                y1, y2, ier)
+    an3 = w3**2*rzac
+    sb = abs(aa) + abs(ac) + abs(aa3ak) + an3
+    call solve2e(cos(fi3), -cos(fica + pid2), sin(fi3), -sin(fica + pid2), &
+                 ac*cos(bc) + an3*cos(fica - pi) - aa*cos(ba) - aa3ak*cos(ba3ak), &
+                 ac*sin(bc) + an3*sin(fica - pi) - aa*sin(ba) - aa3ak*sin(ba3ak), &
+                 4.0_dp*uround*(2.0_dp + max(abs(fi3), abs(fica))), &
+                 4.0_dp*uround*(4.0_dp + max(abs(ba), abs(bc), abs(ba3ak), abs(fica)))*sb, sb, &
+                 y1, y2, ier, rel)
     if (failed(ier)) return
     ba3ar = dugl4(fi3, pi, y1)
     aa3ar = abs(y1)
     ba3ct = dugl3(fica, pid2, y2)
     aa3ct = abs(y2)
     e3 = domega(rzac, aa3ct, ba3ct - fica)
-    call dsmvkt(ac, bc, w3**2*rzac, fica - pi, a, b)
+    call dsmvkt(ac, bc, an3, fica - pi, a, b)
     call dsmvkt(a, b, aa3ct, ba3ct, aa3, ba3)
+    ier = settle(ier, rel, [aa3ar, aa3ct, e3, aa3])
+    if (failed(ier)) then
+      aa3ar = 0.0_dp; ba3ar = 0.0_dp; aa3ct = 0.0_dp; ba3ct = 0.0_dp; e3 = 0.0_dp
+      aa3 = 0.0_dp; ba3 = 0.0_dp
+    end if
   end subroutine duskr3
 
   ! IV.13 DUSKR4, L2221-2275 (Table 19, Fig. 27).  Kind 4 accelerations:
@@ -556,10 +804,10 @@ contains
     real(dp), intent(in) :: abbnk, bbbnk, aaa
     real(dp), intent(out) :: abbmr, bbbmr, abbnr, bbbnr, ab, bb
     integer, intent(out) :: ier
-    real(dp) :: abn, abm, dlt, dlta, bbm, bbn, y1, y2, a, b
+    real(dp) :: abn, abm, dlt, dlta, bbm, bbn, y1, y2, a, b, sb, rel
     abbmr = 0.0_dp; bbbmr = 0.0_dp; abbnr = 0.0_dp; bbbnr = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp
-    abn = rvbn*sqrt(wn**4 + en**2)
-    abm = rvbm*sqrt(wm**4 + em**2)
+    abn = rvbn*hypot(wn*wn, en)                   ! = RVBN*SQRT(WN**4 + EN**2), no overflow
+    abm = rvbm*hypot(wm*wm, em)
     if (em == 0.0_dp) then
       dlt = pid2
     else
@@ -572,10 +820,13 @@ contains
       dlta = atan(wn**2/abs(en))                  ! E-DUSKR4-2: book PID2 + ATAN(...)
     end if
     bbn = dugl3(fivbn, pid2 + dlta, en)
-    call solve2(cos(fim), -cos(fin), sin(fim), -sin(fin), &
-                abn*cos(bbn) + abbnk*cos(bbbnk) - abm*cos(bbm) - abbmk*cos(bbbmk), &
-                abn*sin(bbn) + abbnk*sin(bbbnk) - abm*sin(bbm) - abbmk*sin(bbbmk), &
-                y1, y2, ier)
+    sb = abn + abm + abs(abbnk) + abs(abbmk)
+    call solve2e(cos(fim), -cos(fin), sin(fim), -sin(fin), &
+                 abn*cos(bbn) + abbnk*cos(bbbnk) - abm*cos(bbm) - abbmk*cos(bbbmk), &
+                 abn*sin(bbn) + abbnk*sin(bbbnk) - abm*sin(bbm) - abbmk*sin(bbbmk), &
+                 4.0_dp*uround*(1.0_dp + max(abs(fim), abs(fin))), &
+                 4.0_dp*uround*(6.0_dp + max(abs(fivbm), abs(fivbn), abs(bbbmk), abs(bbbnk)))*sb, &
+                 sb, y1, y2, ier, rel)
     if (failed(ier)) return
     bbbmr = dugl4(fim, pi, y1)
     abbmr = abs(y1)
@@ -583,6 +834,10 @@ contains
     abbnr = abs(y2)
     call dsmvkt(abm, bbm, abbmk, bbbmk, a, b)
     call dsmvkt(a, b, abbmr, bbbmr, ab, bb)
+    ier = settle(ier, rel, [abbmr, abbnr, ab])
+    if (failed(ier)) then
+      abbmr = 0.0_dp; bbbmr = 0.0_dp; abbnr = 0.0_dp; bbbnr = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp
+    end if
   end subroutine duskr4
 
   ! IV.14 DUSKR5, L2308-2378 (Table 20, Fig. 28).  Kind 5 accelerations:
@@ -597,20 +852,23 @@ contains
     real(dp), intent(in) :: ac23k, bc23k, aaa
     real(dp), intent(out) :: ac2c3r, bc2c3r, ac2cmr, bc2cmr, ac2, bc2
     integer, intent(out) :: ier
-    real(dp) :: acm, dlt, bcm, y1, y2, a, b
+    real(dp) :: acm, dlt, bcm, y1, y2, a, b, sb, rel
     ac2c3r = 0.0_dp; bc2c3r = 0.0_dp; ac2cmr = 0.0_dp; bc2cmr = 0.0_dp; ac2 = 0.0_dp
     bc2 = 0.0_dp
-    acm = hypot(xc3 - xvm, yc3 - yvm)*sqrt(wm**4 + em**2)
+    acm = hypot(xc3 - xvm, yc3 - yvm)*hypot(wm*wm, em)   ! = |C - VM| SQRT(WM**4 + EM**2)
     if (em == 0.0_dp) then
       dlt = pid2
     else
       dlt = atan(wm**2/abs(em))                   ! E-DUSKR5-1: book PID2 + ATAN(...)
     end if
     bcm = dugl3(dugl2(xvm, yvm, xc3, yc3), pid2 + dlt, em)
-    call solve2(cos(fim + t2), -cos(fim), sin(fim + t2), -sin(fim), &
-                acm*cos(bcm) + ac2mk*cos(bc2mk) - ac3*cos(bc3) - ac23k*cos(bc23k), &
-                acm*sin(bcm) + ac2mk*sin(bc2mk) - ac3*sin(bc3) - ac23k*sin(bc23k), &
-                y1, y2, ier)
+    sb = acm + abs(ac2mk) + abs(ac3) + abs(ac23k)
+    ! y1*e(FIM + T2) - y2*e(FIM) = right-hand side, in the guide's frame
+    call solve_kind5(t2, &
+          acm*cos(bcm - fim) + ac2mk*cos(bc2mk - fim) - ac3*cos(bc3 - fim) - ac23k*cos(bc23k - fim), &
+          acm*sin(bcm - fim) + ac2mk*sin(bc2mk - fim) - ac3*sin(bc3 - fim) - ac23k*sin(bc23k - fim), &
+          4.0_dp*uround*(6.0_dp + abs(fim) + max(abs(bcm), abs(bc2mk), abs(bc3), abs(bc23k)))*sb, &
+          sb, y1, y2, ier, rel)
     if (failed(ier)) return
     bc2c3r = dugl4(fim + t2, pi, y1)
     ac2c3r = abs(y1)
@@ -618,6 +876,11 @@ contains
     ac2cmr = abs(y2)
     call dsmvkt(ac3, bc3, ac23k, bc23k, a, b)
     call dsmvkt(a, b, ac2c3r, bc2c3r, ac2, bc2)
+    ier = settle(ier, rel, [ac2c3r, ac2cmr, ac2])
+    if (failed(ier)) then
+      ac2c3r = 0.0_dp; bc2c3r = 0.0_dp; ac2cmr = 0.0_dp; bc2cmr = 0.0_dp; ac2 = 0.0_dp
+      bc2 = 0.0_dp
+    end if
   end subroutine duskr5
 
   ! ============================================================================
@@ -633,7 +896,7 @@ contains
   ! FI2, FI3 = DUGL2 directions in (-pi, pi] (DPRM1 gives DUGOL'd ones).
   ! ABAN, ABCN: normal accelerations of B relative to A, C (directions FI2 + pi, FI3 + pi).
   ! ERRATA: E-DKNMA1-1 (header AVAT, BVAT, AVCT, BVCT, VB for ABAT, BBAT, ABCT, BBCT, BB),
-  ! E-DKNMA1-2 (four-argument DUGL1, see dugl1_dx; FI = ATAN((YC-YA)/DX) not needed).
+  ! E-DKNMA1-2 (four-argument DUGL1, see the note before acc_dir; FI = ATAN((YC-YA)/DX) not needed).
   subroutine dknma1(xa, ya, xc, yc, rz2, rz3, va, ala, vc, alc, aa, ba, ac, bc, p, analog, &
                     xb, yb, fi2, fi3, vba, alba, vbc, albc, vb, alb, w2, w3, abcn, aban, &
                     abat, bbat, abct, bbct, ab, bb, e2, e3, ier)
@@ -642,13 +905,14 @@ contains
     real(dp), intent(out) :: xb, yb, fi2, fi3, vba, alba, vbc, albc, vb, alb, w2, w3
     real(dp), intent(out) :: abcn, aban, abat, bbat, abct, bbct, ab, bb, e2, e3
     integer, intent(out) :: ier
-    real(dp) :: rac, fik, ugbac, ugbca, xb1, yb1, y1, y2, prx, pry
+    real(dp) :: rac, fik, ugbac, ugbca, y1, y2, prx, pry, q, dang, da, sb, relv, rela, ev
+    real(dp) :: est
     integer :: st2
     xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; fi3 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp
     vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; w3 = 0.0_dp
     abcn = 0.0_dp; aban = 0.0_dp; abat = 0.0_dp; bbat = 0.0_dp; abct = 0.0_dp; bbct = 0.0_dp
     ab = 0.0_dp; bb = 0.0_dp; e2 = 0.0_dp; e3 = 0.0_dp
-    rac = hypot(xa - xc, ya - yc)
+    rac = hypot(xc - xa, yc - ya)
     if (rac == 0.0_dp) then
       if (rz2 == rz3) then
         ier = st_singular
@@ -657,22 +921,29 @@ contains
       end if
       return
     end if
-    fik = dugl1_dx(yc, ya, xc - xa) - pi/2.0_dp    ! E-DKNMA1-2: direction C->A, less pi/2
-    call tri_angles(rac, rz2, rz3, ugbac, ugbca, ier)
+    call tri_angles(rac, rz2, rz3, ugbac, ugbca, dang, ier)
     if (failed(ier)) return
-    xb1 = book_sign(1.0_dp, p)*rz2*sin(ugbac)
-    yb1 = rac - rz2*cos(ugbac)
-    xb = xb1*cos(fik) - yb1*sin(fik) + xc
-    yb = xb1*sin(fik) + yb1*cos(fik) + yc
-    fi2 = dugl2(xa, ya, xb, yb)
-    fi3 = dugl2(xc, yc, xb, yb)
-    call solve2(cos(fi2 + pi/2.0_dp), -cos(fi3 + pi/2.0_dp), sin(fi2 + pi/2.0_dp), &
-                -sin(fi3 + pi/2.0_dp), vc*cos(alc) - va*cos(ala), vc*sin(alc) - va*sin(ala), &
-                y1, y2, ier)
+    ! The book rotates B's coordinates in the frame of C->A (E-DKNMA1-2) and takes FI2, FI3
+    ! from the rounded absolute coordinates of B; the same directions come here straight
+    ! from the triangle: B = A + RZ2 e(FI_AC + P*angle A), C->B = FI_AC + pi - P*angle C.
+    fik = atan2(yc - ya, xc - xa)                 ! direction A->C
+    q = book_sign(1.0_dp, p)
+    fi2 = wrap_pi(fik + q*ugbac)
+    fi3 = wrap_pi(fik + pi - q*ugbca)
+    xb = xa + rz2*cos(fi2)
+    yb = ya + rz2*sin(fi2)
+    da = dang + 4.0_dp*uround*(2.0_dp + abs(fik))
+    est = da
+    sb = abs(va) + abs(vc)
+    call solve2e(cos(fi2 + pid2), -cos(fi3 + pid2), sin(fi2 + pid2), -sin(fi3 + pid2), &
+                 vc*cos(alc) - va*cos(ala), vc*sin(alc) - va*sin(ala), da, &
+                 4.0_dp*uround*(1.0_dp + max(abs(ala), abs(alc)))*sb, sb, y1, y2, ier, relv)
     if (failed(ier)) then
       xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; fi3 = 0.0_dp
       return
     end if
+    est = max(est, relv)
+    ev = relv*max(hypot(y1, y2), sb/sqrt(2.0_dp))   ! absolute error of (y1, y2)
     alba = dugl3(fi2, pi/2.0_dp, y1)
     albc = dugl3(fi3, pi/2.0_dp, y2)
     vba = abs(y1)
@@ -683,30 +954,43 @@ contains
     alb = dugl5(prx, pry)
     w2 = domega(rz2, vba, alba - fi2)
     w3 = domega(rz3, vbc, albc - fi3)
-    if (analog == 1.0_dp) return
-    aban = w2**2*rz2
-    abcn = w3**2*rz3
-    call solve2(cos(fi2 + pi/2.0_dp), -cos(fi3 + pi/2.0_dp), sin(fi2 + pi/2.0_dp), &
-                -sin(fi3 + pi/2.0_dp), &
-                ac*cos(bc) + abcn*cos(fi3 + pi) - aa*cos(ba) - aban*cos(fi2 + pi), &
-                ac*sin(bc) + abcn*sin(fi3 + pi) - aa*sin(ba) - aban*sin(fi2 + pi), y1, y2, st2)
-    ier = worse(ier, st2)
+    if (analog /= 1.0_dp) then
+      aban = w2**2*rz2
+      abcn = w3**2*rz3
+      sb = abs(aa) + abs(ac) + aban + abcn
+      call solve2e(cos(fi2 + pi/2.0_dp), -cos(fi3 + pi/2.0_dp), sin(fi2 + pi/2.0_dp), &
+                   -sin(fi3 + pi/2.0_dp), &
+                   ac*cos(bc) + abcn*cos(fi3 + pi) - aa*cos(ba) - aban*cos(fi2 + pi), &
+                   ac*sin(bc) + abcn*sin(fi3 + pi) - aa*sin(ba) - aban*sin(fi2 + pi), da, &
+                   4.0_dp*uround*(4.0_dp + max(abs(ba), abs(bc)))*sb &
+                   + (2.0_dp*abs(y1)*ev + ev*ev)/rz2 + (2.0_dp*abs(y2)*ev + ev*ev)/rz3, &
+                   sb, y1, y2, st2, rela)
+      ier = st2
+      if (failed(ier)) then
+        xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; fi3 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp
+        vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; w3 = 0.0_dp
+        aban = 0.0_dp; abcn = 0.0_dp
+        return
+      end if
+      est = max(est, rela)
+      bbat = dugl3(fi2, pi/2.0_dp, y1)
+      bbct = dugl3(fi3, pi/2.0_dp, y2)
+      abat = abs(y1)
+      abct = abs(y2)
+      prx = aa*cos(ba) + aban*cos(fi2 + pi) + abat*cos(bbat)
+      pry = aa*sin(ba) + aban*sin(fi2 + pi) + abat*sin(bbat)
+      ab = hypot(prx, pry)
+      bb = dugl5(prx, pry)
+      e2 = domega(rz2, abat, bbat - fi2)
+      e3 = domega(rz3, abct, bbct - fi3)
+    end if
+    ier = settle(ier, est, [xb, yb, vba, vbc, vb, w2, w3, abcn, aban, abat, abct, ab, e2, e3])
     if (failed(ier)) then
       xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; fi3 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp
       vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; w3 = 0.0_dp
-      aban = 0.0_dp; abcn = 0.0_dp
-      return
+      abcn = 0.0_dp; aban = 0.0_dp; abat = 0.0_dp; bbat = 0.0_dp; abct = 0.0_dp
+      bbct = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp; e2 = 0.0_dp; e3 = 0.0_dp
     end if
-    bbat = dugl3(fi2, pi/2.0_dp, y1)
-    bbct = dugl3(fi3, pi/2.0_dp, y2)
-    abat = abs(y1)
-    abct = abs(y2)
-    prx = aa*cos(ba) + aban*cos(fi2 + pi) + abat*cos(bbat)
-    pry = aa*sin(ba) + aban*sin(fi2 + pi) + abat*sin(bbat)
-    ab = hypot(prx, pry)
-    bb = dugl5(prx, pry)
-    e2 = domega(rz2, abat, bbat - fi2)
-    e3 = domega(rz3, abct, bbct - fi3)
   end subroutine dknma1
 
   ! IV.17 DKNMA2, L2660-2747.  Kind 2 (RRP).
@@ -732,23 +1016,23 @@ contains
     real(dp), intent(out) :: xb, yb, fi2, vba, alba, vbbm, albbm, vb, alb, w2, aban, abk, bbk
     real(dp), intent(out) :: abat, bbat, abbm, bbbm, ab, bb, e2
     integer, intent(out) :: ier
-    real(dp) :: cm, sm, s, xo1, yo1, so, yb1, xb1, c, y1, y2, vbx, vby, abx, aby
+    real(dp) :: cm, sm, dx, dy, so, yb1, xb1, c, y1, y2, vbx, vby, abx, aby, bxa, bya
+    real(dp) :: dc, da, sb, relv, rela, ev, est
     integer :: st2
     xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp; vbbm = 0.0_dp
     albbm = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; aban = 0.0_dp; abk = 0.0_dp
     bbk = 0.0_dp; abat = 0.0_dp; bbat = 0.0_dp; abbm = 0.0_dp; bbbm = 0.0_dp; ab = 0.0_dp
     bb = 0.0_dp; e2 = 0.0_dp
     ier = st_ok
-    if (.not. (rz2 > 0.0_dp)) then
+    if (.not. (rz2 > 0.0_dp .and. rz2 <= huge(rz2))) then
       ier = st_assembly
       return
     end if
     cm = cos(fim)
     sm = sin(fim)
-    s = (xa - xk)*cm + (ya - yk)*sm
-    xo1 = xk + s*cm
-    yo1 = yk + s*sm
-    so = -(xa - xo1)*sm + (ya - yo1)*cm              ! E-DKNMA2-3: signed offset of A
+    dx = xa - xk
+    dy = ya - yk
+    so = -dx*sm + dy*cm                              ! E-DKNMA2-3: signed offset of A
     yb1 = rz3*sin(eta)
     c = (so - yb1)/rz2
     if (abs(c) > 1.0_dp) then
@@ -759,15 +1043,27 @@ contains
       c = sign(1.0_dp, c)
     end if
     xb1 = book_sign(1.0_dp, p)*rz2*sqrt((1.0_dp - c)*(1.0_dp + c))   ! = P*RZ2*SIN(ARCOS(c))
-    xb = xb1*cm - yb1*sm + xo1
-    yb = xb1*sm + yb1*cm + yo1
-    fi2 = dugl2(xa, ya, xb, yb)
-    call solve2(cos(fi2 + pi/2.0_dp), -cm, sin(fi2 + pi/2.0_dp), -sm, &
-                vbm*cos(albm) - va*cos(ala), vbm*sin(albm) - va*sin(ala), y1, y2, ier)
+    ! B - A = XB1*e(FIM) + (YB1 - SO)*e(FIM + pi/2): the book's B = O' + rotated (XB1, YB1),
+    ! taken relative to A so that no digit is lost far from the origin
+    bxa = xb1*cm - (yb1 - so)*sm
+    bya = xb1*sm + (yb1 - so)*cm
+    xb = xa + bxa
+    yb = ya + bya
+    fi2 = dugl2(0.0_dp, 0.0_dp, bxa, bya)
+    dc = 4.0_dp*uround*(abs(so) + abs(yb1) + abs(rz3) + rz2 &
+                        + (1.0_dp + abs(fim) + abs(eta))*(abs(dx) + abs(dy)))/rz2
+    da = angle_sensitivity(c, dc) + 4.0_dp*uround*(2.0_dp + abs(fim) + abs(fi2))
+    est = da
+    sb = abs(va) + abs(vbm)
+    call solve2e(cos(fi2 + pi/2.0_dp), -cm, sin(fi2 + pi/2.0_dp), -sm, &
+                 vbm*cos(albm) - va*cos(ala), vbm*sin(albm) - va*sin(ala), da, &
+                 4.0_dp*uround*(1.0_dp + max(abs(ala), abs(albm)))*sb, sb, y1, y2, ier, relv)
     if (failed(ier)) then
       xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp
       return
     end if
+    est = max(est, relv)
+    ev = relv*max(hypot(y1, y2), sb/sqrt(2.0_dp))
     vba = abs(y1)
     alba = dugl3(fi2, pi/2.0_dp, y1)
     vbbm = abs(y2)
@@ -777,29 +1073,41 @@ contains
     vb = hypot(vbx, vby)
     alb = dugl5(vbx, vby)
     w2 = domega(rz2, vba, alba - fi2)
-    if (analog == 1.0_dp) return
-    aban = w2**2*rz2
-    abk = 2.0_dp*vbbm*abs(wm)
-    bbk = dugl3(albbm, pi/2.0_dp, wm)
-    call solve2(cos(alba), -cos(albbm), sin(alba), -sin(albbm), &
-                abm*cos(bbm) + abk*cos(bbk) - aa*cos(ba) - aban*cos(fi2 + pi), &
-                abm*sin(bbm) + abk*sin(bbk) - aa*sin(ba) - aban*sin(fi2 + pi), y1, y2, st2)
-    ier = worse(ier, st2)
+    if (analog /= 1.0_dp) then
+      aban = w2**2*rz2
+      abk = 2.0_dp*vbbm*abs(wm)
+      bbk = dugl3(albbm, pi/2.0_dp, wm)
+      sb = abs(aa) + abs(abm) + aban + abk
+      call solve2e(cos(alba), -cos(albbm), sin(alba), -sin(albbm), &
+                   abm*cos(bbm) + abk*cos(bbk) - aa*cos(ba) - aban*cos(fi2 + pi), &
+                   abm*sin(bbm) + abk*sin(bbk) - aa*sin(ba) - aban*sin(fi2 + pi), da, &
+                   4.0_dp*uround*(6.0_dp + max(abs(ba), abs(bbm), abs(fim), abs(fi2)))*sb &
+                   + (2.0_dp*abs(y1)*ev + ev*ev)/rz2 + 2.0_dp*abs(wm)*ev, sb, y1, y2, st2, rela)
+      ier = st2
+      if (failed(ier)) then
+        xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp; vbbm = 0.0_dp
+        albbm = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; aban = 0.0_dp; abk = 0.0_dp
+        bbk = 0.0_dp
+        return
+      end if
+      est = max(est, rela)
+      abat = abs(y1)
+      bbat = dugl4(alba, pi, y1)
+      abbm = abs(y2)
+      bbbm = dugl4(albbm, pi, y2)
+      abx = abm*cos(bbm) + abk*cos(bbk) + abbm*cos(bbbm)
+      aby = abm*sin(bbm) + abk*sin(bbk) + abbm*sin(bbbm)
+      ab = hypot(abx, aby)
+      bb = dugl5(abx, aby)
+      e2 = domega(rz2, abat, sin(bbat - fi2))          ! E-DKNMA2-4: book BBAT - FI2
+    end if
+    ier = settle(ier, est, [xb, yb, vba, vbbm, vb, w2, aban, abk, abat, abbm, ab, e2])
     if (failed(ier)) then
       xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp; vbbm = 0.0_dp
       albbm = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; aban = 0.0_dp; abk = 0.0_dp
-      bbk = 0.0_dp
-      return
+      bbk = 0.0_dp; abat = 0.0_dp; bbat = 0.0_dp; abbm = 0.0_dp; bbbm = 0.0_dp; ab = 0.0_dp
+      bb = 0.0_dp; e2 = 0.0_dp
     end if
-    abat = abs(y1)
-    bbat = dugl4(alba, pi, y1)
-    abbm = abs(y2)
-    bbbm = dugl4(albbm, pi, y2)
-    abx = abm*cos(bbm) + abk*cos(bbk) + abbm*cos(bbbm)
-    aby = abm*sin(bbm) + abk*sin(bbk) + abbm*sin(bbbm)
-    ab = hypot(abx, aby)
-    bb = dugl5(abx, aby)
-    e2 = domega(rz2, abat, sin(bbat - fi2))            ! E-DKNMA2-4: book BBAT - FI2
   end subroutine dknma2
 
   ! IV.18 DKNMA3, L2749-2829.  Kind 3 (RPR, slotted lever).
@@ -821,7 +1129,8 @@ contains
     real(dp), intent(out) :: xb, yb, rzbc, fi3, var, alar, vac, alac, w3, va3, ala3, aak, bak
     real(dp), intent(out) :: aar, bar, aact, bact, aa3, ba3, e3, aacn
     integer, intent(out) :: ier
-    real(dp) :: rac, fik, s, ugbac, xb1, yb1, y1, y2, prx, pry, aa3x, aa3y
+    real(dp) :: rac, fik, s, ugbac, angc, q, bxa, bya, y1, y2, prx, pry, aa3x, aa3y
+    real(dp) :: ds, da, sb, relv, rela, ev, ew, est
     integer :: st2
     xb = 0.0_dp; yb = 0.0_dp; rzbc = 0.0_dp; fi3 = 0.0_dp; var = 0.0_dp; alar = 0.0_dp
     vac = 0.0_dp; alac = 0.0_dp; w3 = 0.0_dp; va3 = 0.0_dp; ala3 = 0.0_dp; aak = 0.0_dp
@@ -833,7 +1142,8 @@ contains
       ier = st_singular
       return
     end if
-    fik = dugl1_dx(ya, yc, xa - xc)               ! E-DKNMA1-2: direction A->C
+    fik = dugl1(xa, ya, xc, yc)                   ! E-DKNMA1-2: direction A->C in [0, 2 pi)
+    ! triangle A B C: angle B = ETA, AB = RZ2, AC = RAC; sine law: sin(angle C) = s
     s = rz2/rac*sin(eta)
     if (abs(s) > 1.0_dp) then
       if (abs(s) - 1.0_dp > 8.0_dp*epsilon(1.0_dp)) then
@@ -842,24 +1152,40 @@ contains
       end if
       s = sign(1.0_dp, s)
     end if
-    ugbac = pi - eta - asin(s)
-    xb1 = rz2*cos(ugbac)
-    yb1 = book_sign(1.0_dp, p)*rz2*sin(ugbac)
-    xb = xb1*cos(fik) - yb1*sin(fik) + xa
-    yb = xb1*sin(fik) + yb1*cos(fik) + ya
-    rzbc = hypot(yb - yc, xb - xc)
-    if (rzbc == 0.0_dp) then
-      ier = st_singular                           ! B = C: the axis of link 3 is undefined
-      xb = 0.0_dp; yb = 0.0_dp
-      return
+    angc = asin(s)
+    ugbac = pi - eta - angc
+    ! E-DKNMA3-4: for an obtuse ETA and RZ2 > AC the angles ETA and asin(s) already exceed
+    ! pi: no triangle (the book would put B where angle ABC = pi - ETA).
+    if (ugbac < 0.0_dp) then
+      if (ugbac < -8.0_dp*epsilon(1.0_dp)*(pi + abs(eta))) then
+        ier = st_assembly
+        return
+      end if
+      ugbac = 0.0_dp
     end if
-    fi3 = dugl2(xc, yc, xb, yb)
-    call solve2(cos(fi3), -cos((fik + pi) + pid2), sin(fi3), -sin((fik + pi) + pid2), &
-                vc*cos(alc) - va*cos(ala), vc*sin(alc) - va*sin(ala), y1, y2, ier)
+    q = book_sign(1.0_dp, p)
+    ! B = A + RZ2 e(FIK + P*UGBAC) (the book's XB1, YB1 rotated by FIK), relative to A
+    bxa = rz2*cos(fik + q*ugbac)
+    bya = rz2*sin(fik + q*ugbac)
+    xb = xa + bxa
+    yb = ya + bya
+    rzbc = hypot(bxa + (xa - xc), bya + (ya - yc))
+    ! E-DKNMA3-5: the axis of link 3 from the triangle's angle at C, C->B = C->A - P*angle C
+    ! (the book's DUGL2(XC, YC, XB, YB) loses digits as CB shrinks and fails at B = C)
+    fi3 = wrap_pi(fik + pi - q*angc)
+    ds = 4.0_dp*uround*(abs(s)*(2.0_dp + abs(eta)) + abs(rz2/rac)*abs(eta))
+    da = angle_sensitivity(s, ds) + 4.0_dp*uround*(4.0_dp + abs(fik) + abs(eta))
+    est = da
+    sb = abs(va) + abs(vc)
+    call solve2e(cos(fi3), -cos((fik + pi) + pid2), sin(fi3), -sin((fik + pi) + pid2), &
+                 vc*cos(alc) - va*cos(ala), vc*sin(alc) - va*sin(ala), da, &
+                 4.0_dp*uround*(1.0_dp + max(abs(ala), abs(alc)))*sb, sb, y1, y2, ier, relv)
     if (failed(ier)) then
       xb = 0.0_dp; yb = 0.0_dp; rzbc = 0.0_dp; fi3 = 0.0_dp
       return
     end if
+    est = max(est, relv)
+    ev = relv*max(hypot(y1, y2), sb/sqrt(2.0_dp))
     var = abs(y1)
     alar = dugl4(fi3, pi, y1)
     vac = abs(y2)
@@ -869,29 +1195,43 @@ contains
     pry = vc*sin(alc) + vac*sin(alac)
     va3 = hypot(prx, pry)
     ala3 = dugl5(prx, pry)
-    if (analog == 1.0_dp) return
-    aak = 2.0_dp*var*abs(w3)
-    bak = dugl3(alar, pid2, w3)
-    aacn = w3**2*rac
-    call solve2(cos(alar), -cos((fik + pi) + pid2), sin(alar), -sin((fik + pi) + pid2), &
-                ac*cos(bc) + aacn*cos(fik) - aa*cos(ba) - aak*cos(bak), &
-                ac*sin(bc) + aacn*sin(fik) - aa*sin(ba) - aak*sin(bak), y1, y2, st2)
-    ier = worse(ier, st2)
+    if (analog /= 1.0_dp) then
+      aak = 2.0_dp*var*abs(w3)
+      bak = dugl3(alar, pid2, w3)
+      aacn = w3**2*rac
+      ew = ev/rac                                 ! error of W3
+      sb = abs(aa) + abs(ac) + aacn + aak
+      call solve2e(cos(alar), -cos((fik + pi) + pid2), sin(alar), -sin((fik + pi) + pid2), &
+                   ac*cos(bc) + aacn*cos(fik) - aa*cos(ba) - aak*cos(bak), &
+                   ac*sin(bc) + aacn*sin(fik) - aa*sin(ba) - aak*sin(bak), da, &
+                   4.0_dp*uround*(6.0_dp + max(abs(ba), abs(bc), abs(fik), abs(fi3)))*sb &
+                   + (2.0_dp*abs(w3)*ew + ew*ew)*rac + 2.0_dp*(abs(w3)*ev + var*ew + ev*ew), &
+                   sb, y1, y2, st2, rela)
+      ier = st2
+      if (failed(ier)) then
+        xb = 0.0_dp; yb = 0.0_dp; rzbc = 0.0_dp; fi3 = 0.0_dp; var = 0.0_dp; alar = 0.0_dp
+        vac = 0.0_dp; alac = 0.0_dp; w3 = 0.0_dp; va3 = 0.0_dp; ala3 = 0.0_dp; aak = 0.0_dp
+        bak = 0.0_dp; aacn = 0.0_dp
+        return
+      end if
+      est = max(est, rela)
+      aar = abs(y1)
+      bar = dugl4(alar, pi, y1)                     ! E-DKNMA3-3: book DUGL4(ALAR, PID2, Y(1))
+      aact = abs(y2)
+      bact = dugl3(fik + pi, pid2, y2)
+      aa3x = aa*cos(ba) + aak*cos(bak) + aar*cos(bar)
+      aa3y = aa*sin(ba) + aak*sin(bak) + aar*sin(bar)
+      aa3 = hypot(aa3x, aa3y)
+      ba3 = dugl5(aa3x, aa3y)
+      e3 = domega(rac, aact, bact - (fik + pi))
+    end if
+    ier = settle(ier, est, [xb, yb, rzbc, var, vac, w3, va3, aak, aar, aact, aa3, e3, aacn])
     if (failed(ier)) then
       xb = 0.0_dp; yb = 0.0_dp; rzbc = 0.0_dp; fi3 = 0.0_dp; var = 0.0_dp; alar = 0.0_dp
       vac = 0.0_dp; alac = 0.0_dp; w3 = 0.0_dp; va3 = 0.0_dp; ala3 = 0.0_dp; aak = 0.0_dp
-      bak = 0.0_dp; aacn = 0.0_dp
-      return
+      bak = 0.0_dp; aar = 0.0_dp; bar = 0.0_dp; aact = 0.0_dp; bact = 0.0_dp; aa3 = 0.0_dp
+      ba3 = 0.0_dp; e3 = 0.0_dp; aacn = 0.0_dp
     end if
-    aar = abs(y1)
-    bar = dugl4(alar, pi, y1)                     ! E-DKNMA3-3: book DUGL4(ALAR, PID2, Y(1))
-    aact = abs(y2)
-    bact = dugl3(fik + pi, pid2, y2)
-    aa3x = aa*cos(ba) + aak*cos(bak) + aar*cos(bar)
-    aa3y = aa*sin(ba) + aak*sin(bak) + aar*sin(bar)
-    aa3 = hypot(aa3x, aa3y)
-    ba3 = dugl5(aa3x, aa3y)
-    e3 = domega(rac, aact, bact - (fik + pi))
   end subroutine dknma3
 
   ! IV.19 DKNMA4, L2831-2929.  Kind 4 (PRP).
@@ -915,31 +1255,48 @@ contains
     real(dp), intent(out) :: ab2r, bb2r, ab3r, bb3r, ab, bb
     integer, intent(out) :: ier
     real(dp) :: sm, cm, sn, cn, rab, cb, fi2, fi3, vbm, albm, vbn, albn, y1, y2, vbx, vby
-    real(dp) :: abm, abn, bbm, bbn, abx, aby
+    real(dp) :: abm, abn, bbm, bbn, abx, aby, dxc, dyc, bxa, bya, d2, d3, sb, da, relp, relv
+    real(dp) :: rela, eb, ev, est, hm, hn
     integer :: st2
     xb = 0.0_dp; yb = 0.0_dp; vb2r = 0.0_dp; alb2r = 0.0_dp; vb3r = 0.0_dp; alb3r = 0.0_dp
     vb = 0.0_dp; alb = 0.0_dp; ab2k = 0.0_dp; bb2k = 0.0_dp; ab3k = 0.0_dp; bb3k = 0.0_dp
     ab2r = 0.0_dp; bb2r = 0.0_dp; ab3r = 0.0_dp; bb3r = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp
     sm = sin(fim); cm = cos(fim)
     sn = sin(fin); cn = cos(fin)
-    call solve2(cm, -sm, cn, -sn, cm*ya - sm*xa + rz2*sin(eta2), cn*yc - sn*xc + rz3*sin(eta3), &
-                yb, xb, ier)
+    ! the printed rows relative to A (unknowns YB - YA, XB - XA), as in DPRM4
+    dxc = xc - xa
+    dyc = yc - ya
+    d2 = rz2*sin(eta2)
+    d3 = rz3*sin(eta3)
+    sb = abs(d2) + abs(dxc) + abs(dyc) + abs(d3)
+    da = 4.0_dp*uround*(1.0_dp + max(abs(fim), abs(fin)))
+    call solve2e(cm, -sm, cn, -sn, d2, cn*dyc - sn*dxc + d3, da, &
+                 4.0_dp*uround*(2.0_dp + abs(fin) + abs(eta2) + abs(eta3))*sb, sb, bya, bxa, &
+                 ier, relp)
     if (failed(ier)) return
-    rab = hypot(xb - xa, yb - ya)
-    cb = hypot(xb - xc, yb - yc)
-    fi2 = dugl2(xa, ya, xb, yb)
-    fi3 = dugl2(xc, yc, xb, yb)
+    est = relp
+    eb = relp*max(hypot(bxa, bya), sb/2.0_dp)       ! absolute error of B
+    xb = xa + bxa
+    yb = ya + bya
+    rab = hypot(bxa, bya)
+    cb = hypot(bxa - dxc, bya - dyc)
+    fi2 = dugl2(0.0_dp, 0.0_dp, bxa, bya)
+    fi3 = dugl2(0.0_dp, 0.0_dp, bxa - dxc, bya - dyc)
     vbm = abs(wm)*rab
     albm = dugl3(fi2, pid2, wm)
     vbn = abs(wn)*cb
     albn = dugl3(fi3, pid2, wn)
-    call solve2(cm, -cn, sm, -sn, vbn*cos(albn) - vbm*cos(albm), vbn*sin(albn) - vbm*sin(albm), &
-                y1, y2, st2)
-    ier = worse(ier, st2)
+    sb = vbm + vbn
+    call solve2e(cm, -cn, sm, -sn, vbn*cos(albn) - vbm*cos(albm), vbn*sin(albn) - vbm*sin(albm), &
+                 da, 4.0_dp*uround*(4.0_dp + max(abs(fi2), abs(fi3)))*sb &
+                 + (abs(wm) + abs(wn))*eb, sb, y1, y2, st2, relv)
+    ier = st2
     if (failed(ier)) then
       xb = 0.0_dp; yb = 0.0_dp
       return
     end if
+    est = max(est, relv)
+    ev = relv*max(hypot(y1, y2), sb/2.0_dp)
     vb2r = abs(y1)
     alb2r = dugl4(fim, pi, y1)
     vb3r = abs(y2)
@@ -948,32 +1305,45 @@ contains
     vby = vbm*sin(albm) + vb2r*sin(alb2r)
     vb = hypot(vbx, vby)
     alb = dugl5(vbx, vby)
-    if (analog == 1.0_dp) return
-    abm = rab*sqrt(wm**4 + em**2)
-    abn = cb*sqrt(wn**4 + en**2)
-    bbn = acc_dir(fi3, wn, en)                    ! E-DKNMA4-3: book BBN = 0 if WN = 0
-    bbm = acc_dir(fi2, wm, em)                    ! E-DKNMA4-3: book BBM = 0 if WM = 0
-    ab2k = 2.0_dp*vb2r*abs(wm)
-    ab3k = 2.0_dp*vb3r*abs(wn)
-    bb2k = dugl3(alb2r, pid2, wm)
-    bb3k = dugl3(alb3r, pid2, wn)
-    call solve2(cos(alb2r), -cos(alb3r), sin(alb2r), -sin(alb3r), &
-                abn*cos(bbn) + ab3k*cos(bb3k) - abm*cos(bbm) - ab2k*cos(bb2k), &
-                abn*sin(bbn) + ab3k*sin(bb3k) - abm*sin(bbm) - ab2k*sin(bb2k), y1, y2, st2)
-    ier = worse(ier, st2)
+    if (analog /= 1.0_dp) then
+      hm = hypot(wm*wm, em)                       ! = SQRT(WM**4 + EM**2), no overflow
+      hn = hypot(wn*wn, en)
+      abm = rab*hm
+      abn = cb*hn
+      bbn = acc_dir(fi3, wn, en)                    ! E-DKNMA4-3: book BBN = 0 if WN = 0
+      bbm = acc_dir(fi2, wm, em)                    ! E-DKNMA4-3: book BBM = 0 if WM = 0
+      ab2k = 2.0_dp*vb2r*abs(wm)
+      ab3k = 2.0_dp*vb3r*abs(wn)
+      bb2k = dugl3(alb2r, pid2, wm)
+      bb3k = dugl3(alb3r, pid2, wn)
+      sb = abm + abn + ab2k + ab3k
+      call solve2e(cos(alb2r), -cos(alb3r), sin(alb2r), -sin(alb3r), &
+                   abn*cos(bbn) + ab3k*cos(bb3k) - abm*cos(bbm) - ab2k*cos(bb2k), &
+                   abn*sin(bbn) + ab3k*sin(bb3k) - abm*sin(bbm) - ab2k*sin(bb2k), da, &
+                   4.0_dp*uround*(8.0_dp + max(abs(fi2), abs(fi3), abs(fim), abs(fin)))*sb &
+                   + (hm + hn)*eb + 2.0_dp*(abs(wm) + abs(wn))*ev, sb, y1, y2, st2, rela)
+      ier = st2
+      if (failed(ier)) then
+        xb = 0.0_dp; yb = 0.0_dp; vb2r = 0.0_dp; alb2r = 0.0_dp; vb3r = 0.0_dp; alb3r = 0.0_dp
+        vb = 0.0_dp; alb = 0.0_dp; ab2k = 0.0_dp; bb2k = 0.0_dp; ab3k = 0.0_dp; bb3k = 0.0_dp
+        return
+      end if
+      est = max(est, rela)
+      ab2r = abs(y1)
+      bb2r = dugl4(alb2r, pi, y1)
+      ab3r = abs(y2)
+      bb3r = dugl4(alb3r, pi, y2)
+      abx = abm*cos(bbm) + ab2k*cos(bb2k) + ab2r*cos(bb2r)
+      aby = abm*sin(bbm) + ab2k*sin(bb2k) + ab2r*sin(bb2r)
+      ab = hypot(abx, aby)
+      bb = dugl5(abx, aby)                          ! E-DKNMA4-2: book DUGL5(VBX, VBY)
+    end if
+    ier = settle(ier, est, [xb, yb, vb2r, vb3r, vb, ab2k, ab3k, ab2r, ab3r, ab])
     if (failed(ier)) then
       xb = 0.0_dp; yb = 0.0_dp; vb2r = 0.0_dp; alb2r = 0.0_dp; vb3r = 0.0_dp; alb3r = 0.0_dp
       vb = 0.0_dp; alb = 0.0_dp; ab2k = 0.0_dp; bb2k = 0.0_dp; ab3k = 0.0_dp; bb3k = 0.0_dp
-      return
+      ab2r = 0.0_dp; bb2r = 0.0_dp; ab3r = 0.0_dp; bb3r = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp
     end if
-    ab2r = abs(y1)
-    bb2r = dugl4(alb2r, pi, y1)
-    ab3r = abs(y2)
-    bb3r = dugl4(alb3r, pi, y2)
-    abx = abm*cos(bbm) + ab2k*cos(bb2k) + ab2r*cos(bb2r)
-    aby = abm*sin(bbm) + ab2k*sin(bb2k) + ab2r*sin(bb2r)
-    ab = hypot(abx, aby)
-    bb = dugl5(abx, aby)                          ! E-DKNMA4-2: book DUGL5(VBX, VBY)
   end subroutine dknma4
 
   ! IV.20 DKNMA5, L2931-3002.  Kind 5 (RPP).  No position part (there is no DPRM5 in the
@@ -993,7 +1363,7 @@ contains
     real(dp), intent(out) :: vc2c3, alc2c3, vc2cm, alc2cm, vc, alc, ac2c3k, bc2c3k, ac2cmk
     real(dp), intent(out) :: bc2cmk, ac2c3r, bc2c3r, ac2cmr, bc2cmr, ac, bc
     integer, intent(out) :: ier
-    real(dp) :: rc, vcm, firc, alcm, y1, y2, acm, bcm, a, b
+    real(dp) :: rc, vcm, firc, alcm, y1, y2, acm, bcm, a, b, sb, relv, rela, ev, est, sv1, sv2
     integer :: st2
     vc2c3 = 0.0_dp; alc2c3 = 0.0_dp; vc2cm = 0.0_dp; alc2cm = 0.0_dp; vc = 0.0_dp; alc = 0.0_dp
     ac2c3k = 0.0_dp; bc2c3k = 0.0_dp; ac2cmk = 0.0_dp; bc2cmk = 0.0_dp; ac2c3r = 0.0_dp
@@ -1002,37 +1372,59 @@ contains
     vcm = abs(wm)*rc
     firc = dugl2(xr, yr, xc, yc)                  ! E-DKNMA5-2: book DUGL2(RC, PID2, WM)
     alcm = dugl3(firc, pid2, wm)
-    call solve2(cos(fim + eta2), -cos(fim), sin(fim + eta2), -sin(fim), &
-                vcm*cos(alcm) - vc3*cos(alc3), vcm*sin(alcm) - vc3*sin(alc3), y1, y2, ier)
+    sb = vcm + abs(vc3)
+    ! y1*e(FIM + ETA2) - y2*e(FIM) = v_CM - v_C3, solved in the guide's frame (E-DKNMA5-5:
+    ! the book's matrix holds COS(FIM + ETA2), which rounds a small ETA2 against FIM)
+    call solve_kind5(eta2, vcm*cos(alcm - fim) - vc3*cos(alc3 - fim), &
+                     vcm*sin(alcm - fim) - vc3*sin(alc3 - fim), &
+                     4.0_dp*uround*(2.0_dp + abs(fim) + max(abs(alcm), abs(alc3)))*sb, sb, &
+                     y1, y2, ier, relv)
     if (failed(ier)) return
+    est = relv
+    ev = relv*max(hypot(y1, y2), sb)
+    sv1 = book_sign(1.0_dp, y1)                   ! ALC2C3 = FIM + ETA2 (+1) or that - pi (-1)
+    sv2 = book_sign(1.0_dp, y2)                   ! ALC2CM = FIM (+1) or FIM - pi (-1)
     vc2c3 = abs(y1)
     alc2c3 = dugl4(fim + eta2, pi, y1)
     vc2cm = abs(y2)
     alc2cm = dugl4(fim, pi, y2)
     call dsmvkt(vcm, alcm, vc2cm, alc2cm, vc, alc)
-    if (analog == 1.0_dp) return
-    acm = rc*sqrt(wm**4 + em**2)
-    bcm = acc_dir(firc, wm, em)                   ! E-DKNMA5-4
-    ac2c3k = 2.0_dp*vc2c3*abs(wm)
-    bc2c3k = dugl3(alc2c3, pid2, wm)
-    bc2cmk = dugl3(alc2cm, pid2, wm)
-    ac2cmk = 2.0_dp*vc2cm*abs(wm)
-    call solve2(cos(alc2c3), -cos(alc2cm), sin(alc2c3), -sin(alc2cm), &
-                acm*cos(bcm) + ac2cmk*cos(bc2cmk) - ac3*cos(bc3) - ac2c3k*cos(bc2c3k), &
-                acm*sin(bcm) + ac2cmk*sin(bc2cmk) - ac3*sin(bc3) - ac2c3k*sin(bc2c3k), &
-                y1, y2, st2)
-    ier = worse(ier, st2)
-    if (failed(ier)) then
-      vc2c3 = 0.0_dp; alc2c3 = 0.0_dp; vc2cm = 0.0_dp; alc2cm = 0.0_dp; vc = 0.0_dp
-      alc = 0.0_dp; ac2c3k = 0.0_dp; bc2c3k = 0.0_dp; ac2cmk = 0.0_dp; bc2cmk = 0.0_dp
-      return
+    if (analog /= 1.0_dp) then
+      acm = rc*hypot(wm*wm, em)                   ! = RC*SQRT(WM**4 + EM**2), no overflow
+      bcm = acc_dir(firc, wm, em)                   ! E-DKNMA5-4
+      ac2c3k = 2.0_dp*vc2c3*abs(wm)
+      bc2c3k = dugl3(alc2c3, pid2, wm)
+      bc2cmk = dugl3(alc2cm, pid2, wm)
+      ac2cmk = 2.0_dp*vc2cm*abs(wm)
+      sb = acm + ac2cmk + abs(ac3) + ac2c3k
+      call solve_kind5(eta2, &
+          acm*cos(bcm - fim) + ac2cmk*cos(bc2cmk - fim) - ac3*cos(bc3 - fim) &
+          - ac2c3k*cos(bc2c3k - fim), &
+          acm*sin(bcm - fim) + ac2cmk*sin(bc2cmk - fim) - ac3*sin(bc3 - fim) &
+          - ac2c3k*sin(bc2c3k - fim), &
+          4.0_dp*uround*(6.0_dp + abs(fim) + max(abs(bcm), abs(bc2cmk), abs(bc3), abs(bc2c3k)))*sb &
+          + 4.0_dp*abs(wm)*ev, sb, y1, y2, st2, rela)
+      ier = st2
+      if (failed(ier)) then
+        vc2c3 = 0.0_dp; alc2c3 = 0.0_dp; vc2cm = 0.0_dp; alc2cm = 0.0_dp; vc = 0.0_dp
+        alc = 0.0_dp; ac2c3k = 0.0_dp; bc2c3k = 0.0_dp; ac2cmk = 0.0_dp; bc2cmk = 0.0_dp
+        return
+      end if
+      est = max(est, rela)
+      ! the book's unknowns are along ALC2C3 and ALC2CM, these along FIM + ETA2 and FIM
+      ac2c3r = abs(y1)
+      bc2c3r = dugl4(alc2c3, pi, sv1*y1)
+      ac2cmr = abs(y2)
+      bc2cmr = dugl4(alc2cm, pi, sv2*y2)
+      call dsmvkt(acm, bcm, ac2cmk, bc2cmk, a, b)
+      call dsmvkt(a, b, ac2cmr, bc2cmr, ac, bc)
     end if
-    ac2c3r = abs(y1)
-    bc2c3r = dugl4(alc2c3, pi, y1)
-    ac2cmr = abs(y2)
-    bc2cmr = dugl4(alc2cm, pi, y2)
-    call dsmvkt(acm, bcm, ac2cmk, bc2cmk, a, b)
-    call dsmvkt(a, b, ac2cmr, bc2cmr, ac, bc)
+    ier = settle(ier, est, [vc2c3, vc2cm, vc, ac2c3k, ac2cmk, ac2c3r, ac2cmr, ac])
+    if (failed(ier)) then
+      vc2c3 = 0.0_dp; alc2c3 = 0.0_dp; vc2cm = 0.0_dp; alc2cm = 0.0_dp; vc = 0.0_dp; alc = 0.0_dp
+      ac2c3k = 0.0_dp; bc2c3k = 0.0_dp; ac2cmk = 0.0_dp; bc2cmk = 0.0_dp; ac2c3r = 0.0_dp
+      bc2c3r = 0.0_dp; ac2cmr = 0.0_dp; bc2cmr = 0.0_dp; ac = 0.0_dp; bc = 0.0_dp
+    end if
   end subroutine dknma5
 
 end module kinematics

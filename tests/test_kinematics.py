@@ -453,10 +453,14 @@ def test_dknma3_equals_chain(seed, p, analog):
     a, c, rz2, t0, _, _ = kind3(seed)
     (xa, ya), (xc, yc) = a.pos(0.0)[:, 0], c.pos(0.0)[:, 0]
     (va, ala), (vc, alc), (aa, ba), (ac, bc) = a.vel(0), c.vel(0), a.acc(0), c.acc(0)
-    k = K.DKNMA3(xa, ya, xc, yc, rz2, t0, va, ala, vc, alc, aa, ba, ac, bc, p, analog)
     r = K.DPRM3(xa, ya, xc, yc, rz2, t0, -p)          # DKNMA3's P is DPRM3's -P
-    # DKNMA3 takes the axis from C -> B: ill-conditioned when B nears C (the book's way)
-    assume(k.RZBC > 0.1 * r.RZAC)
+    if t0 > math.pi / 2 and rz2 > r.RZAC:
+        # DPRM3 only needs A's distance from the axis; DKNMA3's angle ABC = ETA cannot be
+        # obtuse when AB > AC (E-DKNMA3-4)
+        with pytest.raises(sarkp.AssemblyError):
+            K.DKNMA3(xa, ya, xc, yc, rz2, t0, va, ala, vc, alc, aa, ba, ac, bc, p, analog)
+        return
+    k = K.DKNMA3(xa, ya, xc, yc, rz2, t0, va, ala, vc, alc, aa, ba, ac, bc, p, analog)
     # the same axis; DKNMA3's FI3 is the ray C -> B, which may point the other way
     assert close((k.FI3 - r.FI3 + math.pi / 2) % math.pi - math.pi / 2, 0, 1, 1e-13)
     assert abs(math.hypot(k.XB - xa, k.YB - ya) - rz2) <= 1e-12 * max(rz2, 1.0)
