@@ -206,3 +206,263 @@ def test_kind5_small_slot_angle_keeps_its_digits():
     s2, s3 = solve(e(fim), e(fim + t2), mpmath.matrix([mpf(0.7), mpf(0.9)]))
     assert r.S2 == pytest.approx(float(s2), rel=4e-16 * 8)
     assert r.S3 == pytest.approx(float(s3), rel=4e-16 * 8)
+
+
+# ------------------------------------------------------- the dead-centre policy
+# Each routine estimates the relative error of its results (module docstring of
+# sarkp.kinematics).  Sequences approach each kind's dead centre from 1e-1 to 1e-15: what
+# is returned must be within the bound the status vouches for (1e-8 when silent, 10**-d
+# for 100 + d), and nothing without a correct digit may come back (SingularError instead).
+
+DELTAS = [10.0**-k for k in range(1, 16)]
+
+
+def ref_kind2(xa, ya, xk, yk, fim, rz2, rz3, eta, va, ala, aa, ba, p):
+    """RRP, fixed guide through K at FIM; B offset RZ3 sin(ETA) on the guide's left."""
+    A, K = mpmath.matrix([mpf(xa), mpf(ya)]), mpmath.matrix([mpf(xk), mpf(yk)])
+    em, n = e(mpf(fim)), kx(e(mpf(fim)))
+    so = (A - K).T * n
+    so = so[0]
+    c = (so - mpf(rz3) * mpmath.sin(mpf(eta))) / mpf(rz2)
+    xb1 = p * mpf(rz2) * mpmath.sqrt(1 - c**2)
+    r = xb1 * em - mpf(rz2) * c * n                         # B - A
+    w2, s1 = solve(kx(r), -em, -vec(va, ala))
+    e2, s2 = solve(kx(r), -em, -vec(aa, ba) + w2**2 * r)
+    return dict(fi2=mpmath.atan2(r[1], r[0]), w2=w2, s1=s1, e2=e2, s2=s2)
+
+
+def ref_kind3(xa, ya, xc, yc, rz2, eta, va, ala, aa, ba, p):
+    """RPR, C fixed; link 3's axis leaves C at FI3, A slides along it at offset."""
+    A, C = mpmath.matrix([mpf(xa), mpf(ya)]), mpmath.matrix([mpf(xc), mpf(yc)])
+    d = mpmath.norm(A - C)
+    fik = mpmath.atan2(C[1] - A[1], C[0] - A[0])
+    angc = mpmath.asin(mpf(rz2) * mpmath.sin(mpf(eta)) / d)
+    fi3 = fik + mpmath.pi - p * angc
+    ax, r = e(fi3), A - C
+    w3, s1 = solve(kx(r), ax, vec(va, ala))
+    e3, s2 = solve(kx(r), ax, vec(aa, ba) + w3**2 * r - 2 * w3 * s1 * kx(ax))
+    return dict(fi3=fi3, w3=w3, s1=s1, e3=e3, s2=s2, rac=d)
+
+
+def ref_kind4(fim, xa, ya, fin, xc, yc, rz2, eta2, rz3, eta3, wm, wn, em_, en):
+    """PRP, guides turning about A and C."""
+    A, C = mpmath.matrix([mpf(xa), mpf(ya)]), mpmath.matrix([mpf(xc), mpf(yc)])
+    um, un = e(mpf(fim)), e(mpf(fin))
+    nm, nn = kx(um), kx(un)
+    # n.(B - A) = RZ2 sin(ETA2), n.(B - C) = RZ3 sin(ETA3)
+    m = mpmath.matrix([[nm[0], nm[1]], [nn[0], nn[1]]])
+    B = mpmath.lu_solve(m, mpmath.matrix([(nm.T * A)[0] + mpf(rz2) * mpmath.sin(mpf(eta2)),
+                                          (nn.T * C)[0] + mpf(rz3) * mpmath.sin(mpf(eta3))]))
+    wm, wn, em_, en = mpf(wm), mpf(wn), mpf(em_), mpf(en)
+    rm, rn = B - A, B - C
+    s2, s3 = solve(um, -un, wn * kx(rn) - wm * kx(rm))
+    a2, a3 = solve(um, -un, en * kx(rn) - wn**2 * rn + 2 * wn * s3 * kx(un)
+                   - em_ * kx(rm) + wm**2 * rm - 2 * wm * s2 * kx(um))
+    return dict(B=B, s2=s2, s3=s3, a2=a2, a3=a3)
+
+
+def ref_kind5(fim, xc, yc, eta2, xr, yr, wm, em_, vc3, alc3, ac3, bc3):
+    """RPP: y1 along the slot FIM + ETA2 (C2 relative to C3), y2 along the guide."""
+    C, R = mpmath.matrix([mpf(xc), mpf(yc)]), mpmath.matrix([mpf(xr), mpf(yr)])
+    us, um = e(mpf(fim) + mpf(eta2)), e(mpf(fim))
+    wm, em_ = mpf(wm), mpf(em_)
+    r = C - R
+    y1, y2 = solve(us, -um, wm * kx(r) - vec(vc3, alc3))
+    z1, z2 = solve(us, -um, em_ * kx(r) - wm**2 * r + 2 * wm * y2 * kx(um)
+                   - vec(ac3, bc3) - 2 * wm * y1 * kx(us))
+    return dict(y1=y1, y2=y2, z1=z1, z2=z2)
+
+
+def signed(mod, ang, ref_ang):
+    """A modulus along ref_ang or against it (the book's DUGL4 directions), signed."""
+    return mod if math.cos(ang - ref_ang) > 0 else -mod
+
+
+def run(name, args):
+    """(outputs, status) of the Fortran routine, or None where it refused (singular)."""
+    out, ier = raw(name, *args)
+    if ier == 2:
+        return None, ier
+    assert ier == 0 or 101 <= ier <= 107, (name, ier)
+    return out, ier
+
+
+def check_sequence(name, make, errors):
+    """make(delta) -> args; errors(out, args) -> list of true relative errors."""
+    returned = 0
+    for delta in DELTAS:
+        args = make(delta)
+        out, ier = run(name, args)
+        if out is None:
+            continue
+        returned += 1
+        for err in errors(out, args):
+            assert err <= bound(ier), (name, delta, ier, err)
+    assert returned >= 1
+
+
+def test_dskor1_dead_centre_sequence():
+    # FI3 = FI2 + pi - delta: the links stretch out
+    def make(d):
+        return [1.0, 0.3, 1.5, 0.3 + math.pi - d, 1.0, 0.0, 0.5, 2.0, 1.0]
+
+    def errors(out, a):
+        rz2, fi2, rz3, fi3 = a[:4]
+        w2, w3 = solve(kx(e(mpf(fi2))) * mpf(rz2), -kx(e(mpf(fi3))) * mpf(rz3),
+                       vec(a[6], a[7]) - vec(a[4], a[5]))
+        got = [out[6] * rz2, out[7] * rz3]
+        return [rel_err(got, [w2 * mpf(rz2), w3 * mpf(rz3)], (a[4] + a[6]) / math.sqrt(2))]
+    check_sequence("DSKOR1", make, errors)
+    with pytest.raises(sarkp.SingularError):            # the issue's case: W2 = 2.6e15 before
+        sarkp.DSKOR1(1, 0.3, 1, 0.3 + math.pi, 1, 0, 0, 0)
+
+
+@pytest.mark.parametrize("p", [-1, 1])
+def test_dknma1_dead_centre_sequence(p):
+    # AC = (RZ2 + RZ3)(1 - delta): the group stretches out
+    def make(d):
+        return [0.1, 0.2, 0.1 + 2.5 * (1 - d) * math.cos(0.4), 0.2 + 2.5 * (1 - d) * math.sin(0.4),
+                1.0, 1.5, 1.0, 0.7, 0.5, 2.0, 2.0, 1.0, 0.7, -1.0, p, 0.0]
+
+    def errors(out, a):
+        ref = ref_kind1(*a[:15])
+        va, vc, aa, ac = a[6], a[8], a[10], a[12]
+        w2, w3, e2, e3 = out[10], out[11], out[20], out[21]
+        rv = rel_err([w2 * 1.0, w3 * 1.5], [ref["w2"], ref["w3"] * mpf(1.5)],
+                     (va + vc) / math.sqrt(2))
+        sa = (aa + ac + float(ref["w2"]) ** 2 + float(ref["w3"]) ** 2 * 1.5) / math.sqrt(2)
+        ra = rel_err([e2 * 1.0, e3 * 1.5], [ref["e2"], ref["e3"] * mpf(1.5)], sa)
+        return [angle_err(out[2], ref["fi2"]), angle_err(out[3], ref["fi3"]), rv, ra]
+    check_sequence("DKNMA1", make, errors)
+
+
+@pytest.mark.parametrize("p", [-1, 1])
+def test_dknma2_dead_centre_sequence(p):
+    # A's offset from the guide minus B's = RZ2 (1 - delta): AB nearly perpendicular
+    def make(d):
+        fim = 0.3
+        off = 0.8 * (1 - d) + 0.2 * math.sin(0.5)
+        return [-off * math.sin(fim), off * math.cos(fim), 0.0, 0.0, fim, 0.8, 0.2, 0.5,
+                1.0, 0.4, 0.0, 0.0, 0.0, 1.5, 2.0, 0.0, 0.0, p, 0.0]
+
+    def errors(out, a):
+        ref = ref_kind2(*a[:8], a[8], a[9], a[13], a[14], p)
+        rz2 = a[5]
+        fim = a[4]
+        rv = rel_err([out[9] * rz2, signed(out[5], out[6], fim)],
+                     [ref["w2"] * mpf(rz2), ref["s1"]], a[8] / math.sqrt(2))
+        sa = (a[13] + float(ref["w2"]) ** 2 * rz2) / math.sqrt(2)
+        ra = rel_err([out[19] * rz2, signed(out[15], out[16], fim)],
+                     [ref["e2"] * mpf(rz2), ref["s2"]], sa)
+        return [angle_err(out[2], ref["fi2"]), rv, ra]
+    check_sequence("DKNMA2", make, errors)
+
+
+@pytest.mark.parametrize("p", [-1, 1])
+def test_dknma3_dead_centre_sequence(p):
+    # ETA = pi/2, RZ2 = AC (1 - delta): the axis nearly perpendicular to CA
+    def make(d):
+        return [0.1, 0.2, 0.1 + 1.2 * math.cos(0.4), 0.2 + 1.2 * math.sin(0.4), 1.2 * (1 - d),
+                math.pi / 2, 1.0, 0.7, 0.0, 0.0, 2.0, 1.0, 0.0, 0.0, p, 0.0]
+
+    def errors(out, a):
+        ref = ref_kind3(*a[:8], a[10], a[11], p)
+        rac = float(ref["rac"])
+        # VAR, AAR: A3 relative to A, i.e. minus A's sliding along the axis
+        rv = rel_err([out[8] * rac, -signed(out[4], out[5], out[3])],
+                     [ref["w3"] * ref["rac"], ref["s1"]], a[6] / math.sqrt(2))
+        sa = (a[10] + float(ref["w3"]) ** 2 * rac + out[11]) / math.sqrt(2)
+        ra = rel_err([out[19] * rac, -signed(out[13], out[14], out[3])],
+                     [ref["e3"] * ref["rac"], ref["s2"]], sa)
+        return [angle_err(out[3], ref["fi3"]), rv, ra]
+    check_sequence("DKNMA3", make, errors)
+
+
+def test_dknma4_dead_centre_sequence():
+    # FIN = FIM + delta: the guides nearly parallel
+    def make(d):
+        return [0.3, 0.1, 0.2, 0.3 + d, 1.4, 0.6, 0.2, 0.5, 0.3, -0.4, 0.8, -0.6, 1.5, 0.4, 0.0]
+
+    def errors(out, a):
+        ref = ref_kind4(*a[:14])
+        B = [float(ref["B"][0]), float(ref["B"][1])]
+        size = math.hypot(B[0] - a[1], B[1] - a[2])
+        rp = rel_err([out[0] - a[1], out[1] - a[2]], [ref["B"][0] - mpf(a[1]),
+                                                      ref["B"][1] - mpf(a[2])], 0.0)
+        sv = abs(a[10]) * size + abs(a[11]) * math.hypot(B[0] - a[4], B[1] - a[5])
+        rv = rel_err([signed(out[2], out[3], a[0]), signed(out[4], out[5], a[3])],
+                     [ref["s2"], ref["s3"]], sv / math.sqrt(2))
+        sa = (sv * (abs(a[10]) + abs(a[11])) + 2 * (abs(a[10]) * out[2] + abs(a[11]) * out[4])
+              ) / math.sqrt(2)
+        ra = rel_err([signed(out[12], out[13], a[0]), signed(out[14], out[15], a[3])],
+                     [ref["a2"], ref["a3"]], sa)
+        return [rp, rv, ra]
+    check_sequence("DKNMA4", make, errors)
+
+
+def test_dknma5_small_slot_angle_sequence():
+    # ETA2 = delta: the slot nearly parallel to the guide (in the guide's frame the system
+    # stays well conditioned relative to its growing answer)
+    def make(d):
+        return [0.0, 0.0, 0.3, 1.4, 0.6, 0.5, d, 0.0, -0.2, 0.1, 0.8, -0.6, 1.0, 0.7, 2.0, 1.0,
+                0.0]
+
+    def errors(out, a):
+        ref = ref_kind5(a[2], a[3], a[4], a[6], a[8], a[9], a[10], a[11], a[12], a[13],
+                        a[14], a[15])
+        fim, slot = a[2], a[2] + a[6]
+        rv = rel_err([signed(out[0], out[1], slot), signed(out[2], out[3], fim)],
+                     [ref["y1"], ref["y2"]], 0.0)
+        ra = rel_err([signed(out[10], out[11], slot), signed(out[12], out[13], fim)],
+                     [ref["z1"], ref["z2"]], 0.0)
+        return [rv, ra]
+    check_sequence("DKNMA5", make, errors)
+
+
+def test_exactly_stretched_rrr_is_singular_on_both_branches():
+    # before: accelerations of 1e15 for P = +1, SingularError for the mirror image
+    for p in (-1, 1):
+        with pytest.raises(sarkp.SingularError):
+            sarkp.DKNMA1(0, 0, 3, 0, 1, 2, 1, math.pi / 2, 0, 0, 0, 0, 0, 0, p, 0)
+
+
+@pytest.mark.parametrize("fim", [0.1, 0.3, 0.7, 1.0, 2.0, 2.5, -1.2])
+def test_parallel_guides_written_with_pi_are_singular_whatever_fim(fim):
+    with pytest.raises(sarkp.SingularError):
+        sarkp.DPRM4(0, 0, 0, 0, fim, 0, 0, 1, 1, fim + math.pi, 0.1, 0.5, 0.2, 0.3)
+
+
+def test_position_at_a_flat_triangle_states_its_sensitivity():
+    # exactly stretched: B is fixed to about sqrt(u) of the link (a one-ulp change of a
+    # length moves it that far), so fewer than 8 digits are vouched for
+    out, ier = raw("DPRM1", 0.0, 0.0, 3.0, 0.0, 1.0, 2.0, 1.0, 1.0)
+    assert 101 <= ier <= 107
+    # and well away from it nothing is said
+    out, ier = raw("DPRM1", 0.0, 0.0, 2.5, 0.0, 1.0, 2.0, 1.0, 1.0)
+    assert ier == 0
+
+
+# ------------------------------------------------------------ overflow and underflow
+
+def test_dprm2_with_lengths_of_1e300_is_finite_and_right():
+    small = sarkp.DPRM2(0, 1.0, 0, 0, 0.3, 1.0, 0.2, 0.5)
+    big = sarkp.DPRM2(0, 1e300, 0, 0, 0.3, 1e300, 0.2e300, 0.5)
+    assert big.FI2 == pytest.approx(small.FI2, abs=1e-14)
+    assert big.XB == pytest.approx(small.XB * 1e300, rel=1e-14)
+    assert big.YB == pytest.approx(small.YB * 1e300, rel=1e-14)
+
+
+def test_triangle_of_huge_sides_does_not_overflow():
+    small = sarkp.DPRM1(0, 0, 1.0, 0, 0.8, 0.7, 1)
+    big = sarkp.DPRM1(0, 0, 1e300, 0, 0.8e300, 0.7e300, 1)
+    assert big.FI2 == pytest.approx(small.FI2, abs=1e-14)
+    assert big.FI3 == pytest.approx(small.FI3, abs=1e-14)
+
+
+def test_angular_velocity_beyond_the_double_range_is_an_error_not_inf():
+    # a link of 5e-324 turning at a speed of 1: omega = 2e323 does not exist in doubles
+    with pytest.raises(sarkp.SingularError):
+        sarkp.DSKOR1(5e-324, 0.3, 1, 2.0, 1, 0, 0, 0)
+    with pytest.raises(sarkp.SingularError):
+        sarkp.DUSKR1(1, 0, 0, 0, 1e300, 0.3, 1, 2.0, 1e200, 0)
+
