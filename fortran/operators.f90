@@ -3,7 +3,7 @@
 ! validates the input (finite numbers, positive lengths, coincident points) before it
 ! calls these routines; guards below only keep a NaN from ever being produced.
 module operators
-  use prmtr, only: dp, pi, book_sign
+  use prmtr, only: dp, pi, book_sign, printed_mode
   implicit none
   private
   public :: dintgr, dfrncl, dugl1, dugl2, dugl3, dugl4, dugl5, dugol, dmomnt, domega, &
@@ -14,9 +14,14 @@ contains
   ! II.1, L435-480.  Running integral of a tabulated function with step H.
   ! NOMER as in the listing's code and comments (L443-447): 1 Simpson, 2 trapezoids,
   ! 3 rectangles.  The prose at L431 lists them the other way round (ERRATA E-DINTGR-2).
-  ! The printed header names the step N (ERRATA E-DINTGR-1).  Simpson starts its even
-  ! chain from a trapezoid over the first interval, as printed.  Needs M >= 2;
-  ! an unknown NOMER leaves FINT zero (the Python layer rejects it first).
+  ! The printed header names the step N (ERRATA E-DINTGR-1).  Needs M >= 2; an unknown
+  ! NOMER leaves FINT zero (the Python layer rejects it first).
+  ! Simpson: the odd points chain Simpson's rule from FINT(1) = 0; the even points chain it
+  ! from FINT(2).  The book starts that chain with a trapezoid over the first interval
+  ! (error h**3 y''/12, carried to every even point: 3rd order there, 4th at odd points).
+  ! Corrected mode starts it with the integral over [x1, x2] of the parabola through the
+  ! first three points, h (5 y1 + 8 y2 - y3)/12 (error h**4 y'''/24), so every point is
+  ! 4th order (E-DINTGR-4, numerical); as-printed keeps the trapezoid.  M = 2: trapezoid.
   subroutine dintgr(m, h, nomer, y, fint)
     integer, intent(in) :: m, nomer
     real(dp), intent(in) :: h
@@ -27,7 +32,11 @@ contains
     if (m < 2) return
     select case (nomer)
     case (1)                                            ! Simpson, labels 10-12
-      fint(2) = h*(y(1) + y(2))/2.0_dp
+      if (printed_mode == 0 .and. m >= 3) then
+        fint(2) = h*(5.0_dp*y(1) + 8.0_dp*y(2) - y(3))/12.0_dp   ! E-DINTGR-4: corrected
+      else
+        fint(2) = h*(y(1) + y(2))/2.0_dp                         ! E-DINTGR-4: as printed
+      end if
       if (m >= 3) fint(3) = (y(1) + 4.0_dp*y(2) + y(3))*h/3.0_dp
       do k = 4, m
         fint(k) = fint(k - 2) + (y(k - 2) + 4.0_dp*y(k - 1) + y(k))*h/3.0_dp
@@ -43,8 +52,10 @@ contains
     end select
   end subroutine dintgr
 
-  ! II.2, L490-509.  Backward difference, FDIF(1) = 0.  Output before input, as printed
-  ! and as called at L5988.
+  ! II.2, L490-509.  Backward difference.  Output before input, as printed and as called
+  ! at L5988.  The book sets FDIF(1) = 0 whatever the derivative; corrected mode gives
+  ! the first point the forward difference (Y(2) - Y(1))/H, of the same (first) order as
+  ! the backward differences at the others (E-DFRNCL-1, numerical); as-printed keeps 0.
   subroutine dfrncl(m, h, fdif, y)
     integer, intent(in) :: m
     real(dp), intent(in) :: h
@@ -55,6 +66,7 @@ contains
     do k = 1, m - 1
       fdif(k + 1) = (y(k + 1) - y(k))/h
     end do
+    if (printed_mode == 0 .and. m >= 2) fdif(1) = fdif(2)      ! E-DFRNCL-1: corrected
   end subroutine dfrncl
 
   ! II.3, L551-569.  Direction of the segment (X1,Y1) -> (X2,Y2) in [0, 2*PI).

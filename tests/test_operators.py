@@ -28,11 +28,15 @@ def test_dintgr_simpson_is_exact_on_cubics_at_the_odd_points():
     np.testing.assert_allclose(fint[0::2], exact[0::2], rtol=0, atol=1e-13)
 
 
-def test_dintgr_simpson_even_chain_starts_from_a_trapezoid():
+def test_dintgr_simpson_even_chain_starts_from_a_trapezoid_as_printed():
     y = np.array([0.0, 1.0, 4.0, 9.0, 16.0])            # x**2 at h = 1
-    fint = DINTGR(5, 1.0, 1, y).FINT
+    with sarkp.as_printed():
+        fint = DINTGR(5, 1.0, 1, y).FINT
     assert fint[1] == pytest.approx(0.5)               # trapezoid over [0, 1]
     assert fint[3] == pytest.approx(0.5 + (1 + 16 + 9) / 3)
+    # corrected (E-DINTGR-4): the parabola's integral, exact for x**2
+    fint = DINTGR(5, 1.0, 1, y).FINT
+    np.testing.assert_allclose(fint, np.arange(5.0) ** 3 / 3, rtol=1e-14)
 
 
 def test_dintgr_trapezoid_is_exact_on_linears():
@@ -68,9 +72,10 @@ def test_dintgr_both_ends_of_nomer():
 def test_dfrncl_on_polynomials():
     h = 0.25
     x = np.arange(9) * h
+    with sarkp.as_printed():
+        assert DFRNCL(9, h, 2 * x + 1).FDIF[0] == 0.0
     fdif = DFRNCL(9, h, 2 * x + 1).FDIF
-    assert fdif[0] == 0.0
-    np.testing.assert_allclose(fdif[1:], 2.0, rtol=1e-14)
+    np.testing.assert_allclose(fdif, 2.0, rtol=1e-14)    # E-DFRNCL-1: FDIF(1) corrected
     # a backward difference of x**2 is exact at the midpoint: 2 (x - h/2)
     fdif = DFRNCL(9, h, x**2).FDIF
     np.testing.assert_allclose(fdif[1:], 2 * (x[1:] - h / 2), rtol=1e-14)

@@ -466,3 +466,50 @@ def test_angular_velocity_beyond_the_double_range_is_an_error_not_inf():
     with pytest.raises(sarkp.SingularError):
         sarkp.DUSKR1(1, 0, 0, 0, 1e300, 0.3, 1, 2.0, 1e200, 0)
 
+
+
+# ------------------------------------------------------------------ DINTGR, DFRNCL
+
+def observed_order(errors, hs):
+    return [math.log(errors[i] / errors[i + 1]) / math.log(hs[i] / hs[i + 1])
+            for i in range(len(hs) - 1)]
+
+
+@pytest.mark.parametrize("parity", [0, 1], ids=["odd points", "even points"])
+def test_dintgr_simpson_is_fourth_order_at_every_point(parity):
+    # integral of exp from 0 to x = exp(x) - 1, read at the last point, odd or even
+    hs, errs = [], []
+    for n in (8, 16, 32, 64):
+        h = 1.0 / n
+        m = 2 * n + 1 + parity
+        x = np.arange(m) * h
+        fint = sarkp.DINTGR(m, h, 1, np.exp(x)).FINT
+        hs.append(h)
+        errs.append(abs(fint[-1] - math.expm1(x[-1])))
+    orders = observed_order(errs, hs)
+    assert min(orders) > 3.8, orders
+    with sarkp.as_printed():                              # the book's start: 3rd order at even points
+        errs_book = []
+        for h in hs:
+            m = 2 * int(round(1 / h)) + 1 + parity
+            x = np.arange(m) * h
+            errs_book.append(abs(sarkp.DINTGR(m, h, 1, np.exp(x)).FINT[-1] - math.expm1(x[-1])))
+    book_orders = observed_order(errs_book, hs)
+    if parity == 1:
+        assert max(book_orders) < 3.2, book_orders
+    else:
+        assert min(book_orders) > 3.8, book_orders
+
+
+def test_dfrncl_first_entry_is_a_derivative_of_first_order():
+    hs, errs = [], []
+    for n in (8, 16, 32, 64):
+        h = 0.5 / n
+        x = 0.3 + np.arange(n + 1) * h
+        fdif = sarkp.DFRNCL(n + 1, h, np.sin(x)).FDIF
+        hs.append(h)
+        errs.append(abs(fdif[0] - math.cos(0.3)))
+    orders = observed_order(errs, hs)
+    assert all(0.9 < o < 1.1 for o in orders), orders
+    with sarkp.as_printed():
+        assert sarkp.DFRNCL(3, 0.1, [1.0, 2.0, 3.0]).FDIF[0] == 0.0
