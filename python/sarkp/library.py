@@ -306,7 +306,7 @@ class Routine:
             # Python or NumPy floats add up to a float; anything else goes the long way.
             try:
                 total = sum(args)
-            except (TypeError, OverflowError):
+            except (TypeError, OverflowError, ValueError):   # (ValueError: shapes)
                 total = None
             if isinstance(total, _SCALAR_TYPES):
                 return self._call_scalar(args, total, on_error)
