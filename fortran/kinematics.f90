@@ -36,7 +36,7 @@
 ! ERRATA ids of this chapter: E-<ROUTINE>-<n>, listed in docs/ERRATA.md.
 module kinematics
   use prmtr, only: dp, pi, pid2, printed_mode, book_sign, st_ok, st_assembly, st_singular, &
-                   st_significance
+                   st_significance, st_range, st_digits
   use operators, only: dugl1, dugl2, dugl3, dugl4, dugl5, dugol, domega, dvkt, dsmvkt
   use gelg_mod, only: gelg2
   implicit none
@@ -85,6 +85,11 @@ contains
     integer, intent(out) :: st
     real(dp) :: na, det, ny, den
     rel = huge(1.0_dp)
+    if (.not. (abs(b1) <= huge(b1) .and. abs(b2) <= huge(b2))) then
+      y1 = 0.0_dp; y2 = 0.0_dp
+      st = st_range                               ! a term of the right-hand side overflowed
+      return
+    end if
     call solve2(a11, a12, a21, a22, b1, b2, y1, y2, st)
     if (failed(st)) return
     st = st_ok
@@ -124,6 +129,7 @@ contains
     y2 = y1*c - b1
     if (.not. (abs(y1) <= huge(y1) .and. abs(y2) <= huge(y2))) then
       y1 = 0.0_dp; y2 = 0.0_dp
+      st = st_range
       return
     end if
     st = st_ok
@@ -150,21 +156,21 @@ contains
       policy = st_singular
     else if (est > 1.0e-8_dp) then
       d = int(floor(-log10(est)))
-      policy = 100 + max(1, min(7, d))
+      policy = st_digits + max(1, min(7, d))
     else
       policy = st_ok
     end if
   end function policy
 
   ! The final status: a failure already found, else a non-finite result (an overflow of
-  ! an intermediate or of the answer: st_singular), else the policy's verdict on est.
+  ! an intermediate or of the answer: st_range), else the policy's verdict on est.
   pure integer function settle(st, est, outs)
     integer, intent(in) :: st
     real(dp), intent(in) :: est, outs(:)
     if (failed(st)) then
       settle = st
     else if (.not. all(abs(outs) <= huge(1.0_dp))) then
-      settle = st_singular
+      settle = st_range
     else
       settle = policy(est)
     end if
@@ -172,7 +178,7 @@ contains
 
   pure logical function failed(st)
     integer, intent(in) :: st
-    failed = st /= st_ok .and. st /= st_significance .and. st < 100
+    failed = st /= st_ok .and. st /= st_significance .and. st <= st_digits
   end function failed
 
   ! Angle in (-pi, pi] (the DUGL2 range) of an angle in (-5 pi, 5 pi].
