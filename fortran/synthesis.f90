@@ -81,6 +81,48 @@ contains
     crank_rocker_ok = (s1 > 0.0_dp .and. s2 > 0.0_dp) .or. (s1 < 0.0_dp .and. s2 < 0.0_dp)
   end function crank_rocker_ok
 
+  ! ---- sarkp extension: the transmission angle over the full crank turn --------------
+  ! Every synthesis routine also returns GMIN_TURN, GMAX_TURN, the smallest and largest
+  ! transmission angle the mechanism it built reaches over a full turn of the crank (the
+  ! book controls it at most at the two extreme positions).  The transmission angle is the
+  ! angle BCD between the coupler and the rocker, in [0, pi] (DSNTZ2's GMIN, GMAX); a
+  ! transmission is poor where it nears 0 or pi, and 0 or pi means the linkage locks
+  ! there (it cannot make a full turn).
+
+  ! Four-bar, crank l1 = AB about A, coupler l2 = BC, rocker l3 = DC about D, frame l0:
+  ! cos(BCD) = (l2**2 + l3**2 - BD**2)/(2 l2 l3) grows with BD, and BD runs over
+  ! [|l0 - l1|, l0 + l1], its ends where the crank is collinear with the frame.
+  subroutine fourbar_turn(l1, l2, l3, l0, gmin, gmax)
+    real(dp), intent(in) :: l1, l2, l3, l0
+    real(dp), intent(out) :: gmin, gmax
+    gmin = 0.0_dp
+    gmax = 0.0_dp
+    if (.not. (l1 > 0.0_dp .and. l2 > 0.0_dp .and. l3 > 0.0_dp .and. l0 > 0.0_dp)) return
+    gmin = angle_bcd(l2, l3, abs(l0 - l1))
+    gmax = angle_bcd(l2, l3, l0 + l1)
+  end subroutine fourbar_turn
+
+  pure real(dp) function angle_bcd(l2, l3, bd)
+    real(dp), intent(in) :: l2, l3, bd
+    real(dp) :: c
+    c = ((l2*l2 + l3*l3) - bd*bd)/(2.0_dp*l2*l3)
+    angle_bcd = acos(max(-1.0_dp, min(1.0_dp, c)))
+  end function angle_bcd
+
+  ! Crank-slider, crank l1, coupler l2, guide at the signed offset e from the crank pivot
+  ! (along the normal n): the rocker is at infinity along -n, and cos(BCD) =
+  ! (e - l1 sin(theta))/l2 with theta the crank angle from the guide; its extremes are
+  ! where the crank is perpendicular to the guide.
+  subroutine slider_turn(l1, l2, e, gmin, gmax)
+    real(dp), intent(in) :: l1, l2, e
+    real(dp), intent(out) :: gmin, gmax
+    gmin = 0.0_dp
+    gmax = 0.0_dp
+    if (.not. (l1 > 0.0_dp .and. l2 > 0.0_dp)) return
+    gmin = acos(max(-1.0_dp, min(1.0_dp, (e + l1)/l2)))
+    gmax = acos(max(-1.0_dp, min(1.0_dp, (e - l1)/l2)))
+  end subroutine slider_turn
+
   ! ---- III.1 --------------------------------------------------------------------------
 
   ! III.1 DSNTZR, L887-1019 (Table 3, L897-917).  Three-position synthesis of a four-bar
@@ -95,9 +137,9 @@ contains
   ! table's arctg(yB/xB) is taken over the full circle (atan2), E-DSNTZR-4.
   ! ERRATA: E-DSNTZR-1 (names F11/F13 = FI1/FI3), E-DSNTZR-2 (dead F11 = F11(K) lines),
   ! E-DSNTZR-3 (8th argument), E-DSNTZR-4 (atan2), E-SYN-1 (no division by yC2 - yC1).
-  subroutine dsntzr(lo, l3, fi1, fi3, aaa, l1, l2, fi11, ier)
+  subroutine dsntzr(lo, l3, fi1, fi3, aaa, l1, l2, fi11, gmin_turn, gmax_turn, ier)
     real(dp), intent(in) :: lo(3), l3, fi1(3), fi3(3), aaa
-    real(dp), intent(out) :: l1, l2, fi11
+    real(dp), intent(out) :: l1, l2, fi11, gmin_turn, gmax_turn
     integer, intent(out) :: ier
     real(dp) :: xc(3), yc(3), a(2, 2), c(2), d, scale, t1, t2, t3
     logical :: ok1, ok2, ok3
@@ -106,6 +148,8 @@ contains
     l1 = 0.0_dp
     l2 = 0.0_dp
     fi11 = 0.0_dp
+    gmin_turn = 0.0_dp
+    gmax_turn = 0.0_dp
     do k = 1, 3
       d = fi1(1) - fi1(k)
       xc(k) = lo(k)*cos(d) + l3*cos(fi3(k) + d)
@@ -130,6 +174,13 @@ contains
       return
     end if
     fi11 = atan2(c(2), c(1))
+    ! extension: equal FI3 = a crank-slider (guide along the frame at the offset
+    ! L3 sin(FI3)), else a four-bar with the frame LO(1)
+    if (fi3(1) == fi3(2) .and. fi3(2) == fi3(3)) then
+      call slider_turn(l1, l2, l3*sin(fi3(1)), gmin_turn, gmax_turn)
+    else
+      call fourbar_turn(l1, l2, l3, lo(1), gmin_turn, gmax_turn)
+    end if
   end subroutine dsntzr
 
   ! ---- III.2 --------------------------------------------------------------------------
@@ -163,9 +214,9 @@ contains
   ! ERRATA: E-DSNTZ1-1 (KCIE = KC1E), E-DSNTZ1-2 (debug PRINT 5 dropped), E-DSNTZ1-3
   ! (vertical bisector: YC2 = YC1 in the book's own example), E-DSNTZ1-4, E-DSNTZ1-6,
   ! E-SYN-1, E-SYN-2.
-  subroutine dsntz1(kw3, fi31, fi32, l3, xd, q, aaa, l1, l2, lo, ier)
+  subroutine dsntz1(kw3, fi31, fi32, l3, xd, q, aaa, l1, l2, lo, gmin_turn, gmax_turn, ier)
     real(dp), intent(in) :: kw3, fi31, fi32, l3, xd, q, aaa
-    real(dp), intent(out) :: l1, l2, lo
+    real(dp), intent(out) :: l1, l2, lo, gmin_turn, gmax_turn
     integer, intent(out) :: ier
     real(dp) :: beta, xc1, yc1, xc2, yc2, a(2, 2), c(2), xe, ye, r, disc, xa, ac1, ac2
     real(dp) :: xs, ys, h, sd, t
@@ -174,6 +225,8 @@ contains
     l1 = 0.0_dp
     l2 = 0.0_dp
     lo = 0.0_dp
+    gmin_turn = 0.0_dp
+    gmax_turn = 0.0_dp
     ier = st_requirement
     if (.not. (kw3 > 1.0_dp .and. l3 > 0.0_dp)) return
     beta = pi*(kw3 - 1.0_dp)/(kw3 + 1.0_dp)
@@ -228,6 +281,7 @@ contains
       ier = st_requirement
       return
     end if
+    call fourbar_turn(l1, l2, l3, lo, gmin_turn, gmax_turn)   ! extension
   end subroutine dsntz1
 
   ! ---- III.3 --------------------------------------------------------------------------
@@ -239,9 +293,10 @@ contains
   ! FI3 + PSI - GMAX.  The book prints the crank pivot XA, YA (L1173) but has no argument
   ! for it: sarkp returns it after LO.
   ! ERRATA: E-DSNTZ2-1 (KC1A + TAN = KC1A = TAN), E-SYN-1.
-  subroutine dsntz2(kw3, fi3, l3, xd, gmin, gmax, aaa, l1, l2, lo, xa, ya, ier)
+  subroutine dsntz2(kw3, fi3, l3, xd, gmin, gmax, aaa, l1, l2, lo, xa, ya, gmin_turn, &
+                    gmax_turn, ier)
     real(dp), intent(in) :: kw3, fi3, l3, xd, gmin, gmax, aaa
-    real(dp), intent(out) :: l1, l2, lo, xa, ya
+    real(dp), intent(out) :: l1, l2, lo, xa, ya, gmin_turn, gmax_turn
     integer, intent(out) :: ier
     real(dp) :: beta, psi, xc1, yc1, xc2, yc2, a(2, 2), c(2), ac1, ac2, t1, t2, t3
     logical :: ok
@@ -251,10 +306,17 @@ contains
     lo = 0.0_dp
     xa = 0.0_dp
     ya = 0.0_dp
+    gmin_turn = 0.0_dp
+    gmax_turn = 0.0_dp
     ier = st_requirement
     if (.not. (kw3 > 1.0_dp .and. l3 > 0.0_dp)) return
     beta = pi*(kw3 - 1.0_dp)/(kw3 + 1.0_dp)
     psi = beta + gmax - gmin
+    ! E-DSNTZ2-4: the construction turns the rocker counter-clockwise by PSI from C1 to C2;
+    ! with PSI <= 0 the lines through C1, C2 make the angles pi - GMIN, pi - GMAX with the
+    ! rocker, and no four-bar has GMIN at the extended and GMAX at the folded position
+    ! (any that has swings by BETA + GMAX - GMIN): the requirement cannot be met.
+    if (.not. (psi > 0.0_dp)) return
     xc1 = xd + l3*cos(fi3)
     yc1 = l3*sin(fi3)
     xc2 = xd + l3*cos(fi3 + psi)
@@ -281,6 +343,7 @@ contains
       ier = st_requirement
       return
     end if
+    call fourbar_turn(l1, l2, l3, lo, gmin_turn, gmax_turn)   ! extension
   end subroutine dsntz2
 
   ! ---- III.4 --------------------------------------------------------------------------
@@ -296,9 +359,10 @@ contains
   ! L3 as implicit INTEGERs (E-DSNTZ3-2): KB1A and KS2D truncated to integers, L3 too
   ! (Fig. 10 prints L3 = 0.0).  That path keeps the book's slopes.
   ! ERRATA: E-DSNTZ3-1, E-DSNTZ3-2, E-DSNTZ3-3 (GELG call missing M = 2), E-SYN-1.
-  subroutine dsntz3(xb1, yb1, xb2, yb2, xc1, yc1, xc2, yc2, fi1, alc1, aaa, l1, l3, lo, ier)
+  subroutine dsntz3(xb1, yb1, xb2, yb2, xc1, yc1, xc2, yc2, fi1, alc1, aaa, l1, l3, lo, &
+                    gmin_turn, gmax_turn, ier)
     real(dp), intent(in) :: xb1, yb1, xb2, yb2, xc1, yc1, xc2, yc2, fi1, alc1, aaa
-    real(dp), intent(out) :: l1, l3, lo
+    real(dp), intent(out) :: l1, l3, lo, gmin_turn, gmax_turn
     integer, intent(out) :: ier
     real(dp) :: a1(2, 2), c1(2), a2(2, 2), c2(2), fib1b2, fic1c2, t1, t2, t3
     real(dp) :: ks1a, ks2d, kb1a, kc1d, tb, tc, ta
@@ -308,6 +372,8 @@ contains
     l1 = 0.0_dp
     l3 = 0.0_dp
     lo = 0.0_dp
+    gmin_turn = 0.0_dp
+    gmax_turn = 0.0_dp
     ier = st_requirement
     call line_bisector(xb1, yb1, xb2, yb2, t1, t2, t3, okb)
     call line_bisector(xc1, yc1, xc2, yc2, t1, t2, t3, okc)
@@ -355,6 +421,8 @@ contains
       lo = 0.0_dp
       ier = st_requirement
     end if
+    ! extension: the coupler is B1C1
+    call fourbar_turn(l1, hypot(xc1 - xb1, yc1 - yb1), l3, lo, gmin_turn, gmax_turn)
   end subroutine dsntz3
 
   ! ---- III.6 --------------------------------------------------------------------------
@@ -365,15 +433,17 @@ contains
   ! LAMBDA = sin(BETA), L3 = S/(2 LAMBDA); rotating: LAMBDA = 1/sin(BETA), L3 = S/2;
   ! then LO = (L3 - H)/(1 + LAMBDA), L1 = LAMBDA*LO.  No printed example.
   ! ERRATA: E-DSNTZK-1 (statement order), E-DSNTZK-2 (S and H glosses).
-  subroutine dsntzk(kw3, s, h, q, aaa, l1, lo, l3, ier)
+  subroutine dsntzk(kw3, s, h, q, aaa, l1, lo, l3, gmin_turn, gmax_turn, ier)
     real(dp), intent(in) :: kw3, s, h, q, aaa
-    real(dp), intent(out) :: l1, lo, l3
+    real(dp), intent(out) :: l1, lo, l3, gmin_turn, gmax_turn
     integer, intent(out) :: ier
     real(dp) :: beta, lyamda
 
     l1 = 0.0_dp
     lo = 0.0_dp
     l3 = 0.0_dp
+    gmin_turn = 0.0_dp
+    gmax_turn = 0.0_dp
     ier = st_requirement
     if (.not. (kw3 > 1.0_dp .and. s > 0.0_dp .and. h >= 0.0_dp)) return
     beta = pi/2.0_dp*((kw3 - 1.0_dp)/(kw3 + 1.0_dp))
@@ -392,6 +462,11 @@ contains
       l3 = 0.0_dp
       return
     end if
+    ! extension: the block on the crank pin pushes the slotted link along the normal to
+    ! the slot, the direction in which the link's point under it moves: the transmission
+    ! angle is a right angle in every position
+    gmin_turn = pi/2.0_dp
+    gmax_turn = pi/2.0_dp
     ier = st_ok
   end subroutine dsntzk
 

@@ -515,3 +515,73 @@ def test_dfrncl_first_entry_is_a_derivative_of_first_order():
     assert all(0.9 < o < 1.1 for o in orders), orders
     with sarkp.as_printed():
         assert sarkp.DFRNCL(3, 0.1, [1.0, 2.0, 3.0]).FDIF[0] == 0.0
+
+
+# ------------------------------------------------------------------ synthesis
+
+def test_dsntz2_negative_swing_is_a_requirement_error():
+    # BETA = pi/5 for KW3 = 1.5; GMIN - GMAX = 1.0 > BETA: PSI < 0.  Before, DSNTZ2 built
+    # a four-bar whose transmission angles were pi - GMIN and pi - GMAX
+    with pytest.raises(sarkp.RequirementError, match="PSI"):
+        sarkp.DSNTZ2(1.5, math.pi / 6, 0.5, 0.75, 1.5, 0.5)
+    # the Fortran refuses it too (the layer's check only names the condition first)
+    out = sarkp._sarkp.drv_synthesis.dsntz2_1(0, 1.5, math.pi / 6, 0.5, 0.75, 1.5, 0.5, 1.0)
+    assert int(out[-1]) == 4 and all(v == 0.0 for v in out[:-1])
+
+
+def sweep_fourbar(xa, ya, xd, yd, l1, l2, l3, n=200001):
+    """Angle BCD over a full crank turn, point by point."""
+    th = np.linspace(0.0, 2 * np.pi, n)
+    bd = np.hypot(xa + l1 * np.cos(th) - xd, ya + l1 * np.sin(th) - yd)
+    c = (l2**2 + l3**2 - bd**2) / (2 * l2 * l3)
+    return np.arccos(np.clip(c, -1, 1))
+
+
+def test_dsntz2_reports_the_transmission_angle_over_the_full_turn():
+    r = sarkp.DSNTZ2(1.5, math.pi / 6, 0.5, 0.75, math.pi / 18, math.pi / 3)
+    mu = sweep_fourbar(r.XA, r.YA, 0.75, 0.0, r.L1, r.L2, 0.5)
+    assert r.GMIN_TURN == pytest.approx(mu.min(), abs=1e-9)
+    assert r.GMAX_TURN == pytest.approx(mu.max(), abs=1e-9)
+    # the book's example asks 10 and 60 degrees at the extreme positions; over the turn
+    # the angle leaves that range (the issue: 9.0 to 65.1 degrees)
+    assert math.degrees(r.GMIN_TURN) == pytest.approx(9.0, abs=0.05)
+    assert math.degrees(r.GMAX_TURN) == pytest.approx(65.1, abs=0.05)
+
+
+def test_dsntz1_dsntz3_report_the_transmission_angle_over_the_full_turn():
+    r = sarkp.DSNTZ1(1.5, math.pi / 6, 5 * math.pi / 6, 0.5, 0.75, -1.0)
+    # A is on the x axis at distance LO from D = (0.75, 0), on the side given by Q = -1
+    for xa in (0.75 - r.LO, 0.75 + r.LO):
+        mu = sweep_fourbar(xa, 0.0, 0.75, 0.0, r.L1, r.L2, 0.5)
+        assert r.GMIN_TURN == pytest.approx(mu.min(), abs=1e-9)
+        assert r.GMAX_TURN == pytest.approx(mu.max(), abs=1e-9)
+    xb1, yb1, xc1, yc1 = 0.2, 0.4, 0.5, 0.8
+    r = sarkp.DSNTZ3(xb1, yb1, 0.6, 0.5, xc1, yc1, 0.85, 1.343, math.pi / 3, math.pi / 9)
+    mu = sweep_fourbar(0.0, 0.0, r.LO, 0.0, r.L1, math.hypot(xc1 - xb1, yc1 - yb1), r.L3)
+    assert r.GMIN_TURN == pytest.approx(mu.min(), abs=1e-9)
+    assert r.GMAX_TURN == pytest.approx(mu.max(), abs=1e-9)
+
+
+def test_dsntzr_reports_the_transmission_angle_of_a_four_bar_and_of_a_crank_slider():
+    r = sarkp.DSNTZR([1.0] * 3, 0.8, [0.0, 0.5, 1.0], [1.9, 2.2, 2.6])
+    mu = sweep_fourbar(0.0, 0.0, 1.0, 0.0, r.L1, r.L2, 0.8)
+    assert r.GMIN_TURN == pytest.approx(mu.min(), abs=1e-9)
+    assert r.GMAX_TURN == pytest.approx(mu.max(), abs=1e-9)
+    # crank-slider (crank 0.2, coupler 0.7, guide along x at the offset 0.1) from three
+    # slider positions; C found point by point over the turn
+    e_, ths = 0.1, [0.0, 0.6, 1.2]
+    xs = [0.2 * math.cos(t) + math.sqrt(0.49 - (e_ - 0.2 * math.sin(t)) ** 2) for t in ths]
+    r = sarkp.DSNTZR(xs, e_, ths, [math.pi / 2] * 3)
+    assert (r.L1, r.L2) == pytest.approx((0.2, 0.7), abs=1e-12)
+    th = np.linspace(0.0, 2 * np.pi, 200001)
+    bx, by = r.L1 * np.cos(th), r.L1 * np.sin(th)
+    cx = bx + np.sqrt(r.L2**2 - (e_ - by) ** 2)
+    # angle BCD with D at infinity below the guide: between C -> B and (0, -1)
+    mu = np.arccos(np.clip(((bx - cx) * 0 + (by - e_) * -1) / r.L2, -1, 1))
+    assert r.GMIN_TURN == pytest.approx(mu.min(), abs=1e-9)
+    assert r.GMAX_TURN == pytest.approx(mu.max(), abs=1e-9)
+
+
+def test_dsntzk_transmission_angle_is_a_right_angle():
+    r = sarkp.DSNTZK(1.5, 0.3, 0.05, 1.0)
+    assert r.GMIN_TURN == r.GMAX_TURN == pytest.approx(math.pi / 2, abs=1e-15)

@@ -11,6 +11,14 @@ DC (L3) about D, frame AD (LO).  The book writes every straight line through a s
 (``k = tan(angle)`` or ``k = -dx/dy``), which fails for a vertical line; sarkp keeps the
 same lines in normal form (ERRATA E-SYN-1), so a symmetric swing such as the book's own
 ``FI31 = PI/6, FI32 = 5*PI/6`` works in both modes.
+
+sarkp extension: every routine also returns ``GMIN_TURN`` and ``GMAX_TURN``, the
+smallest and the largest transmission angle (the angle BCD between coupler and rocker,
+in [0, pi]) that the mechanism it built reaches over a full turn of the crank, in closed
+form: for a four-bar the extremes are where the crank is collinear with the frame, for a
+crank-slider where it is perpendicular to the guide.  The book controls the transmission
+angle at the extreme positions at most (DSNTZ2), and between them it can fall well below
+what was asked.  0 or pi means the linkage locks (it cannot make a full turn).
 """
 
 from __future__ import annotations
@@ -67,7 +75,8 @@ def _dsntzr_report(i, o):
 
 DSNTZR = book_routine(
     "DSNTZR", listing="III.1", lines="L887-1019", chapter="synthesis",
-    inputs=("LO", "L3", "FI1", "FI3", "AAA"), outputs=("L1", "L2", "FI11"),
+    inputs=("LO", "L3", "FI1", "FI3", "AAA"),
+    outputs=("L1", "L2", "FI11", "GMIN_TURN", "GMAX_TURN"),
     tables={"LO": 3, "FI1": 3, "FI3": 3}, messages=_DSNTZR_MESSAGES,
     report=_dsntzr_report,
     doc="""Three-position synthesis of a four-bar or a crank-slider (listing III.1,
@@ -100,11 +109,14 @@ DSNTZR = book_routine(
 
     Returns
     -------
-    DSNTZR(L1, L2, FI11)
+    DSNTZR(L1, L2, FI11, GMIN_TURN, GMAX_TURN)
         ``L1`` crank AB, ``L2`` coupler BC, ``FI11`` the crank angle of the first
         position in the frame with A at the origin and D (or the guide) along x
         (Table 3 step 12, taken over the full circle, ERRATA E-DSNTZR-4).  The crank
-        angle of position i is ``FI11 + FI1[i] - FI1[0]``.
+        angle of position i is ``FI11 + FI1[i] - FI1[0]``.  ``GMIN_TURN``,
+        ``GMAX_TURN`` (sarkp extension): the extreme transmission angles over a full
+        crank turn; three equal FI3 are taken as a crank-slider (guide at the offset
+        ``L3 sin(FI3)``), otherwise a four-bar with the frame ``LO[0]``.
 
     Raises
     ------
@@ -131,12 +143,13 @@ _DSNTZ1_FORMAT = (
 
 def _dsntz1_report(i, o):
     return fortran_write(_DSNTZ1_FORMAT, [i["KW3"], i["FI31"], i["FI32"], i["L3"], i["XD"],
-                                   i["Q"], *o])
+                                   i["Q"], *o[:3]])
 
 
 DSNTZ1 = book_routine(
     "DSNTZ1", listing="III.2", lines="L1023-1105",
-    inputs=["KW3", "FI31", "FI32", "L3", "XD", "Q", "AAA"], outputs=["L1", "L2", "LO"],
+    inputs=["KW3", "FI31", "FI32", "L3", "XD", "Q", "AAA"],
+    outputs=["L1", "L2", "LO", "GMIN_TURN", "GMAX_TURN"],
     chapter="synthesis", lengths=["L3"],
     checks=(_KW3_ABOVE_ONE, _DISTINCT_EXTREMES),
     report=_dsntz1_report,
@@ -193,8 +206,9 @@ DSNTZ1 = book_routine(
 
     Returns
     -------
-    DSNTZ1(L1, L2, LO)
-        Crank AB, coupler BC, frame AD.
+    DSNTZ1(L1, L2, LO, GMIN_TURN, GMAX_TURN)
+        Crank AB, coupler BC, frame AD; ``GMIN_TURN``, ``GMAX_TURN`` (sarkp extension):
+        the extreme transmission angles (angle BCD) over a full crank turn.
 
     Raises
     ------
@@ -229,18 +243,27 @@ _DSNTZ2_FORMATS = (
 )
 
 
+_POSITIVE_SWING = Check(
+    lambda KW3, GMIN, GMAX, **_: np.logical_not(
+        np.pi * (KW3 - 1.0) / (KW3 + 1.0) + GMAX - GMIN > 0.0),
+    ST_REQUIREMENT,
+    "GMIN - GMAX >= BETA = PI (KW3 - 1)/(KW3 + 1): the rocker's swing PSI = BETA + GMAX - "
+    "GMIN would not be positive, and no four-bar has the transmission angle GMIN in the "
+    "stretched-out and GMAX in the folded position (ERRATA E-DSNTZ2-4)")
+
+
 def _dsntz2_report(i, o):
     return "\n".join([fortran_write(_DSNTZ2_FORMATS[0]),
                       fortran_write(_DSNTZ2_FORMATS[1], [i["KW3"], i["FI3"], i["L3"], i["XD"],
-                                                  i["GMIN"], i["GMAX"], *o])])
+                                                  i["GMIN"], i["GMAX"], *o[:5]])])
 
 
 DSNTZ2 = book_routine(
     "DSNTZ2", listing="III.3", lines="L1109-1181",
     inputs=["KW3", "FI3", "L3", "XD", "GMIN", "GMAX", "AAA"],
-    outputs=["L1", "L2", "LO", "XA", "YA"],
+    outputs=["L1", "L2", "LO", "XA", "YA", "GMIN_TURN", "GMAX_TURN"],
     chapter="synthesis", lengths=["L3"],
-    checks=(_KW3_ABOVE_ONE,), report=_dsntz2_report,
+    checks=(_KW3_ABOVE_ONE, _POSITIVE_SWING), report=_dsntz2_report,
     messages={
         ST_REQUIREMENT: "no crank-rocker meets the requirement: the swing "
                         "PSI = BETA + GMAX - GMIN is 0, or the crank comes out <= 0, or "
@@ -278,15 +301,19 @@ DSNTZ2 = book_routine(
 
     Returns
     -------
-    DSNTZ2(L1, L2, LO, XA, YA)
+    DSNTZ2(L1, L2, LO, XA, YA, GMIN_TURN, GMAX_TURN)
         Crank AB, coupler BC, frame AD, and the crank pivot A = (XA, YA), which the
-        book prints in the report (L1173) but has no argument for.
+        book prints in the report (L1173) but has no argument for.  ``GMIN_TURN``,
+        ``GMAX_TURN`` (sarkp extension): the extreme transmission angles over a full
+        crank turn, which lie beyond GMIN and GMAX in general (the book's example asks
+        10 and 60 degrees and gets 9.0 to 65.1).
 
     Raises
     ------
     RequirementError
-        KW3 <= 1, a zero swing, a crank <= 0, or a crank that cannot make a full turn
-        between the extreme positions (or they lie on different assembly branches).
+        KW3 <= 1, a swing PSI = BETA + GMAX - GMIN that is not positive (E-DSNTZ2-4),
+        a crank <= 0, or a crank that cannot make a full turn between the extreme
+        positions (or they lie on different assembly branches).
     SingularError
         The lines C1A and C2A are parallel.
     """)
@@ -303,13 +330,14 @@ _DSNTZ3_FORMAT = (
 
 def _dsntz3_report(i, o):
     return fortran_write(_DSNTZ3_FORMAT, [i["XB1"], i["YB1"], i["XB2"], i["YB2"], i["FI1"],
-                                   i["ALC1"], *o])
+                                   i["ALC1"], *o[:3]])
 
 
 DSNTZ3 = book_routine(
     "DSNTZ3", listing="III.4", lines="L1185-1264",
     inputs=["XB1", "YB1", "XB2", "YB2", "XC1", "YC1", "XC2", "YC2", "FI1", "ALC1", "AAA"],
-    outputs=["L1", "L3", "LO"], chapter="synthesis", report=_dsntz3_report,
+    outputs=["L1", "L3", "LO", "GMIN_TURN", "GMAX_TURN"], chapter="synthesis",
+    report=_dsntz3_report,
     messages={
         ST_REQUIREMENT: "the two positions of B (or of C) coincide, or a length comes out "
                         "zero",
@@ -348,8 +376,10 @@ DSNTZ3 = book_routine(
 
     Returns
     -------
-    DSNTZ3(L1, L3, LO)
-        Crank AB, rocker DC, frame AD.
+    DSNTZ3(L1, L3, LO, GMIN_TURN, GMAX_TURN)
+        Crank AB, rocker DC, frame AD; ``GMIN_TURN``, ``GMAX_TURN`` (sarkp extension):
+        the extreme transmission angles (angle BCD, coupler B1C1) over a full crank
+        turn.
 
     Notes
     -----
@@ -373,12 +403,13 @@ _DSNTZK_FORMAT = ("(1X,'ДЛИНА КРИВОШИПА L1 = ',F6.4,'МЕЖЦЕН�
 
 
 def _dsntzk_report(i, o):
-    return fortran_write(_DSNTZK_FORMAT, list(o))
+    return fortran_write(_DSNTZK_FORMAT, list(o[:3]))
 
 
 DSNTZK = book_routine(
     "DSNTZK", listing="III.6", lines="L1397-1437",
-    inputs=["KW3", "S", "H", "Q", "AAA"], outputs=["L1", "LO", "L3"],
+    inputs=["KW3", "S", "H", "Q", "AAA"],
+    outputs=["L1", "LO", "L3", "GMIN_TURN", "GMAX_TURN"],
     chapter="synthesis", lengths=["S"], nonnegative=["H"],
     checks=(_KW3_ABOVE_ONE,), report=_dsntzk_report,
     messages={ST_REQUIREMENT: "the reserve H is not smaller than the slotted link "
@@ -414,8 +445,10 @@ DSNTZK = book_routine(
 
     Returns
     -------
-    DSNTZK(L1, LO, L3)
-        Crank, centre distance, slotted-link length.
+    DSNTZK(L1, LO, L3, GMIN_TURN, GMAX_TURN)
+        Crank, centre distance, slotted-link length; ``GMIN_TURN``, ``GMAX_TURN``
+        (sarkp extension): both pi/2, since the block on the crank pin pushes the
+        slotted link along the normal to the slot, the direction its point moves in.
 
     Raises
     ------
