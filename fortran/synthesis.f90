@@ -312,7 +312,7 @@ contains
     if (.not. (kw3 > 1.0_dp .and. l3 > 0.0_dp)) return
     beta = pi*(kw3 - 1.0_dp)/(kw3 + 1.0_dp)
     psi = beta + gmax - gmin
-    ! E-DSNTZ2-4: the construction turns the rocker counter-clockwise by PSI from C1 to C2;
+    ! E-DSNTZ2-4 (L1143): the construction turns the rocker counter-clockwise by PSI from C1 to C2;
     ! with PSI <= 0 the lines through C1, C2 make the angles pi - GMIN, pi - GMAX with the
     ! rocker, and no four-bar has GMIN at the extended and GMAX at the folded position
     ! (any that has swings by BETA + GMAX - GMIN): the requirement cannot be met.
