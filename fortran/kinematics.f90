@@ -20,10 +20,34 @@
 ! Additions to the book (it reports no failure at all: ARCOS, SQRT or a division failed at
 ! run time): a trailing IER, set to a prmtr status code --
 !   st_assembly     the links do not reach (the arccos/arcsin/sqrt argument is out of range);
-!   st_singular     GELG IER = -1 (dead centre, parallel guides, ...) or an undefined position;
-!   st_significance GELG IER > 0 (pivot <= 1e-4 of the largest coefficient), result kept;
-!   st_ok.
-! On st_assembly / st_singular every output is 0 (never NaN).
+!   st_singular     GELG IER = -1, an undefined position, or (dead-centre policy below) no
+!                   significant digit of the result is left;
+!   st_range        a result is not a finite double (an overflow);
+!   st_digits + d   (101..107) the result is kept, with about d significant digits;
+!   st_ok           at least 8 significant digits.
+! On a failure every output is 0 (never NaN).
+!
+! The dead-centre policy (one rule for every routine of this module).  Each routine
+! estimates the relative error EST of its results from what it solved:
+!   * a 2x2 system (solve2e): the perturbation bound |A^-1|_F (|dA| |y| + |db|) with the
+!     entries' errors dA (their directions known to a few roundings, plus, in DKNMA, the
+!     sensitivity of the position found inside) and the right-hand side's db (a few
+!     roundings of the sum of the moduli of its terms, plus the errors of the velocities
+!     an acceleration system is built from), relative to max(|y|, size of the data);
+!   * a position: how far it moves when its inputs move by one rounding, i.e. its
+!     sensitivity (dc/sqrt(1 - c**2) for an angle found from a cosine or sine c known to
+!     dc, sqrt(2 dc) at the flat position; the conditioning of the 2x2 system for DPRM4,
+!     DPRM5), in radians of the link directions or relative to the group's size;
+!   * kind 5 in the guide's frame (solve_kind5), where a small T2 costs no digits.
+! EST is the largest of these, and d = floor(-log10(EST)) is the number of correct
+! significant digits it vouches for (an error below 10**-d of the value changes the d-th
+! digit by at most a unit).  Then: d < 1 (EST > 0.1): st_singular -- not even the first
+! digit is assured, so nothing is returned (this is where the book returned rounding
+! noise such as W2 = 2.6e15 at a dead centre); 1 <= d <= 7: st_digits + d, the results are
+! kept and the Python layer warns with d; d >= 8: nothing is said.  GELG's own EPS = 1e-4
+! pivot test stays in GELG (its IER), as in the book; it decides no status here.  The
+! estimate is tested to bound the true error on sequences approaching every kind's dead
+! centre (tests/test_reliability.py, mpmath references).
 !
 ! Numerical rewrites that keep the book's mathematics (no ERRATA entry, the formulas are the
 ! same): the triangle angles of DPRM1 and DKNMA1 are computed as atan2(height, projection)
@@ -31,7 +55,11 @@
 ! digits near a flat triangle); the foot of the perpendicular in DPRM2/DKNMA2 is computed by
 ! projection on the guide's unit vector instead of through TAN(FIM) (which fails for a
 ! vertical guide); DPRM4/DKNMA4 write the guide lines as n.B = n.A + offset (the printed rows
-! multiplied by COS(FI)), so that a vertical guide works.
+! multiplied by COS(FI)), so that a vertical guide works.  DPRM2, DPRM4 and DKNMA1-DKNMA4
+! work in coordinates relative to the group's own points (A, or the guide's point K), so
+! that a mechanism far from the origin keeps its digits (E-DKNMA1-3, E-DKNMA2-5,
+! E-DKNMA4-5 for the directions the book took from absolute coordinates); lengths of
+! 1e-300 or 1e300 neither underflow nor overflow where the answer is a double.
 !
 ! ERRATA ids of this chapter: E-<ROUTINE>-<n>, listed in docs/ERRATA.md.
 module kinematics
