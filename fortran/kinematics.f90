@@ -1388,7 +1388,9 @@ contains
   ! ERRATA: E-DKNMA5-1 (header VC, AC for VC, ALC), E-DKNMA5-2 (FIRC = DUGL2(RC, PID2, WM)
   ! -- wrong arguments; the direction VM->C as in DSKOR5 L1962), E-DKNMA5-3 (OCR ALMC,
   ! DUGL4(FIM + ETA2), PI..), E-DKNMA5-4 (author: BCM = DUGL3(FIRC, PI - ATAN(EM/WM**2), EM)
-  ! lacks ABS, and EM = 0 gives BCM = 0 instead of FIRC + PI; fixed with acc_dir).
+  ! lacks ABS, and EM = 0 gives BCM = 0 instead of FIRC + PI; fixed with acc_dir),
+  ! E-DSKOR5-2 (solved in the guide's frame), E-DKNMA5-6 (Coriolis difference from the
+  ! velocity equation).
   subroutine dknma5(xa, ya, fim, xc, yc, rz3, eta2, eta3, xr, yr, wm, em, vc3, alc3, ac3, bc3, &
                     analog, vc2c3, alc2c3, vc2cm, alc2cm, vc, alc, ac2c3k, bc2c3k, ac2cmk, &
                     bc2cmk, ac2c3r, bc2c3r, ac2cmr, bc2cmr, ac, bc, ier)
@@ -1397,7 +1399,8 @@ contains
     real(dp), intent(out) :: vc2c3, alc2c3, vc2cm, alc2cm, vc, alc, ac2c3k, bc2c3k, ac2cmk
     real(dp), intent(out) :: bc2cmk, ac2c3r, bc2c3r, ac2cmr, bc2cmr, ac, bc
     integer, intent(out) :: ier
-    real(dp) :: rc, vcm, firc, alcm, y1, y2, acm, bcm, a, b, sb, relv, rela, ev, est, sv1, sv2
+    real(dp) :: rc, vcm, firc, alcm, y1, y2, acm, bcm, a, b, sb, relv, rela, est, sv1, sv2
+    real(dp) :: sbv, bv1, bv2
     integer :: st2
     vc2c3 = 0.0_dp; alc2c3 = 0.0_dp; vc2cm = 0.0_dp; alc2cm = 0.0_dp; vc = 0.0_dp; alc = 0.0_dp
     ac2c3k = 0.0_dp; bc2c3k = 0.0_dp; ac2cmk = 0.0_dp; bc2cmk = 0.0_dp; ac2c3r = 0.0_dp
@@ -1406,16 +1409,16 @@ contains
     vcm = abs(wm)*rc
     firc = dugl2(xr, yr, xc, yc)                  ! E-DKNMA5-2: book DUGL2(RC, PID2, WM)
     alcm = dugl3(firc, pid2, wm)
-    sb = vcm + abs(vc3)
-    ! y1*e(FIM + ETA2) - y2*e(FIM) = v_CM - v_C3, solved in the guide's frame (E-DKNMA5-5:
+    sbv = vcm + abs(vc3)
+    ! y1*e(FIM + ETA2) - y2*e(FIM) = v_CM - v_C3, solved in the guide's frame (E-DSKOR5-2:
     ! the book's matrix holds COS(FIM + ETA2), which rounds a small ETA2 against FIM)
-    call solve_kind5(eta2, vcm*cos(alcm - fim) - vc3*cos(alc3 - fim), &
-                     vcm*sin(alcm - fim) - vc3*sin(alc3 - fim), &
-                     4.0_dp*uround*(2.0_dp + abs(fim) + max(abs(alcm), abs(alc3)))*sb, sb, &
+    bv1 = vcm*cos(alcm - fim) - vc3*cos(alc3 - fim)
+    bv2 = vcm*sin(alcm - fim) - vc3*sin(alc3 - fim)
+    call solve_kind5(eta2, bv1, bv2, &
+                     4.0_dp*uround*(2.0_dp + abs(fim) + max(abs(alcm), abs(alc3)))*sbv, sbv, &
                      y1, y2, ier, relv)
     if (failed(ier)) return
     est = relv
-    ev = relv*max(hypot(y1, y2), sb)
     sv1 = book_sign(1.0_dp, y1)                   ! ALC2C3 = FIM + ETA2 (+1) or that - pi (-1)
     sv2 = book_sign(1.0_dp, y2)                   ! ALC2CM = FIM (+1) or FIM - pi (-1)
     vc2c3 = abs(y1)
@@ -1430,14 +1433,16 @@ contains
       bc2c3k = dugl3(alc2c3, pid2, wm)
       bc2cmk = dugl3(alc2cm, pid2, wm)
       ac2cmk = 2.0_dp*vc2cm*abs(wm)
-      sb = acm + ac2cmk + abs(ac3) + ac2c3k
+      ! E-DKNMA5-6: the two Coriolis terms nearly cancel when the slot is nearly parallel
+      ! to the guide (both grow like 1/sin(ETA2)); their difference is taken from the
+      ! velocity equation instead, a^k_2M - a^k_23 = -2 WM k x (v_CM - v_C3), whose
+      ! components in the guide's frame are (2 WM bv2, -2 WM bv1)
+      sb = acm + abs(ac3) + 2.0_dp*abs(wm)*sbv
       call solve_kind5(eta2, &
-          acm*cos(bcm - fim) + ac2cmk*cos(bc2cmk - fim) - ac3*cos(bc3 - fim) &
-          - ac2c3k*cos(bc2c3k - fim), &
-          acm*sin(bcm - fim) + ac2cmk*sin(bc2cmk - fim) - ac3*sin(bc3 - fim) &
-          - ac2c3k*sin(bc2c3k - fim), &
-          4.0_dp*uround*(6.0_dp + abs(fim) + max(abs(bcm), abs(bc2cmk), abs(bc3), abs(bc2c3k)))*sb &
-          + 4.0_dp*abs(wm)*ev, sb, y1, y2, st2, rela)
+          acm*cos(bcm - fim) - ac3*cos(bc3 - fim) + 2.0_dp*wm*bv2, &
+          acm*sin(bcm - fim) - ac3*sin(bc3 - fim) - 2.0_dp*wm*bv1, &
+          4.0_dp*uround*(6.0_dp + abs(fim) + max(abs(bcm), abs(bc3), abs(alcm), abs(alc3)))*sb, &
+          sb, y1, y2, st2, rela)
       ier = st2
       if (failed(ier)) then
         vc2c3 = 0.0_dp; alc2c3 = 0.0_dp; vc2cm = 0.0_dp; alc2cm = 0.0_dp; vc = 0.0_dp
