@@ -71,6 +71,41 @@ def _refs():
     R = {}
 
     R["DUGL2"] = lambda a: [mp.atan2(M(a[3]) - M(a[1]), M(a[2]) - M(a[0]))]
+    R["DUGL1"] = R["DUGL2"]                               # compared modulo 2 pi
+    R["DUGL5"] = lambda a: [mp.atan2(M(a[1]), M(a[0]))]   # compared modulo 2 pi
+    R["DUGOL"] = lambda a: [M(a[0])]                      # compared modulo 2 pi
+    R["DUGL3"] = lambda a: [M(a[0]) + (1 if a[2] >= 0 else -1) * abs(M(a[1]))]
+    R["DUGL4"] = lambda a: [M(a[0]) - M(a[1]) if a[2] < 0 else M(a[0])]
+
+    def dintgr(a):
+        m, h, nomer, y = a[0], M(a[1]), a[2], [M(v) for v in a[3]]
+        f = [M(0)] * m
+        if nomer == 1:                                   # corrected mode: E-DINTGR-4
+            f[1] = h * (5 * y[0] + 8 * y[1] - y[2]) / 12 if m >= 3 else h * (y[0] + y[1]) / 2
+            for k in range(2, m):
+                f[k] = f[k - 2] + (y[k - 2] + 4 * y[k - 1] + y[k]) * h / 3
+        for k in range(1, m):
+            if nomer == 2:
+                f[k] = f[k - 1] + h * (y[k - 1] + y[k]) / 2
+            elif nomer == 3:
+                f[k] = f[k - 1] + h * y[k]
+        return f
+    R["DINTGR"] = dintgr
+
+    def dfrncl(a):
+        m, h, y = a[0], M(a[1]), [M(v) for v in a[2]]
+        d = [(y[k + 1] - y[k]) / h for k in range(m - 1)]
+        return [d[0]] + d                                # corrected mode: E-DFRNCL-1
+    R["DFRNCL"] = dfrncl
+
+    def dsntzk(a):
+        kw3, s, h, q = M(a[0]), M(a[1]), M(a[2]), a[3]
+        beta = mp.pi / 2 * (kw3 - 1) / (kw3 + 1)
+        lam, l3 = (1 / mp.sin(beta), s / 2) if q == 0 else (mp.sin(beta),
+                                                            s / (2 * mp.sin(beta)))
+        lo = (l3 - h) / (1 + lam)
+        return [lam * lo, lo, l3]
+    R["DSNTZK"] = dsntzk
     R["DVKT"] = lambda a: [mp.hypot(M(a[2]) - M(a[0]), M(a[3]) - M(a[1])),
                            mp.atan2(M(a[3]) - M(a[1]), M(a[2]) - M(a[0]))]
     R["DMOMNT"] = lambda a: [M(a[0]) * M(a[2]) * mp.sin(M(a[3]) - M(a[1]))]
@@ -276,8 +311,14 @@ def _got(name, args, out):
     o = out
     if name == "GELG":
         return list(np.atleast_1d(o.R))
-    if name in ("DUGL2",):
+    if name in ("DUGL1", "DUGL2", "DUGL3", "DUGL4", "DUGL5", "DUGOL"):
         return [o]
+    if name == "DINTGR":
+        return list(o.FINT)
+    if name == "DFRNCL":
+        return list(o.FDIF)
+    if name == "DSNTZK":
+        return [o.L1, o.LO, o.L3]
     if name in ("DMOMNT", "DOMEGA"):
         return [o]
     if name == "DVKT":
@@ -328,7 +369,8 @@ def _got(name, args, out):
     return None
 
 
-ANGLES = {"DUGL2": {0}, "DVKT": {1}, "DPRM3": {0}}
+ANGLES = {"DUGL1": {0}, "DUGL2": {0}, "DUGL5": {0}, "DUGOL": {0}, "DVKT": {1},
+          "DPRM3": {0}}
 # the magnitudes that share one scale (a vector's components, a group's unknowns)
 
 
