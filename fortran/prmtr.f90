@@ -24,7 +24,7 @@ module prmtr
   integer, parameter, public :: st_singular = 2     ! dead centre / singular system (GELG IER = -1)
   integer, parameter, public :: st_significance = 3 ! GELG IER > 0: loss of significance, result kept
   integer, parameter, public :: st_requirement = 4  ! synthesis requirement no mechanism can meet
-  ! (5 is the Python layer's "missing input": a NaN passed on from a failed earlier step)
+  integer, parameter, public :: st_missing = 5      ! an input was NaN (a failed earlier step)
   integer, parameter, public :: st_range = 6        ! a result is not a finite double (overflow)
   ! 100 + d (d = 1..7): the result was kept, but only about d significant digits are left
   integer, parameter, public :: st_digits = 100
