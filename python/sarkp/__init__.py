@@ -14,6 +14,7 @@ from .synthesis import DSNTZ1, DSNTZ2, DSNTZ3, DSNTZK, DSNTZR
 from .kinematics import (DKNMA1, DKNMA2, DKNMA3, DKNMA4, DKNMA5, DPRM1, DPRM2, DPRM3,
                          DPRM4, DPRM5, DSKOR1, DSKOR2, DSKOR3, DSKOR4, DSKOR5, DUSKR1,
                          DUSKR2, DUSKR3, DUSKR4, DUSKR5)
+from .cams import DKLCHK, DPRFLK, DPRFLP, DPRFPL
 
 __version__ = "0.1.0"
 
@@ -30,4 +31,6 @@ __all__ = [
     "DSKOR1", "DSKOR2", "DSKOR3", "DSKOR4", "DSKOR5",
     "DUSKR1", "DUSKR2", "DUSKR3", "DUSKR4", "DUSKR5",
     "DKNMA1", "DKNMA2", "DKNMA3", "DKNMA4", "DKNMA5",
+    # chapter 5
+    "DKLCHK", "DPRFLP", "DPRFPL", "DPRFLK",
 ]
