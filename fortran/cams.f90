@@ -35,13 +35,12 @@ module cams
   implicit none
   private
   public :: dklchk, dprflp, dprfpl, dprflk
-  public :: ro, excst, etao
 
   ! COMMON /KLCHK/ ALD, BETA, W1, RSCNTR, RZMR, INDEX, RO, EXCST, ETAO (L3079): the
   ! results of DKLCHK.  (The inputs are DKLCHK's arguments.)
-  real(dp) :: ro = 0.0_dp        ! r0, radius of the cam (its base circle)
-  real(dp) :: excst = 0.0_dp     ! e, offset of the translating follower (INDEX = 1)
-  real(dp) :: etao = 0.0_dp      ! eta0, initial angle of the rocker (INDEX = 2)
+  real(dp), public :: ro = 0.0_dp      ! r0, radius of the cam (its base circle)
+  real(dp), public :: excst = 0.0_dp   ! e, offset of the translating follower (INDEX = 1)
+  real(dp), public :: etao = 0.0_dp    ! eta0, initial angle of the rocker (INDEX = 2)
 
   real(dp), parameter :: half_pi = 1.5707963267948966_dp
 

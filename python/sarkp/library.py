@@ -209,6 +209,10 @@ class Routine:
     # -- the declaration against the Fortran signature ----------------------------------
     def _bind_fortran(self):
         required, optional, rets = f2py_signature(self.one)
+        # f2py renames arguments that clash with C or its own names (INDEX -> index_bn)
+        self._f2py_name = {_f2py_unbad(a): a for a in required + optional}
+        required, optional = ([_f2py_unbad(a) for a in names] for names in (required, optional))
+        rets = [_f2py_unbad(r) for r in rets]
         fortran_in = [a for a in required + optional if not a.startswith("sarkp_")]
         declared = [a.lower() for a in self.inputs]
         if sorted(fortran_in) != sorted(declared):
@@ -481,7 +485,7 @@ class Routine:
                                      f"shape {a.shape}")
                 self._check_array(arg, a, allow_nan=False)
                 named[arg] = a
-                kw[arg.lower()] = np.array(a, order="F", copy=True)
+                kw[self._f2py_name[arg.lower()]] = np.array(a, order="F", copy=True)
             else:
                 if isinstance(value, (bool, np.bool_)) or not isinstance(
                         value, (int, float, np.integer, np.floating)):
@@ -496,7 +500,7 @@ class Routine:
                                      f"double") from None
                 self._check_value(arg, v)
                 named[arg] = int(v) if arg in self.integers else v
-                kw[arg.lower()] = named[arg]
+                kw[self._f2py_name[arg.lower()]] = named[arg]
         for arg, dims in self.tables.items():
             for axis, d in enumerate(dims):
                 want = named[d] if isinstance(d, str) else d
@@ -526,6 +530,11 @@ class Routine:
         if self.report is not None and args[self._aaa_index] == 0.0:
             print(self.report(named, tuple(out)))
         return self._result(out, Status(status) if on_error == "nan" else None)
+
+
+def _f2py_unbad(name):
+    """The Fortran name of an f2py argument (f2py appends _bn to names such as index)."""
+    return name[:-3] if name.endswith("_bn") else name
 
 
 def _describe(allowed):
