@@ -272,9 +272,8 @@ GAMMA <= pi/4 (ERRATA E-DPRFPL-1).  When ``A[0]`` is the smallest value the prin
 loop never sets L (E-DPRFPL-2); sarkp takes the first point.  The ABS of the printed
 rule is kept: it hides a rule that asks for no radius at all.  Program X calls
 DPRFPL without S (L7467, E-X-DPRFPL-1); Fig. 89's radius needs S, so the signature is
-V.3's.  In as-printed mode (PI = 3.14159) the book's own design of Fig. 36 has
-``ROK = -7e-8`` at its second design point, as the book's -0.00000 shows, and is
-flagged.
+V.3's.  Fig. 36's design (GAMMA = pi/4) has ROK = 0 at two points; sarkp's runs of it
+are not flagged, while the ES EVM's gave -1.3e-6 m at the second (printed -0.00000).
 """)
 
 
