@@ -179,7 +179,7 @@ contains
   !   XA = C SIN(FI) + s' COS(FI),  YA = C COS(FI) - s' SIN(FI),
   !   R1 = SQRT(C**2 + s'**2),  ROK = C + s''.
   ! GAMMA = pi/4 makes ROK = 0 at point L (Fig. 36); the listing's comment asks for a
-  ! GAMMA "greater than PI/4" (L3226), which makes ROK < 0 there (E-DPRFPL-1).
+  ! GAMMA "greater than PI/4" (L3225), which makes ROK < 0 there (E-DPRFPL-1).
   ! When A(1) is the smallest value the printed loop never sets L: L = 1 here
   ! (E-DPRFPL-2).  Program X calls DPRFPL without S (L7467): E-X-DPRFPL-1.
   ! sarkp extension: ROKMIN = min ROK, NCONC = number of points where ROK < 0 beyond

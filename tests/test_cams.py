@@ -388,7 +388,7 @@ def test_rocker_pressure_angle_flag():
 
 def test_flat_follower_concave_profile_is_flagged_E_DPRFPL_1():
     """GAMMA = pi/4 puts ROK = 0 at the design point (Fig. 36); a GAMMA "greater than
-    PI/4", as the listing's comment asks (L3226) and program X uses (pi/3, L7467), makes
+    PI/4", as the listing's comment asks (L3225) and program X uses (pi/3, L7467), makes
     the profile concave there: a flat face cannot follow it, NCONC > 0."""
     fi, a, v, s, W = v5_tables()
     design = DPRFPL(51, math.pi / 4, W, fi, a, v, s)

@@ -267,7 +267,7 @@ ValueError
 
 Notes
 -----
-The listing's comment asks for "GAMMA greater than PI/4" (L3226); a convex profile needs
+The listing's comment asks for "GAMMA greater than PI/4" (L3225); a convex profile needs
 GAMMA <= pi/4 (ERRATA E-DPRFPL-1).  When ``A[0]`` is the smallest value the printed
 loop never sets L (E-DPRFPL-2); sarkp takes the first point.  The ABS of the printed
 rule is kept: it hides a rule that asks for no radius at all.  Program X calls
