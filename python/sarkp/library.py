@@ -103,8 +103,9 @@ class Check:
         self.message = message
 
 
-def f2py_signature(wrapper):
-    """(required arguments, optional arguments, returned names) of an f2py wrapper."""
+def f2py_signature(wrapper, raw=False):
+    """(required arguments, optional arguments, returned names) of an f2py wrapper, with
+    the Fortran names (f2py appends ``_bn`` to names such as ``index``; ``raw`` keeps it)."""
     first = wrapper.__doc__.strip().splitlines()[0]
     m = re.match(r"(?:(.*?)\s*=\s*)?\w+\((.*)\)$", first)
     rets = [r.strip() for r in (m.group(1) or "").split(",") if r.strip()]
@@ -114,7 +115,9 @@ def f2py_signature(wrapper):
         args, opt = args.split("[", 1)
         optional = [a.strip() for a in opt.rstrip("]").split(",") if a.strip()]
     required = [a.strip() for a in args.split(",") if a.strip()]
-    return required, optional, rets
+    if raw:
+        return required, optional, rets
+    return ([_f2py_unbad(a) for a in names] for names in (required, optional, rets))
 
 
 def _caller_stacklevel():
@@ -208,11 +211,10 @@ class Routine:
 
     # -- the declaration against the Fortran signature ----------------------------------
     def _bind_fortran(self):
-        required, optional, rets = f2py_signature(self.one)
         # f2py renames arguments that clash with C or its own names (INDEX -> index_bn)
-        self._f2py_name = {_f2py_unbad(a): a for a in required + optional}
-        required, optional = ([_f2py_unbad(a) for a in names] for names in (required, optional))
-        rets = [_f2py_unbad(r) for r in rets]
+        raw_required, raw_optional, _ = f2py_signature(self.one, raw=True)
+        self._f2py_name = {_f2py_unbad(a): a for a in raw_required + raw_optional}
+        required, optional, rets = f2py_signature(self.one)
         fortran_in = [a for a in required + optional if not a.startswith("sarkp_")]
         declared = [a.lower() for a in self.inputs]
         if sorted(fortran_in) != sorted(declared):
