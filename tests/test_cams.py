@@ -622,3 +622,29 @@ def test_cli_diff_and_run(capsys):
     assert capsys.readouterr().out.rstrip().endswith("296 of 296 cells match")
     assert main(["book", "run", "V.5-flat", "--mode", "corrected"]) == 0
     assert "РАДИУС КУЛАЧКОВОЙ ШАЙБЫ-  0.33809" in capsys.readouterr().out
+
+
+def test_plots_have_labelled_axes(tmp_path, capsys):
+    """``sarkp book run V.5 --plots DIR``: the profile and the diagrams as PNG, every axis
+    labelled with its quantity and unit (skipped without matplotlib, an optional extra)."""
+    pytest.importorskip("matplotlib")
+    from sarkp import plot
+    from sarkp.cli import main
+    assert main(["book", "run", "V.5", "--plots", str(tmp_path)]) == 0
+    assert main(["book", "run", "V.5-flat", "--plots", str(tmp_path)]) == 0
+    capsys.readouterr()
+    names = sorted(p.name for p in tmp_path.iterdir())
+    assert names == ["v5_alfa_rok.png", "v5_flat_profile.png", "v5_flat_rok.png",
+                     "v5_profile.png"]
+    assert all((tmp_path / n).read_bytes()[:4] == b"\x89PNG" for n in names)
+    t = prog_v_5.compute()
+    figures_drawn = [plot.cam_profile(t["XPRFL"], t["YPRFL"], t["FI"], offset=t["EXCTST"]),
+                     plot.cam_diagrams(t["FI"], t["RKRZVN"], t["ALFA"], ALD=0.523)]
+    labels = [(ax.get_xlabel(), ax.get_ylabel()) for f in figures_drawn for ax in f.axes]
+    assert labels[0] == ("x, m", "y, m")
+    assert all(y.endswith((", rad", ", m")) for _, y in labels)
+    assert labels[-1][0] == "cam angle φ1, rad"
+    # the follower's tip drawn in the profile picture is r0 + s at the highest lift
+    k = int(np.argmax(np.hypot(t["XPRFL"], t["YPRFL"])))
+    tip = figures_drawn[0].axes[0].lines[-2].get_xydata()[0]
+    np.testing.assert_allclose(tip, [t["EXCTST"], t["RKSH"] + t["S"][k]], atol=1e-12)

@@ -287,3 +287,27 @@ def emulated_cells() -> dict:
     """Fig. 35 as the ES EVM computed it (see :func:`emulate`), keyed as :func:`cells`."""
     return _cells({k: (np.array(v, dtype=float) if isinstance(v, list) else float(v))
                    for k, v in emulate().items()})
+
+
+def plots(directory) -> list:
+    """Write the profile (with the base circle and the follower at the highest lift) and
+    the pressure angle and radius of curvature against FI as PNG files in ``directory``;
+    return their paths.  Needs matplotlib."""
+    from pathlib import Path
+
+    from .. import plot
+
+    t = compute()
+    directory = Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    mode = get_mode()
+    paths = [directory / "v5_profile.png", directory / "v5_alfa_rok.png"]
+    plot.save(plot.cam_profile(t["XPRFL"], t["YPRFL"], t["FI"], follower="knife",
+                               offset=t["EXCTST"],
+                               base_radius=math.hypot(t["RKSH"], t["EXCTST"]),
+                               title=f"V.5: knife-edge follower, offset e = "
+                                     f"{t['EXCTST']:.5f} m ({mode})"), paths[0])
+    plot.save(plot.cam_diagrams(t["FI"], t["RKRZVN"], t["ALFA"], ALD=ALFAD,
+                                title=f"V.5: pressure angle and radius of curvature "
+                                      f"({mode})"), paths[1])
+    return paths

@@ -70,3 +70,23 @@ def render() -> str:
     lines = [fortran_write(FORMAT_RKSH, [t["RKSH"]]), fortran_write(FORMAT_HEAD)]
     lines += [fortran_write(FORMAT_ROW, [t[c][k] for c in COLUMNS]) for k in range(N)]
     return "\n".join(lines)
+
+
+def plots(directory) -> list:
+    """Write the profile with the flat follower at the highest lift, and the radius of
+    curvature against FI, as PNG files in ``directory``; return their paths."""
+    from pathlib import Path
+
+    from .. import plot
+
+    t = compute()
+    directory = Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    mode = get_mode()
+    paths = [directory / "v5_flat_profile.png", directory / "v5_flat_rok.png"]
+    plot.save(plot.cam_profile(t["XPRFL"], t["YPRFL"], t["FI"], follower="flat",
+                               base_radius=t["RKSH"],
+                               title=f"V.5-FLAT: flat-faced follower ({mode})"), paths[0])
+    plot.save(plot.cam_diagrams(t["FI"], t["RKRZVN"],
+                                title=f"V.5-FLAT: radius of curvature ({mode})"), paths[1])
+    return paths
