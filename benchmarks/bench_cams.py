@@ -38,7 +38,7 @@ OUT = HERE / "results"
 W, A1 = 5.0, 15.0
 FIU, FID, FIV = 5 * math.pi / 9, 5 * math.pi / 18, 5 * math.pi / 9
 RO, E = 0.28, 0.096
-SIZES = (11, 31, 101, 301, 1001, 3001, 10001, 30001, 100001)
+SIZES = (11, 31, 51, 101, 301, 1001, 3001, 10001, 30001, 100001)
 METHODS = {1: "Simpson", 2: "trapezoids", 3: "rectangles"}
 
 
