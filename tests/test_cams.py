@@ -648,3 +648,27 @@ def test_plots_have_labelled_axes(tmp_path, capsys):
     k = int(np.argmax(np.hypot(t["XPRFL"], t["YPRFL"])))
     tip = figures_drawn[0].axes[0].lines[-2].get_xydata()[0]
     np.testing.assert_allclose(tip, [t["EXCTST"], t["RKSH"] + t["S"][k]], atol=1e-12)
+
+
+def test_points_are_independent_so_the_step_need_not_be_uniform():
+    """DPRFLP, DPRFPL (given its RKSH) and DPRFLK compute every point on its own: a table
+    with non-uniform, even shuffled, cam angles gives the same point for the same angle.
+    (A non-uniform step is therefore not an error here; DINTGR takes one step H.)"""
+    W = 3.0
+    fi = np.sort(np.random.default_rng(5).uniform(0.0, TWO_PI, 40))
+    a, v, s = tables(poly345, fi, W)
+    order = np.random.default_rng(6).permutation(40)
+    p = DPRFLP(40, 0.12, 0.03, W, fi, a, v, s)
+    q = DPRFLP(40, 0.12, 0.03, W, fi[order], a[order], v[order], s[order])
+    for name in ("XA", "YA", "R1", "DELTA", "ALFA", "ROK"):
+        np.testing.assert_array_equal(getattr(p, name)[order], getattr(q, name))
+    c = ROCKER
+    e2, w2, psi = rocker_tables(poly345, fi)
+    p = DPRFLK(40, c["W1"], c["ETAO"], fi, 0.0, c["L"], c["R"], e2, w2, psi)
+    q = DPRFLK(40, c["W1"], c["ETAO"], fi[order], 0.0, c["L"], c["R"], e2[order],
+               w2[order], psi[order])
+    np.testing.assert_array_equal(p.RKRZVN[order], q.RKRZVN)
+    p = DPRFPL(40, 0.6, W, fi, a, v, s)
+    single = DPRFPL(1, 0.6, W, fi[7:8], a[7:8], v[7:8], s[7:8])
+    assert single.RKSH != p.RKSH            # the radius depends on the whole table ...
+    np.testing.assert_array_equal(p.RKSH + s + a / W**2, p.ROK)   # ... the points do not

@@ -170,7 +170,8 @@ EXCNTR : float
 W : float
     Angular velocity of the cam (1/s), > 0.
 FI : array_like, shape (N,)
-    Cam angles (rad).
+    Cam angles (rad), in any order and spacing: every point is computed on its own
+    (only the tables' integration, e.g. by DINTGR, needs a uniform step).
 A, V, S : array_like, shape (N,)
     Acceleration (m/s^2), velocity (m/s) and displacement (m) of the follower.
 ALD : float, optional
@@ -244,7 +245,8 @@ GAMMA : float
 W : float
     Angular velocity of the cam (1/s), > 0.
 FI : array_like, shape (N,)
-    Cam angles (rad).
+    Cam angles (rad), in any order and spacing: every point is computed on its own
+    (only the tables' integration, e.g. by DINTGR, needs a uniform step).
 A, V, S : array_like, shape (N,)
     Acceleration (m/s^2), velocity (m/s) and displacement (m) of the follower.
 
@@ -326,7 +328,8 @@ W1 : float
 ETAO : float
     Initial angle of the rocker (rad): DKLCHK's ETAO for INDEX = 2.
 FI : array_like, shape (N,)
-    Cam angles (rad).
+    Cam angles (rad), in any order and spacing: every point is computed on its own
+    (only the tables' integration, e.g. by DINTGR, needs a uniform step).
 RO : float
     Radius of the cam; not used, as printed.
 L : float
