@@ -98,13 +98,16 @@ def cam_profile(XA, YA, FI, *, position=None, follower="knife", offset=0.0,
     return figure
 
 
-def _clip(values, spread=6.0):
+def _clip(values, spread=3.0):
     """y limits that keep the bulk of ``values`` visible (a radius of curvature runs off
-    to infinity where the curvature changes sign)."""
+    to infinity where the curvature changes sign): the data's range, cut at ``spread``
+    times the 10-90 percentile range beyond those percentiles."""
     v = np.asarray(values, dtype=float)
     lo, hi = np.percentile(v, [10, 90])
     pad = spread * max(hi - lo, 1e-12)
-    return lo - pad, hi + pad
+    low, high = max(v.min(), lo - pad), min(v.max(), hi + pad)
+    margin = 0.08 * max(high - low, 1e-12)
+    return low - margin, high + margin
 
 
 def cam_diagrams(FI, ROK, ALFA=None, *, ALD=None, title=""):
