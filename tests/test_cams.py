@@ -15,6 +15,7 @@ import pytest
 
 import sarkp
 import sarkp.book
+from sarkp.book import figures, prog_v_5, prog_v_5_flat
 from sarkp import DINTGR, DKLCHK, DPRFLK, DPRFLP, DPRFPL, RequirementError, SarkpError, \
     SingularError
 
@@ -69,15 +70,13 @@ def tables(law, phi, W, **kw):
     return s2 * W**2, s1 * W, s
 
 
-def test_angles(law, count=9, margin=0.05):
+def sample_angles(law, count=9, margin=0.05):
     """Cam angles away from the law's phase boundaries (finite differences need smoothness)."""
     phi = np.linspace(0.1, TWO_PI - 0.1, count)
     for b in BOUNDARIES[law]:
         phi = np.where(np.abs(phi - b) < margin, phi + 2 * margin, phi)
     return phi
 
-
-test_angles.__test__ = False
 
 # ---- finite differences on 5-point stencils ---------------------------------------------
 
@@ -210,7 +209,7 @@ def test_knife_edge_follower_on_the_profile_recovers_the_motion(law):
     fi = np.linspace(0.0, TWO_PI, FINE, endpoint=False)
     a, v, s = tables(law, fi, W)
     p = DPRFLP(FINE, RO, E, W, fi, a, v, s)
-    for phi in test_angles(law) + 0.5 * TWO_PI / FINE:
+    for phi in sample_angles(law) + 0.5 * TWO_PI / FINE:
         x, y = rotate(p.XA, p.YA, phi)
         f = x - E
         ks = np.flatnonzero((f[:-1] * f[1:] <= 0) & (y[:-1] > 0))
@@ -229,7 +228,7 @@ def test_flat_follower_on_the_profile_recovers_the_motion(law):
     a, v, s = tables(law, fi, W)
     p = DPRFPL(fi.size, math.pi / 5, W, fi, a, v, s)
     assert p.NCONC == 0 and p.ROKMIN > 0
-    for phi in test_angles(law) + 0.5 * TWO_PI / fi.size:
+    for phi in sample_angles(law) + 0.5 * TWO_PI / fi.size:
         x, y = rotate(p.XA, p.YA, phi)
         k = int(np.argmax(y))
         cubic = cubic_through(y[k - 1:k + 3], 0)
@@ -257,7 +256,7 @@ def test_rocker_on_the_profile_recovers_the_motion(law):
     fi = np.linspace(0.0, TWO_PI, FINE, endpoint=False)
     e2, w2, psi = rocker_tables(law, fi)
     p = DPRFLK(FINE, c["W1"], c["ETAO"], fi, 0.0, c["L"], c["R"], e2, w2, psi)
-    for phi in test_angles(law) + 0.5 * TWO_PI / FINE:
+    for phi in sample_angles(law) + 0.5 * TWO_PI / FINE:
         x, y = rotate(p.XA, p.YA, phi)
         f = np.hypot(x - c["L"], y) - c["R"]
         ks = np.flatnonzero(f[:-1] * f[1:] <= 0)
@@ -278,7 +277,7 @@ def test_knife_edge_pressure_angle_and_curvature(law):
     """ALFA is the angle between the profile's normal at the tip and the follower's axis
     (eq. (5.2)); ROK is the radius of curvature of the profile curve (E-DPRFLP-2)."""
     W, RO, E = 3.0, 0.12, -0.02
-    fi = stencil_angles(test_angles(law))
+    fi = stencil_angles(sample_angles(law))
     a, v, s = tables(law, fi, W)
     p = DPRFLP(fi.size, RO, E, W, fi, a, v, s)
     tx, ty, qx, qy = derivatives(p.XA, p.YA)
@@ -297,7 +296,7 @@ def test_flat_follower_normal_is_the_axis_and_curvature(law):
     axis (pressure angle 0), the tangent is (RKSH + s + s'') times the face direction, so
     ROK = RKSH + s + s'' is the signed radius of curvature (L3254)."""
     W = 2.0
-    fi = stencil_angles(test_angles(law))
+    fi = stencil_angles(sample_angles(law))
     a, v, s = tables(law, fi, W)
     p = DPRFPL(fi.size, math.pi / 5, W, fi, a, v, s)
     tx, ty, qx, qy = derivatives(p.XA, p.YA)
@@ -315,7 +314,7 @@ def test_rocker_pressure_angle_and_curvature_E_DPRFLK_2(law):
     (perpendicular to O2-A), eq. (5.5); RKRZVN with the rebuilt C1 is the radius of
     curvature of the profile curve (the printed C1, L3312-3313, is not valid Fortran)."""
     c = ROCKER
-    fi = stencil_angles(test_angles(law))
+    fi = stencil_angles(sample_angles(law))
     e2, w2, psi = rocker_tables(law, fi)
     p = DPRFLK(fi.size, c["W1"], c["ETAO"], fi, 0.0, c["L"], c["R"], e2, w2, psi)
     tx, ty, qx, qy = derivatives(p.XA, p.YA)
@@ -486,8 +485,6 @@ def test_other_bad_inputs_name_the_argument():
 
 
 # ---- program V.5 and Figs. 35-36 ------------------------------------------------------------
-
-from sarkp.book import figures, prog_v_5, prog_v_5_flat  # noqa: E402
 
 
 def _printed(number):
