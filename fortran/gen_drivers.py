@@ -241,11 +241,12 @@ def wrap_list(names, indent="      "):
 def scalar_driver(mod, p, variables):
     w = []
     commons = [variables[c] for c in p.commons]
-    names = ["sarkp_mode"] + p.argnames + [c.name for c in commons]
+    # the status comes last, after the COMMON results (Python reads it as the last result)
+    names = (["sarkp_mode"] + [a for a in p.argnames if a != p.status_arg]
+             + [c.name for c in commons])
     if p.kind == "function":
         names.append("fres")
-    if p.status_arg is None:
-        names.append("sarkp_status")
+    names.append(p.status_arg or "sarkp_status")
     w.append(f"  subroutine {p.name}_1({wrap_list(names)})")
     w.append("    integer, intent(in) :: sarkp_mode")
     for a in p.argnames:

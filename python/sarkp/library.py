@@ -103,8 +103,9 @@ class Check:
         self.message = message
 
 
-def f2py_signature(wrapper):
-    """(required arguments, optional arguments, returned names) of an f2py wrapper."""
+def f2py_signature(wrapper, raw=False):
+    """(required arguments, optional arguments, returned names) of an f2py wrapper, with
+    the Fortran names (f2py appends ``_bn`` to names such as ``index``; ``raw`` keeps it)."""
     first = wrapper.__doc__.strip().splitlines()[0]
     m = re.match(r"(?:(.*?)\s*=\s*)?\w+\((.*)\)$", first)
     rets = [r.strip() for r in (m.group(1) or "").split(",") if r.strip()]
@@ -114,7 +115,9 @@ def f2py_signature(wrapper):
         args, opt = args.split("[", 1)
         optional = [a.strip() for a in opt.rstrip("]").split(",") if a.strip()]
     required = [a.strip() for a in args.split(",") if a.strip()]
-    return required, optional, rets
+    if raw:
+        return required, optional, rets
+    return ([_f2py_unbad(a) for a in names] for names in (required, optional, rets))
 
 
 def _caller_stacklevel():
@@ -211,6 +214,9 @@ class Routine:
 
     # -- the declaration against the Fortran signature ----------------------------------
     def _bind_fortran(self):
+        # f2py renames arguments that clash with C or its own names (INDEX -> index_bn)
+        raw_required, raw_optional, _ = f2py_signature(self.one, raw=True)
+        self._f2py_name = {_f2py_unbad(a): a for a in raw_required + raw_optional}
         required, optional, rets = f2py_signature(self.one)
         fortran_in = [a for a in required + optional if not a.startswith("sarkp_")]
         declared = [a.lower() for a in self.inputs]
@@ -505,7 +511,7 @@ class Routine:
                                      f"shape {a.shape}")
                 self._check_array(arg, a, allow_nan=False)
                 named[arg] = a
-                kw[arg.lower()] = np.array(a, order="F", copy=True)
+                kw[self._f2py_name[arg.lower()]] = np.array(a, order="F", copy=True)
             else:
                 if isinstance(value, (bool, np.bool_)) or not isinstance(
                         value, (int, float, np.integer, np.floating)):
@@ -520,7 +526,7 @@ class Routine:
                                      f"double") from None
                 self._check_value(arg, v)
                 named[arg] = int(v) if arg in self.integers else v
-                kw[arg.lower()] = named[arg]
+                kw[self._f2py_name[arg.lower()]] = named[arg]
         for arg, dims in self.tables.items():
             for axis, d in enumerate(dims):
                 want = named[d] if isinstance(d, str) else d
@@ -566,6 +572,11 @@ def _kind(spec, arg):
     if allowed is not None and not isinstance(allowed, range) and set(allowed) == {-1, 1}:
         return 4
     return 0
+
+
+def _f2py_unbad(name):
+    """The Fortran name of an f2py argument (f2py appends _bn to names such as index)."""
+    return name[:-3] if name.endswith("_bn") else name
 
 
 def _describe(allowed):
