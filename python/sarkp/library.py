@@ -719,8 +719,9 @@ def _fast_path(spec, namespace):
     else:
         result = f"_new(_cls, ({', '.join(f'_o[{i}]' for i in spec._pick)},))"
     # exact types first: a NumPy array among the inputs must not be summed here
-    types = [f"type({a}) is float" if a not in spec.integers
-             else f"(type({a}) is float or type({a}) is int)" for a in spec.inputs]
+    types = [f"type({a}) is _F" if a not in spec.integers
+             else f"(type({a}) is _F or type({a}) is _I)" for a in spec.inputs]
+    namespace.update(_F=float, _I=int)
     return [f"    if {' and '.join(types)}:",
             f"        _t = {' + '.join(spec.inputs)}",
             f"        if {' and '.join(cond)}:",
