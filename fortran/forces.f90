@@ -21,8 +21,10 @@
 ! E-DNMA2-3, E-DNMA3-4, E-DNMA4-2, E-DNMA5-3; tests/test_forces.py checks each).
 !
 ! Additions to the book (it reports no failure): a trailing IER --
-!   st_singular     a division by zero or a singular 2x2 system: the group is at a singular
-!                   position (links or guides aligned) or two of its points coincide;
+!   st_singular     a division by zero or a singular 2x2 system (no digit of the result
+!                   left): the group is at a singular position (links or guides aligned)
+!                   or two of its points coincide;
+!   st_digits + d   near a singular position only about d (1..7) digits are left: kept;
 !   st_significance the denominator (a sine or cosine of the angle between two directions,
 !                   or GELG's pivot) is below 1e-4, the book's GELG tolerance: result kept;
 !   st_ok.
@@ -31,7 +33,7 @@
 ! No as-printed switch here: only PI (3.14159 as printed) differs between the modes; no
 ! printed figure depends on the author errors corrected below.
 module forces
-  use prmtr, only: dp, pi, pid2, st_ok, st_singular, st_significance
+  use prmtr, only: dp, pi, pid2, st_ok, st_singular, st_significance, st_digits
   use operators, only: dugl3, dugl4, dugl5, dvkt, dsmvkt
   use gelg_mod, only: gelg2
   implicit none
@@ -40,9 +42,7 @@ module forces
   public :: dnma1, dnma2, dnma3, dnma4, dnma5
   public :: dugl6
 
-  ! A denominator |s| <= tiny_den (s the sine of an angle between two directions) leaves no
-  ! digit of the result: singular.  Below eps_den (GELG's EPS = 0.0001, L525): a warning.
-  real(dp), parameter :: tiny_den = 16.0_dp*epsilon(1.0_dp)
+  ! The book's GELG tolerance (EPS = 0.0001, L525): a smaller denominator is reported.
   real(dp), parameter :: eps_den = 1.0e-4_dp
 
 contains
@@ -51,11 +51,21 @@ contains
   ! private helpers
   ! ============================================================================
 
-  ! Status of a division by s, a sine or cosine (|s| <= 1) of an angle between directions.
+  ! Status of a division by s, a sine or cosine (|s| <= 1) of an angle between two
+  ! directions that were computed to rounding: the result's relative error is about
+  ! epsilon/|s|, so d = log10(|s|/epsilon) digits are left.  No digit (|s| < 10 epsilon):
+  ! singular.  1 to 7 digits: st_digits + d (kept, with a warning that says how many).
+  ! Otherwise |s| <= 1e-4, the book's GELG tolerance: st_significance; else st_ok.
   pure integer function den_status(s)
     real(dp), intent(in) :: s
-    if (.not. abs(s) > tiny_den) then
+    integer :: d
+    if (.not. abs(s) >= 10.0_dp*epsilon(1.0_dp)) then
       den_status = st_singular
+      return
+    end if
+    d = int(log10(abs(s)/epsilon(1.0_dp)))
+    if (d < 8) then
+      den_status = st_digits + d
     else if (abs(s) <= eps_den) then
       den_status = st_significance
     else
@@ -90,7 +100,7 @@ contains
     x = reshape([a11, a21, a12, a22], [2, 2])
     y = [b1, b2]
     call gelg2(x, y, st_gelg)
-    if (st_gelg /= st_ok) st = st_gelg
+    if (st_gelg == st_singular .or. (st == st_ok .and. st_gelg /= st_ok)) st = st_gelg
     if (st == st_singular) return
     y1 = y(1)
     y2 = y(2)
