@@ -18,6 +18,7 @@ PROGRAMS = {
     "II.13": "prog_ii_13",
     "III.5": "prog_iii_5",
     "IV.15": "prog_iv_15",
+    "VII.10": "prog_vii_10",
 }
 
 #: figure number -> listing of the program that prints it
