@@ -543,3 +543,51 @@ def test_as_printed_differs_only_by_pi():
         p = DNMAF1(*args)
     assert c != p
     assert np.allclose(c, p, rtol=1e-4, atol=1e-4)
+
+
+# ---------------------------------------------------------------------------------------
+# bad input and arrays
+# ---------------------------------------------------------------------------------------
+
+_DNMAF1_ARGS = (0.1, 0.2, 0.5, 0.4, 0.7, -0.1, 0.3, 0.3, 100.0, -PID2, 0.6, 0.15, 200.0, PI,
+                5.0, -8.0)
+
+
+@pytest.mark.parametrize("routine, args, name", [
+    (DNMAF1, _DNMAF1_ARGS[:8] + (-1.0,) + _DNMAF1_ARGS[9:], "F2"),
+    (DNMAF1, _DNMAF1_ARGS[:12] + (float("nan"),) + _DNMAF1_ARGS[13:], "F3"),
+    (DNMAF2, (0, 0, 1, 1, 0.0, 0, 0, 10, 1, 1, 1, -5, 1, 0, 0), "F3"),
+    (DNMA1, (0.0, 0.3, 1.0, 1.3, 0.1, 0.1, 1, 10, 1, 1, 10, 1), "L2"),
+    (DNMA1, (1.0, 0.3, -1.0, 1.3, 0.1, 0.1, 1, 10, 1, 1, 10, 1), "L3"),
+    (DNMA3, (1.0, 0.0, 2.0, 0.1, 0, 0.1, 0, 0.0, 0.3, 1, 10, 1, 1, 10, 1), "AC"),
+    (DNMA5, (1.0, 0.4, -0.1, 0.1, 0, 0, 1, 10, 1, 1, 10, 1), "AS2"),
+    (DNMA4, (0.4, 0, 1.4, 0, 0.1, 0.1, 1, -10, 1, 1, 10, 1), "Q2"),
+    (DNMAF4, (0.3, 1.4, 0, 0, 0, 0, 10, float("inf"), 0, 0, 10, 1, 0, 0), "G2"),
+])
+def test_bad_input_names_the_argument(routine, args, name):
+    with pytest.raises(ValueError, match=rf"\b{name}\b"):
+        routine(*args)
+
+
+def test_arrays_match_scalars_and_report_the_singular_index():
+    """One Fortran loop over positions; a singular position raises naming its index, or
+    gives NaN with on_error='nan'."""
+    xc = np.array([0.7, 0.9, 2.0 * 0.5 - 0.1])        # the last puts C on the line AB
+    args = list(_DNMAF1_ARGS)
+    args[0], args[1], args[2], args[3] = 0.0, 0.0, 0.5, 0.0
+    args[5] = 0.0
+    many = np.array([1.3, 0.9])
+    a = list(args)
+    a[4] = many
+    a[5] = np.array([0.3, -0.2])
+    r = DNMAF1(*a)
+    for i in range(2):
+        s = list(args)
+        s[4], s[5] = float(many[i]), float(a[5][i])
+        assert np.array_equal(np.array([x[i] for x in r]), np.array(DNMAF1(*s)))
+    a[4], a[5] = xc, np.array([0.3, -0.2, 0.0])
+    with pytest.raises(sarkp.SingularError, match=r"index \[2\]"):
+        DNMAF1(*a)
+    out = DNMAF1(*a, on_error="nan")
+    assert list(out.status) == [0, 0, int(sarkp.Status.SINGULAR)]
+    assert np.isnan(out.F21[2]) and np.isfinite(out.F21[:2]).all()
