@@ -306,7 +306,7 @@ class Routine:
             # Python or NumPy floats add up to a float; anything else goes the long way.
             try:
                 total = sum(args)
-            except (TypeError, OverflowError):
+            except (TypeError, OverflowError, ValueError):   # (ValueError: shapes)
                 total = None
             if isinstance(total, _SCALAR_TYPES):
                 return self._call_scalar(args, total, on_error)
@@ -625,10 +625,13 @@ def book_routine(name: str, *, listing: str, lines: str, chapter: str,
         defaults.setdefault("AAA", 1.0)
     params = [f"{arg}={defaults[arg]!r}" if arg in defaults else arg for arg in spec.inputs]
     arglist = ", ".join(spec.inputs)
-    source = (f"def {name}({', '.join(params)}, *, on_error='raise'):\n"
-              f"    return _spec(({arglist},), on_error)\n")
+    source = [f"def {name}({', '.join(params)}, *, on_error='raise'):"]
     namespace = {"_spec": spec}
-    exec(compile(source, "<sarkp>", "exec"), namespace)  # a real signature for help()
+    if not spec.sweeps_tables and not spec._fixed:
+        source += _fast_path(spec, namespace)
+    source.append(f"    return _spec(({arglist},), on_error)")
+    # a real signature, so that help() and inspect show the book's names
+    exec(compile("\n".join(source) + "\n", "<sarkp>", "exec"), namespace)
     function = namespace[name]
     function.__doc__ = doc.rstrip() + "\n" + ON_ERROR_DOC
     function.__module__ = "sarkp"
@@ -636,7 +639,42 @@ def book_routine(name: str, *, listing: str, lines: str, chapter: str,
     return function
 
 
-#: Every declared routine by book name, filled by the chapter modules.
+def _fast_path(spec, namespace):
+    """Source lines of the common case, Python floats in range with ``on_error="raise"``
+    and a computed result: one Fortran call and a tuple, nothing else.  Every other case
+    (arrays, NaN, a failure, a warning) falls through to ``Routine.__call__``."""
+    args = ", ".join(spec.inputs)
+    cond = ["on_error == 'raise'", "type(_t) is float", "_t - _t == 0.0"]
+    cond += [f"{a} > 0.0" for a in spec.inputs if a in spec.lengths]
+    cond += [f"{a} >= 0.0" for a in spec.inputs if a in spec.nonnegative]
+    cond += [f"{a} != 0.0" for a in spec.inputs if a in spec.nonzero]
+    for a in spec.inputs:
+        if a in spec.integers:
+            namespace[f"_allowed_{a}"] = frozenset(float(v) for v in spec.integers[a])
+            cond.append(f"{a} in _allowed_{a}")
+    for k, check in enumerate(spec.checks):
+        namespace[f"_bad{k}"] = check.bad
+        cond.append(f"not _bad{k}({', '.join(f'{a}={a}' for a in spec.inputs)})")
+    if spec.report is not None:
+        cond.append("AAA != 0.0")
+    namespace.update(_one=spec.one, _mode=MODE_CODE.get, _new=tuple.__new__,
+                     _cls=spec.result)
+    if spec.function:
+        result = "_o[0]"
+    elif spec._identity:
+        result = "_new(_cls, _o[:-1])"
+    else:
+        result = f"_new(_cls, ({', '.join(f'_o[{i}]' for i in spec._pick)},))"
+    return ["    try:",
+            f"        _t = {' + '.join(spec.inputs)}",
+            "    except Exception:",
+            "        _t = None",
+            f"    if {' and '.join(cond)}:",
+            f"        _o = _one(_mode(), {args})",
+            "        if _o[-1] == 0:",
+            f"            return {result}"]
+
+
 def declared_routines():
     """Every routine declared with :func:`book_routine`, by name (for the tests)."""
     import sarkp
