@@ -59,7 +59,8 @@ _RAISES = """
     Raises
     ------
     SingularError
-        {what}: the equations of statics have no finite answer.
+        At a singular position ({what}): the equations of statics have no finite
+        answer.
 
     Warns
     -----
@@ -103,8 +104,8 @@ DNMAF1 = book_routine(
 {_RAISES.format(what="A, B, C collinear, or A = B, or A = C")}
     Notes
     -----
-    S2 and S3 may lie anywhere.  The book's own reference values balance every link to
-    rounding (tests/test_forces.py::test_dnmaf1_every_link_balances).
+    S2 and S3 may lie anywhere.  Every link balances to rounding
+    (tests/test_forces.py::test_dnmaf1_every_link_balances).
 {_MODES}
     """)
 
