@@ -16,13 +16,21 @@ module dynamics
 
 contains
 
-  ! Midrange (max + min)/2 of omega_k = sqrt(2 (e0 + asum_k)/j_k) minus w1; e0 + asum >= 0.
-  pure real(dp) function midrange_excess(e0, asum, j, w1)
+  ! Midrange (max + min)/2 of omega_k = sqrt(2 (e0 + asum_k)/j_k) minus w1, and its
+  ! derivative with respect to e0 (d omega_k/d e0 = 1/(j_k omega_k); 0 where omega_k = 0,
+  ! which only the bisection then uses).  e0 + asum >= 0.
+  pure subroutine midrange_excess(e0, asum, j, w1, g, dg)
     real(dp), intent(in) :: e0, asum(:), j(:), w1
+    real(dp), intent(out) :: g, dg
     real(dp) :: w(size(asum))
+    integer :: kmax, kmin
     w = sqrt(max(2.0_dp*(e0 + asum)/j, 0.0_dp))
-    midrange_excess = 0.5_dp*(maxval(w) + minval(w)) - w1
-  end function midrange_excess
+    kmax = maxloc(w, 1)
+    kmin = minloc(w, 1)
+    g = 0.5_dp*(w(kmax) + w(kmin)) - w1
+    dg = 0.0_dp
+    if (w(kmin) > 0.0_dp) dg = 0.5_dp*(1.0_dp/(j(kmax)*w(kmax)) + 1.0_dp/(j(kmin)*w(kmin)))
+  end subroutine midrange_excess
 
   ! VIII.1 DZKNDV, L5939-5990 (block diagram Fig. 70, eqs. (8.13)-(8.17)).
   ! Inputs: M points (ZM = M as a real, the book passes both), W1 = the mean angular
@@ -54,7 +62,7 @@ contains
     real(dp), intent(in) :: zm, w1, isc, mpr(m), ispr(m), aaa
     real(dp), intent(out) :: as(m), asum(m), ev(m), dec(m), wpr(m), epr(m)
     integer, intent(out) :: ier
-    real(dp) :: h, dad, c1, c2, decsr, j(m), lo, hi, mid, glo
+    real(dp) :: h, dad, c1, c2, decsr, j(m), lo, hi, mid, glo, g, dg, e0
     integer :: k, it
     as = 0.0_dp; asum = 0.0_dp; ev = 0.0_dp; dec = 0.0_dp; wpr = 0.0_dp; epr = 0.0_dp
     ier = st_requirement
@@ -78,22 +86,35 @@ contains
       ! (ISC + ISPR) omega**2/2 = E0 + ASUM; the midrange of omega grows with E0.
       j = isc + ispr
       lo = -minval(asum)                              ! the least E0: omega = 0 somewhere
-      glo = midrange_excess(lo, asum, j, w1)
+      call midrange_excess(lo, asum, j, w1, glo, dg)
       if (glo > 0.0_dp) then                          ! even then the mean exceeds W1
         as = 0.0_dp; asum = 0.0_dp; ev = 0.0_dp; dec = 0.0_dp
         ier = st_requirement
         return
       end if
       hi = lo + 2.0_dp*maxval(j)*w1**2                ! omega >= 2*W1 everywhere
-      do it = 1, 200                                  ! bisection to the last bit
-        mid = 0.5_dp*(lo + hi)
-        if (mid <= lo .or. mid >= hi) exit
-        if (midrange_excess(mid, asum, j, w1) > 0.0_dp) then
-          hi = mid
+      ! Newton's method on the midrange, kept inside the bracket [lo, hi] (bisection when
+      ! a step would leave it), to the last bit of E0
+      e0 = hi
+      do it = 1, 200
+        call midrange_excess(e0, asum, j, w1, g, dg)
+        if (g > 0.0_dp) then
+          hi = e0
         else
-          lo = mid
+          lo = e0
         end if
+        if (g == 0.0_dp .or. .not. (hi - lo > 4.0_dp*epsilon(1.0_dp)*max(abs(lo), abs(hi)))) &
+          exit
+        mid = e0 - g/max(dg, tiny(1.0_dp))
+        if (.not. (mid > lo .and. mid < hi)) mid = 0.5_dp*(lo + hi)
+        if (abs(mid - e0) <= 4.0_dp*epsilon(1.0_dp)*abs(e0)) then
+          e0 = mid
+          exit
+        end if
+        e0 = mid
       end do
+      lo = e0
+      hi = e0
       wpr = sqrt(max(2.0_dp*(0.5_dp*(lo + hi) + asum)/j, 0.0_dp))
     end if
     call dfrncl(m, h, epr, wpr)
