@@ -188,3 +188,10 @@ def test_plots_draw_the_computed_data():
     plt.close("all")
     with pytest.raises(ValueError, match="F and G"):
         plot.reaction_hodograph([1.0, 2.0], [0.0])
+
+
+@pytest.mark.parametrize("inertia, name", [({"M2": -1.0}, "M2"), ({"J3": float("nan")}, "J3"),
+                                           ({"M6": 1.0}, "M6")])
+def test_inertia_extension_rejects_bad_masses(inertia, name):
+    with pytest.raises(ValueError, match=name):
+        prog.compute(inertia=inertia)

@@ -35,6 +35,8 @@ Extension (not in the book): ``compute(..., inertia=...)`` adds the d'Alembert l
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from ..forces import DNMAF1, DNMAF2, DNMAF3, DNMAF4, DNMAF5
@@ -118,7 +120,14 @@ def compute(card=None, positions: int | None = None, angles=None, on_error: str 
 
     # d'Alembert loads (extension): -m a_S as (x, y) components, -J epsilon
     m = {k: 0.0 for k in INERTIA_KEYS}
-    m.update(inertia or {})
+    for k, value in (inertia or {}).items():
+        if k not in m:
+            raise ValueError(f"VII.10: unknown inertia key {k!r}; known: "
+                             f"{', '.join(INERTIA_KEYS)}")
+        if not (isinstance(value, (int, float)) and math.isfinite(value) and value >= 0):
+            raise ValueError(f"VII.10: inertia {k} = {value!r} must be a finite number "
+                             f">= 0 (a mass in kg or a moment of inertia in kg*m^2)")
+        m[k] = float(value)
     acc = _centre_accelerations(t, c) if inertia else None
 
     def inertia_force(link, mass):
