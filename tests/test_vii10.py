@@ -162,30 +162,28 @@ def test_cli_runs_vii10_in_both_modes(capsys):
         assert len(out.rstrip("\n").split("\n")) == 25 * 11 - 2
 
 
-def test_plots_draw_the_computed_data():
+def test_plots_draw_the_computed_data(tmp_path):
     """sarkp.plot (optional matplotlib): the hodograph is (F cos G, F sin G) of the
     reaction, the speed diagram DZKNDV's omega with and without the flywheel."""
-    mpl = pytest.importorskip("matplotlib")
-    mpl.use("Agg")
-    import matplotlib.pyplot as plt
+    pytest.importorskip("matplotlib")
     from sarkp import plot
 
     t = prog.compute(angles=fine_angles())
-    ax = plot.reaction_hodograph(t["F21"], t["G21"], label="F21")
-    x, y = ax.lines[0].get_data()
+    figure = plot.reaction_hodograph(t["F21"], t["G21"], label="F21")
+    x, y = figure.axes[0].lines[0].get_data()
     assert np.allclose(x, t["F21"] * np.cos(t["G21"])) and np.allclose(
         y, t["F21"] * np.sin(t["G21"]))
+    plot.save(figure, tmp_path / "hodograph.png")
+    assert (tmp_path / "hodograph.png").stat().st_size > 1000
     m = 73
     phi = np.linspace(0.0, 2 * np.pi, m)
     mpr = 300 * np.sin(phi) - 50.0
-    w = sarkp.DZKNDV(m, float(m), 3.0, 60.0, mpr, np.zeros(m)).WPR
-    dec = sarkp.DZKNDV(m, float(m), 3.0, 60.0, mpr, np.zeros(m)).DEC
-    imh = sarkp.DMHVK(m, 0.01, 60.0, 3.0, dec).IMHVK
+    r = sarkp.DZKNDV(m, float(m), 3.0, 60.0, mpr, np.zeros(m))
+    imh = sarkp.DMHVK(m, 0.01, 60.0, 3.0, r.DEC).IMHVK
     wm = sarkp.DZKNDV(m, float(m), 3.0, 60.0 + imh, mpr, np.zeros(m)).WPR
-    ax = plot.speed_diagram(phi, w, wm, W1=3.0)
-    assert np.array_equal(ax.lines[0].get_ydata(), w)
+    ax = plot.speed_diagram(phi, r.WPR, wm, W1=3.0).axes[0]
+    assert np.array_equal(ax.lines[0].get_ydata(), r.WPR)
     assert np.array_equal(ax.lines[1].get_ydata(), wm)
-    plt.close("all")
     with pytest.raises(ValueError, match="F and G"):
         plot.reaction_hodograph([1.0, 2.0], [0.0])
 

@@ -18,6 +18,8 @@ PROGRAMS = {
     "II.13": "prog_ii_13",
     "III.5": "prog_iii_5",
     "IV.15": "prog_iv_15",
+    "V.5": "prog_v_5",
+    "V.5-FLAT": "prog_v_5_flat",
     "VII.10": "prog_vii_10",
 }
 
@@ -25,6 +27,8 @@ PROGRAMS = {
 FIGURES = {
     "4": "II.13",
     "10": "III.5",
+    "35": "V.5",
+    "36": "V.5-FLAT",
 }
 
 
