@@ -70,6 +70,10 @@ _RAISES = """
         result are left (the warning says how many); the result is kept.
 """
 
+_NEAR = ("near a singular position: the sine of the angle between the two directions that "
+         "the equations divide by is below 1e-4, the book's GELG tolerance; the result was "
+         "kept")
+
 _MODES = """    Corrected and as-printed modes differ only by PI (3.14159 as printed): no printed
     figure depends on the errors corrected in this routine."""
 
@@ -80,7 +84,7 @@ DNMAF1 = book_routine(
             "G3", "T2", "T3", "AAA"),
     outputs=("F21", "G21", "F23", "G23", "F34", "G34"),
     nonnegative=("F2", "F3"),
-    messages={2: "A, B and C are collinear (the dyad is stretched or folded) or two of "
+    messages={3: _NEAR, 2: "A, B and C are collinear (the dyad is stretched or folded) or two of "
                  "them coincide: the reactions have no finite value"},
     doc=f"""Reactions in a group of the first kind (RRR), projection method.
 
@@ -115,7 +119,7 @@ DNMAF2 = book_routine(
             "G3", "T2", "T3", "AAA"),
     outputs=("F21", "G21", "F23", "G23", "F34", "G34", "H34"),
     nonnegative=("F2", "F3"),
-    messages={2: "AB is perpendicular to the guide, or A = B: the reactions have no "
+    messages={3: _NEAR, 2: "AB is perpendicular to the guide, or A = B: the reactions have no "
                  "finite value"},
     doc=f"""Reactions in a group of the second kind (RRP), projection method.
 
@@ -153,7 +157,7 @@ DNMAF3 = book_routine(
             "G3", "T2", "T3", "AAA"),
     outputs=("F21", "G21", "F23", "G23", "H23", "F34", "G34"),
     nonnegative=("F2", "F3"),
-    messages={2: "CA is perpendicular to the guide of link 3, or A = C: the reactions have "
+    messages={3: _NEAR, 2: "CA is perpendicular to the guide of link 3, or A = C: the reactions have "
                  "no finite value"},
     doc=f"""Reactions in a group of the third kind (RPR), projection method.
 
@@ -188,7 +192,7 @@ DNMAF4 = book_routine(
             "T2", "T3", "AAA"),
     outputs=("F21", "G21", "H21", "F23", "G23", "F34", "G34", "H34"),
     nonnegative=("F2", "F3"),
-    messages={2: "the guides FIM and FIN are parallel: the reactions have no finite "
+    messages={3: _NEAR, 2: "the guides FIM and FIN are parallel: the reactions have no finite "
                  "value"},
     doc=f"""Reactions in a group of the fourth kind (PRP), projection method.
 
@@ -227,7 +231,7 @@ DNMAF5 = book_routine(
             "T2", "T3", "AAA"),
     outputs=("F21", "G21", "F32", "G32", "H32", "F34", "G34", "H34"),
     nonnegative=("F2", "F3"),
-    messages={2: "the inner guide is parallel to the outer one (TT3 = 0 or pi): the "
+    messages={3: _NEAR, 2: "the inner guide is parallel to the outer one (TT3 = 0 or pi): the "
                  "reactions have no finite value"},
     doc=f"""Reactions in a group of the fifth kind (RPP), projection method.
 
@@ -264,7 +268,7 @@ DNMA1 = book_routine(
     inputs=("L2", "FI2", "L3", "FI3", "BS2", "BS3", "M2", "Q2", "G2", "M3", "Q3", "G3"),
     outputs=("RA", "GA", "RB", "GB", "RC", "GC"),
     lengths=("L2", "L3"), nonnegative=("Q2", "Q3"),
-    messages={2: "links 2 and 3 are aligned (FI2 parallel to FI3): the reactions have no "
+    messages={3: _NEAR, 2: "links 2 and 3 are aligned (FI2 parallel to FI3): the reactions have no "
                  "finite value"},
     doc=f"""Reactions in a group of the first kind (RRR), vector method.
 
@@ -306,7 +310,7 @@ DNMA2 = book_routine(
             "G3"),
     outputs=("RA", "GA", "RB", "GB", "RC", "HC", "GC"),
     lengths=("L2",), nonnegative=("Q2", "Q3"),
-    messages={2: "AB is perpendicular to the guide: the reactions have no finite value"},
+    messages={3: _NEAR, 2: "AB is perpendicular to the guide: the reactions have no finite value"},
     doc=f"""Reactions in a group of the second kind (RRP), vector method.
 
     Listing VII.7 (L5322-5368).
@@ -346,7 +350,7 @@ DNMA3 = book_routine(
             "G2", "M3", "Q3", "G3"),
     outputs=("RA", "GA", "RB", "HB", "GB", "RC", "GC"),
     lengths=("AC",), nonnegative=("CS2", "CS3", "Q2", "Q3"),
-    messages={2: "AC is perpendicular to the guide of link 3: the reactions have no finite "
+    messages={3: _NEAR, 2: "AC is perpendicular to the guide of link 3: the reactions have no finite "
                  "value"},
     doc=f"""Reactions in a group of the third kind (RPR), vector method.
 
@@ -390,7 +394,7 @@ DNMA4 = book_routine(
             "G3"),
     outputs=("RA", "HA", "GA", "RB", "GB", "RC", "HC", "GC"),
     nonnegative=("Q2", "Q3"),
-    messages={2: "the guides FIM and FIN are parallel: the reactions have no finite "
+    messages={3: _NEAR, 2: "the guides FIM and FIN are parallel: the reactions have no finite "
                  "value"},
     doc=f"""Reactions in a group of the fourth kind (PRP), vector method.
 
@@ -428,7 +432,7 @@ DNMA5 = book_routine(
             "G3"),
     outputs=("RA", "GA", "RB", "HB", "GB", "RC", "HC", "GC"),
     nonnegative=("AS2", "AS3", "Q2", "Q3"),
-    messages={2: "the inner guide is parallel to the outer one (ETA3 = 0 or pi): the "
+    messages={3: _NEAR, 2: "the inner guide is parallel to the outer one (ETA3 = 0 or pi): the "
                  "reactions have no finite value"},
     doc=f"""Reactions in a group of the fifth kind (RPP), vector method.
 
