@@ -301,3 +301,47 @@ def test_fig94_m1_ocr_fix_E_FIG94_1():
     r, imh, _ = _program_x(printed)          # the OCR value breaks the AS column's bound
     bounds = _rounding_bounds(r, imh)["AS"]
     assert np.any(np.abs(r.AS - _values("96", "AS")) > 0.05 + bounds)
+
+
+from hypothesis import given, settings                      # noqa: E402
+from hypothesis import strategies as st                     # noqa: E402
+
+
+@settings(max_examples=60, deadline=None)
+@given(st.lists(st.floats(-50, 50), min_size=6, max_size=6), st.floats(0.5, 20.0),
+       st.floats(0.0, 3.0), st.integers(5, 200))
+def test_corrected_law_is_the_energy_equation(coeffs, isc, jv, m):
+    """For any periodic moment and inertia: (ISC + ISPR) WPR^2/2 - ASUM is the same at
+    every point (the energy equation, E0), and (max + min)/2 of WPR is W1."""
+    phi = grid(m)
+    mpr = sum(c * np.sin((k + 1) * phi + k) for k, c in enumerate(coeffs)) - 5.0
+    ispr = jv * (1.0 + np.cos(phi)) ** 2
+    try:
+        r = DZKNDV(m, float(m), W1, isc, mpr, ispr)
+    except sarkp.RequirementError:
+        return                                   # no real speed: tested elsewhere
+    e = (isc + ispr) * r.WPR**2 / 2 - r.ASUM
+    scale = np.abs(r.ASUM).max() + ((isc + ispr) * r.WPR**2).max()
+    assert np.ptp(e) <= 1e-12 * scale
+    assert (r.WPR.max() + r.WPR.min()) / 2 == pytest.approx(W1, rel=1e-13)
+    assert r.WPR.min() >= 0.0
+
+
+def test_program_x_without_flywheel_has_no_real_speed_corrected():
+    """Fig. 96's machine (J_c = 0.23 kg m^2, W1 = 3) cannot run steadily at mean speed 3:
+    the corrected law raises, and says that DEC, which DMHVK needs, does not depend on
+    ISC -- so DZKNDV with any larger ISC gives it, and the flywheel follows."""
+    m1, ipr = _values("94", "M1"), _values("96", "IPR")
+    with pytest.raises(sarkp.RequirementError, match="DEC does not depend on ISC"):
+        DZKNDV(37, 37.0, W1, ISC_X, m1, ipr)
+    with sarkp.as_printed():
+        dec = DZKNDV(37, 37.0, W1, ISC_X, m1, ipr).DEC
+    big = DZKNDV(37, 37.0, W1, 5000.0, m1, ipr)
+    with sarkp.as_printed():
+        assert np.allclose(DZKNDV(37, 37.0, W1, 5000.0, m1, ipr).DEC, dec, rtol=0,
+                           atol=1e-12)
+    imh = DMHVK(37, DELTA_X, ISC_X, W1, big.DEC).IMHVK
+    w = DZKNDV(37, 37.0, W1, ISC_X + imh, m1, ipr).WPR
+    # the corrected law with a variable inertia: delta is 0.00997, not exactly 0.01, since
+    # DMHVK neglects J_v (IPR <= 24 beside J = 4504: 0.3%)
+    assert (w.max() - w.min()) / W1 == pytest.approx(DELTA_X, rel=0.01)
