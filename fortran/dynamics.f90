@@ -45,7 +45,8 @@ contains
   !   DEC  = (ASUM - EV) - (ASUM(1) - EV(1)), the change of the kinetic energy of the
   !          constant-inertia links (DEC(1) = 0);
   !   WPR  = omega(phi);
-  !   EPR  = DFRNCL(WPR) = (WPR(K) - WPR(K-1))/H, EPR(1) = 0: d(omega)/d(phi) in 1/s, NOT
+  !   EPR  = DFRNCL(WPR) = (WPR(K) - WPR(K-1))/H, EPR(1) = EPR(2) (0 as printed,
+  !          E-DFRNCL-1): d(omega)/d(phi) in 1/s, NOT
   !          the angular acceleration the comment (L5949) and text (L5929) call it
   !          (E-DZKNDV-1); epsilon = omega*d(omega)/d(phi) = WPR*EPR.
   ! WPR: as printed, eq. (8.17) linearised, omega = W1 + (DEC - (C1 + C2)/2)/(W1*ISC) with

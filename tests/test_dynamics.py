@@ -60,7 +60,7 @@ def test_identities_of_the_book():
     assert r.DEC[0] == 0.0 and abs(r.DEC[-1]) < 1e-12
     assert np.allclose(r.EV, ispr * W1**2 / 2, rtol=1e-15)
     assert np.allclose(r.EPR[1:] * h, np.diff(r.WPR), rtol=1e-12, atol=1e-15)
-    assert r.EPR[0] == 0.0
+    assert r.EPR[0] == r.EPR[1]          # DFRNCL's first entry, corrected (E-DFRNCL-1)
     assert r.WPR[0] == pytest.approx(r.WPR[-1], rel=1e-12)
     assert (r.WPR.max() + r.WPR.min()) / 2 == pytest.approx(W1, rel=1e-13)
 

@@ -72,7 +72,8 @@ DZKNDV = book_routine(
         * ``DEC``: ``(ASUM - EV) - (ASUM[0] - EV[0])``, the change of the kinetic energy of
           the constant-inertia links (DMHVK's input), J;
         * ``WPR``: omega(phi), rad/s;
-        * ``EPR``: ``(WPR[k] - WPR[k-1])/H``, ``EPR[0] = 0`` (DFRNCL): the backward
+        * ``EPR``: ``(WPR[k] - WPR[k-1])/H``, ``EPR[0] = EPR[1]`` (DFRNCL; 0 as
+          printed, E-DFRNCL-1): the backward
           difference d(omega)/d(phi) in 1/s, NOT the angular acceleration the listing's
           comment and the text (L5929) call it (ERRATA E-DZKNDV-1); the angular
           acceleration is ``WPR*EPR``.
