@@ -292,7 +292,7 @@ contains
   ! A = intersection of the lines through C1 at FI3 - GMIN and through C2 at
   ! FI3 + PSI - GMAX.  The book prints the crank pivot XA, YA (L1173) but has no argument
   ! for it: sarkp returns it after LO.
-  ! ERRATA: E-DSNTZ2-1 (KC1A + TAN = KC1A = TAN), E-SYN-1.
+  ! ERRATA: E-DSNTZ2-1 (KC1A + TAN = KC1A = TAN), E-DSNTZ2-4 (PSI <= 0), E-SYN-1.
   subroutine dsntz2(kw3, fi3, l3, xd, gmin, gmax, aaa, l1, l2, lo, xa, ya, gmin_turn, &
                     gmax_turn, ier)
     real(dp), intent(in) :: kw3, fi3, l3, xd, gmin, gmax, aaa
