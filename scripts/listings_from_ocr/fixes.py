@@ -1,0 +1,131 @@
+import sys, os
+from apply import apply
+F = {}
+F['II.13_program.f'] = [
+    ('all', r'\bF11\b', 'FI1'),
+    ('sub', 'F1(18)', 'FI(18)'),
+    ('sub', 'F1(K)', 'FI(K)'),
+    ('sub', 'DOMEQA(L2', 'DOMEGA(L2'),
+    ('sub', 'DOMEQA(L3', 'DOMEGA(L3'),
+    ('raw', '''      CALL DSMVKT(VBC, ALBC, ABS(W2) * LBD, DUGL3(FI2 + PI -- NU),
+      PI/2., W2).
+     *VD. ALD)''', '''C OCR: "PI -- NU" -> "PI - NU"; "PI/2., W2)." -> "*PI/2., W2),"; "* VD. ALD)" -> "*VD, ALD)"
+      CALL DSMVKT(VBC, ALBC, ABS(W2) * LBD, DUGL3(FI2 + PI - NU,
+     *PI/2., W2),
+     *VD, ALD)'''),
+]
+F['II.9_DMOMNT.f'] = []
+F['III.1_DSNTZR.f'] = [
+    ('all', r'\bF11\(', 'FI1('), ('all', r'\bF13\(', 'FI3('),
+    ('sub', 'DSNTZR(LO, L3, F11, F13,', 'DSNTZR(LO, L3, FI1, FI3,'),
+    ('sub', 'C F11(3)', 'C FI1(3)'), ('sub', 'C F13(3)', 'C FI3(3)'), ('sub', 'МАССИВА F13(3)', 'МАССИВА FI3(3)'),
+    ('sub', '/2,0', '/2.0'),
+    ('sub', "FORMAT(1X, СИНТЕЗ МЕХАНИЗМА ШАРНИРНОГО/", "FORMAT(1X, 'СИНТЕЗ МЕХАНИЗМА ШАРНИРНОГО'/", 'quotes lost'),
+    ('sub', "'ЗВЕНЬЕВ. '//ИСХОДНЫЕ", "'ЗВЕНЬЕВ. '//'ИСХОДНЫЕ", 'quote lost'),
+]
+F['III.2_DSNTZ1.f'] = [
+    ('all', r'\bKCIE\b', 'KC1E'),
+    ('all', r'A\((\d)\.(\d)\)', r'A(\1,\2)'),
+    ('sub', "      FORMAT(1X 'СИНТЕЗ", "1     FORMAT(1X, 'СИНТЕЗ", 'label 1 and a comma lost'),
+    ('sub', "ПОЛОЖЕНИЯМ и KW3.'", "ПОЛОЖЕНИЯМ И KW3.'"),
+    ('sub', "'ВХОДНЫЕ ПАРАМЕТРЫ:.'/", "'ВХОДНЫЕ ПАРАМЕТРЫ:'/"),
+    ('sub', "L3 = ',F6.3.", "L3 = ',F6.3,"),
+    ('sub', "//1X.' ВЫХОДНЫЕ ПАРАМЕТРЫ:.'/", "//1X,' ВЫХОДНЫЕ ПАРАМЕТРЫ:'/"),
+]
+F['III.3_DSNTZ2.f'] = [
+    ('sub', 'KC1A + TAN', 'KC1A = TAN'),
+    ('sub', "*' 1X, 'ВЫХОДНЫЕ", "*1X, 'ВЫХОДНЫЕ"),
+    ('raw', """     *' L1 = ',F7.4,' L2 = ',F7.4,' LO = ',F7.4,' XA = ',F7.4,' Y
+     *'F7.4//)""", """C OCR: "' Y" / "*'F7.4//)" -> "' YA = '," / "*F7.4//)"
+     *' L1 = ',F7.4,' L2 = ',F7.4,' LO = ',F7.4,' XA = ',F7.4,' YA = ',
+     *F7.4//)"""),
+]
+F['III.4_DSNTZ3.f'] = [
+    ('all', r'\bF11\b(?!\s*=\s*\')', 'FI1'),
+    ('sub', "ПО//ДВУМ ПОЛОЖЕНИЯМ ШАТУНА. '//", "ПО ДВУМ ПОЛОЖЕНИЯМ ШАТУНА. '//"),
+    ('raw', "      1X, *'ВХОДНЫЕ ПАРАМЕТРЫ: '//", "C OCR: \"1X, *'ВХОДНЫЕ\" -> \"*1X, 'ВХОДНЫЕ\"\n     *1X, 'ВХОДНЫЕ ПАРАМЕТРЫ: '//"),
+]
+F['III.5_program.f'] = [
+    ('all', r'\bF11\b', 'FI1'), ('all', r'\bF13\b', 'FI3'),
+    ('raw', 'C ПРИМЕР ГЛАВНОЙ ПРОГРАММЫ, ИСПОЛЬЗУЮЩЕЙ РАЗНЫЕ ПОДСПРОГРАММЫ СИНТЕЗА', 'C OCR: "ПОДСПРОГРАММЫ" -> "ПОДПРОГРАММЫ"\nC ПРИМЕР ГЛАВНОЙ ПРОГРАММЫ, ИСПОЛЬЗУЮЩЕЙ РАЗНЫЕ ПОДПРОГРАММЫ\nC СИНТЕЗА'),
+]
+F['IV.3_DPRM3.f'] = [
+    ('all', r'\bFIZ\b', 'FI3'),
+]
+F['IV.4_DPRM4.f'] = [
+    ('sub', 'X(1, 1) = 1, 0', 'X(1, 1) = 1.0'),
+    ('sub', 'X(2, 1) = 1, 0', 'X(2, 1) = 1.0'),
+]
+F['IV.6_DSKOR2.f'] = [('sub', 'DOMECA', 'DOMEGA')]
+F['IV.8_DSKOR4.f'] = [
+    ('sub', 'AAA, VBVM, ALBVM, VBBN', 'AAA, VBBM, ALBBM, VBBN', 'ERRATA E-DSKOR4-1'),
+    ('sub', 'ALBVM = DUGL3', 'ALBM = DUGL3', 'ERRATA E-DSKOR4-2'),
+    ('sub', '2, 1, 8, 0, 0, 1, IER', '2, 1, 0.0001, IER'),
+]
+F['IV.9_DSKOR5.f'] = [('sub', 'ALC3CM = DUGL4', 'ALC2CM = DUGL4')]
+F['IV.10_DUSKR1.f'] = [
+    ('sub', '8.0001', '0.0001'),
+    ('sub', 'E2 = DOMEQA', 'E2 = DOMEGA'), ('sub', 'E3 = DOMEQA', 'E3 = DOMEGA'),
+]
+F['IV.11_DUSKR2.f'] = [
+    ('all', r'\bF12\b', 'FI2'),
+    ('all', r'\bDSMVKI\b', 'DSMVKT'),
+]
+F['IV.12_DUSKR3.f'] = [
+    ('raw', 'BA3CT, E3, AA3, BA3) COMMON/PRMTR/PI, PID2', 'BA3CT, E3, AA3, BA3)\n      COMMON/PRMTR/PI, PID2'),
+    ('all', r'\bBAZA([RK])\b', r'BA3A\1'),
+    ('sub', 'DSMVWT', 'DSMVKT'),
+]
+F['IV.13_DUSKR4.f'] = [
+    ('sub', 'AAA, ABVMR, BBVMR,', 'AAA, ABBMR, BBBMR,'),
+    ('sub', 'ABBMK = ABS(Y(1))', 'ABBMR = ABS(Y(1))', 'ERRATA E-DUSKR4-4'),
+    ('sub', 'DSMVKT(ABM, BVM,', 'DSMVKT(ABM, BBM,'),
+    ('sub', '8     X(1, 1)', '      X(1, 1)', 'a stray label; ERRATA E-DUSKR4-6'),
+]
+F['IV.14_DUSKR5.f'] = [
+    ('sub', 'SQRT(WM *', 'SQRT(WM **'),
+]
+F['IV.15_program.f'] = [
+    ('sub', 'ROI59, WI', 'RO1S9, W1'),
+    ('sub', 'RBF -1.0', 'RBF, -1.0'),
+    ('sub', 'FIO1M,\n', 'FIO1M)\n'),
+    ('sub', 'W2, W3, AA, ABAT', 'W2, W3, AAA, ABAT'),
+    ('sub', '0.0, 0.0, 0.0, 0.0, PID2, RFG * SQRT*', '0.0, 0.0, 0.0, 0.0, 0.0, PID2, RFG * SQRT'),
+    ('sub', '*(W3 ** 4 + E3, BC,', '*(W3 ** 4 + E3 ** 2), BC,'),
+    ('sub', 'FIO1M,*', 'FIO1M,'),
+    ('sub', '*2.0 VNM * A(W9)', '*2.0 * VNM * ABS(W9)'),
+    ('sub', '0.0, 0.0,*', '0.0, 0.0,'),
+    ('sub', '*2.0 VPM * ABS(W9)', '*2.0 * VPM * ABS(W9)'),
+    ('sub', '*BPR, APS, AP, BP)', '*BPR, APS, BPS, AP, BP)'),
+    ('sub', '*ALPM, VP, A\n', '*ALPM, VP, ALP\n'),
+]
+F['IV.16_DKNMA1.f'] = [
+    ('sub', 'ABCN, ABAN, AVAT, BVAT, AVCT, BVCT, AB, VB, E2,', 'ABCN, ABAN, ABAT, BBAT, ABCT, BBCT, AB, BB, E2,'),
+]
+F['IV.17_DKNMA2.f'] = [
+    ('sub', '*ABBM, VBBM, AB, VB, E2)', '*ABBM, BBBM, AB, BB, E2)'),
+    ('sub', 'AA ** COS(BA)', 'AA * COS(BA)'),
+    ('sub', 'AE = SQRT', 'AB = SQRT'),
+]
+F['IV.18_DKNMA3.f'] = [
+    ('sub', '*ALAC, W3, VA3,', '*ALAR, VAC, ALAC, W3, VA3,', 'two names lost; uncertain, ERRATA E-DKNMA3-1'),
+    ('all', r'\bOMEGA\(', 'DOMEGA('),
+    ('all', r'X\((\d)\.(\d)\)', r'X(\1,\2)'),
+]
+F['IV.19_DKNMA4.f'] = [
+    ('sub', 'RZ2, ETA2, RZ3\n', 'RZ2, ETA2, RZ3,\n'),
+    ('sub', 'WM, MN, EM', 'WM, WN, EM'),
+    ('sub', 'AB3R, BB3R, AB, BB\n', 'AB3R, BB3R, AB, BB)\n'),
+    ('sub', 'ABM = PAB *', 'ABM = RAB *'),
+    ('sub', 'COS(BBM) --', 'COS(BBM) -'),
+]
+F['IV.20_DKNMA5.f'] = [
+    ('sub', 'VC2CM, ALC2CM, VC, AC, AC2C3K', 'VC2CM, ALC2CM, VC, ALC, AC2C3K'),
+    ('sub', 'ALMC = DUGL3', 'ALCM = DUGL3'),
+    ('sub', 'DUGL4(FIM + ETA2), PI', 'DUGL4((FIM + ETA2), PI'),
+]
+
+if __name__ == '__main__':
+    d = sys.argv[1]
+    for f, fx in F.items():
+        apply(os.path.join(d, f), fx)
