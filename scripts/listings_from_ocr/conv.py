@@ -56,7 +56,8 @@ def fix_code(s):
         t = re.sub(r'\b(WRITE|READ)\s*\((\d+)\.\s?(\d+)\)', wr, t)
         def dash(m):
             marks.append((m.group(0), '-')); return '-'
-        t = re.sub(r'[—–]', dash, t)
+        if not re.search(r'[А-Я]', t):
+            t = re.sub(r'[—–]', dash, t)
         def ier(m):
             marks.append(('1ER', 'IER')); return 'IER'
         t = re.sub(r'(?<![\w.])1ER\b', ier, t)
@@ -116,8 +117,12 @@ def convert(lid, name, kind, ranges, note):
             if s.startswith('*'):
                 cont = True; s = s[1:].strip()
             else:
-                m = re.match(r'^(\d{1,5})\s+(\S.*)$', s)
-                if m: label, s = m.group(1), m.group(2)
+                m = re.match(r'^([\dØθ]{1,5})\s+(\S.*)$', s)
+                if m and m.group(1)[0].isdigit():
+                    label, s = m.group(1), m.group(2)
+                    if not label.isdigit():
+                        out.append(f'C OCR: "{label}" -> "{label.replace("Ø", "0").replace("θ", "0")}"')
+                        label = label.replace('Ø', '0').replace('θ', '0')
             s, marks = fix_code(s)
             for old, new in marks:
                 out.append(f'C OCR: "{old}" -> "{new}"')

@@ -125,6 +125,70 @@ F['IV.20_DKNMA5.f'] = [
     ('sub', 'DUGL4(FIM + ETA2), PI', 'DUGL4((FIM + ETA2), PI'),
 ]
 
+F['V.2_DPRFLP.f'] = [
+    ('sub', 'R1(N), *DELTA(N),', 'R1(N), DELTA(N),', 'a stray continuation mark'),
+    ('raw', """     *(K))) ** - D 2 SDFI * (COS(ALFA(K)))/C ** 2""", """C OCR: "** - D 2 SDFI * (COS(ALFA(K)))/C ** 2" -> "** 2 - D2SDFI * (COS(ALFA(K))) ** 3)/C ** 2" (exponents and a parenthesis lost)
+     *(K))) ** 2 - D2SDFI * (COS(ALFA(K))) ** 3)/C ** 2"""),
+]
+F['V.4_DPRFLK.f'] = [
+    ('sub', 'DPRFLK(N, W1, ETAO, F1, RO,', 'DPRFLK(N, W1, ETAO, FI, RO,'),
+    ('sub', 'C RSI(N)', 'C PSI(N)'),
+]
+F['V.5_program.f'] = [
+    ('raw', '      EXCTST, ETAO', 'C OCR: "      EXCTST, ETAO" -> "     *EXCTST, ETAO" (continuation mark lost)\n     *EXCTST, ETAO'),
+    ('sub', '*ТОЛКАТЕЛЯ).', '*ТОЛКАТЕЛЯ)'),
+    ('sub', 'FORMAT(1H, 4F12.5)', 'FORMAT(1H , 4F12.5)', 'the blank of 1H lost'),
+    ('raw', """11    FORMAT(1X, 'ОСНОВНЫЕ РАЗМЕРЫ КУЛАЧКА: РАДИУС
+     *КУЛАЧКОВОЙ ШАЙБЫ F9.5, 'ЭКСЦЕНТРИСИТЕТ —', F9.5//""", """C OCR: "ШАЙБЫ F9.5," -> "ШАЙБЫ —', F9.5," (an apostrophe and a dash lost; uncertain)
+11    FORMAT(1X, 'ОСНОВНЫЕ РАЗМЕРЫ КУЛАЧКА: РАДИУС
+     *КУЛАЧКОВОЙ ШАЙБЫ —', F9.5, 'ЭКСЦЕНТРИСИТЕТ —', F9.5//"""),
+    ('sub', "*'DELTA 6X,", "*'DELTA', 6X,"),
+    ('sub', 'ALFA(K), ZN(K), K', 'ALFA(K), RKRZVN(K), K', 'the name cut'),
+]
+F['VI.1_DZBPL.f'] = [
+    ('all', r'\bZKRH\b', 'ZKRN'),
+    ('sub', 'Z2, Z3, Z3, KS', 'Z2, Z3, Z4, KS'),
+    ('raw', """11    FORMAT(1X, 'ЧИСЛА ЗУБЬЕВ ПЛАНЕТАРНОГО РЕДУКТОРА/'
+     *1X, 'SHEMA =', 11/' Z1 = I, 13.' Z3 = ', 13.
+     *' Z4 = ', 13/
+     *'КОЛИЧЕСТВО БЛОКОВ САТЕЛЛИТОВ KS = ', 12)""", """C OCR: "РЕДУКТОРА/'" -> "РЕДУКТОРА'/"; "11/" -> "I1/"; "' Z1 = I, 13.' Z3 = ', 13." -> "' Z1 = ', I3, ' Z2 = ', I3, ' Z3 = ', I3," (the Z2 item lost; uncertain); "13/" -> "I3/"; "12)" -> "I2)"
+11    FORMAT(1X, 'ЧИСЛА ЗУБЬЕВ ПЛАНЕТАРНОГО РЕДУКТОРА'/
+     *1X, 'SHEMA =', I1/' Z1 = ', I3, ' Z2 = ', I3, ' Z3 = ', I3,
+     *' Z4 = ', I3/
+     *'КОЛИЧЕСТВО БЛОКОВ САТЕЛЛИТОВ KS = ', I2)"""),
+]
+F['VI.3_DKRKT.f'] = [
+    ('sub', "*КОЭФФИЦИЕНТ СМЕЩЕНИЯ X2 = '", "*' КОЭФФИЦИЕНТ СМЕЩЕНИЯ X2 = '"),
+    ('raw', "      'КОРРЕКТИРОВКИ')", "C OCR: \"      'КОРРЕКТИРОВКИ')\" -> \"     *'КОРРЕКТИРОВКИ')\" (continuation mark lost)\n     *'КОРРЕКТИРОВКИ')"),
+    ('sub', "*X1P = ', F6.3,", "*' X1P = ', F6.3,"),
+    ('sub', "*XS = ', F6.3)/ X1 = ', F6.3, ' X2 = 1, F6.3, ' SDVIG = ', 12,", "*' XS = ', F6.3/' X1 = ', F6.3, ' X2 = ', F6.3, ' SDVIG = ', I2,"),
+]
+F['VI.5_DGMTZK.f'] = [
+    ('raw', '      КОЛЕСА)', 'C OCR: "      КОЛЕСА)" -> "     *КОЛЕСА)" (continuation mark lost)\n     *КОЛЕСА)'),
+]
+F['VI.6_DGMZPC.f'] = [
+    ('sub', 'DUGINY(', 'DUGINV('),
+    ('sub', '      I FORMAT(', '1     FORMAT('),
+]
+F['VI.7_DGMZVN.f'] = [
+    ('sub', 'DUGINV(INVALW, PI/18, 0, 0.00001)', 'DUGINV(INVALW, PI/18.0, 0.00001)'),
+    ('sub', 'DUGINV(INVO2, PI/18, 0, 0.00001)', 'DUGINV(INVO2, PI/18.0, 0.00001)'),
+    ('raw', """     *(ALFAW))/(2.0 * PISA1 = DA1 * ((0.5 * PI + 2.0 * X1 * TAN(ALFA)))/
+     *Z1 + (TAN(ALFA) - ALFA) - (TAN(ALA1) - ALA1))""", """C OCR: "(2.0 * PISA1 = DA1 * ((0.5 * PI + 2.0 * X1 * TAN(ALFA)))/" -> "(2.0 * PI)" and "SA1 = DA1 * ((0.5 * PI + 2.0 * X1 * TAN(ALFA))/" (two statements run together)
+     *(ALFAW))/(2.0 * PI)
+      SA1 = DA1 * ((0.5 * PI + 2.0 * X1 * TAN(ALFA))/
+     *Z1 + (TAN(ALFA) - ALFA) - (TAN(ALA1) - ALA1))"""),
+    ('raw', "      ALFA) * (TAN(ALA2) - ALA2))", "C OCR: \"      ALFA) *\" -> \"     *ALFA) *\" (continuation mark lost)\n     *ALFA) * (TAN(ALA2) - ALA2))"),
+]
+F['VI.8_DCHRVC.f'] = [
+    ('raw', "     *'ДЕЛИТЕЛЬНЫЙ ДИАМЕТР:/'", "C OCR: \"ДИАМЕТР:/'\" -> \"ДИАМЕТР:'/\"\n     *'ДЕЛИТЕЛЬНЫЙ ДИАМЕТР:'/"),
+] + [('sub', '     *' + w, "     *'" + w, 'apostrophe lost') for w in (
+    'ДЕЛИТЕЛЬНЫЙ УГОЛ', 'НАЧАЛЬНЫЙ УГОЛ', 'ВЫСОТА ВИТКА', 'ВЫСОТА ГОЛОВКИ', 'ЧЕРВЯКА — DA1',
+    'ЧЕРВЯЧНОГО КОЛЕСА — DA2', 'НАИБОЛЬШИЙ', 'ДЛИНА', 'ШИРИНА', 'РАДИУС', 'ЗУБЬЕВ ЧЕРВЯЧНОГО')] + [
+    ('sub', '     *ДИАМЕТР ВЕРШИН:', "     *'ДИАМЕТР ВЕРШИН:'/", 'apostrophes and a slash lost'),
+    ('sub', "R = ', F7.3//", "R = ', F7.3//)", 'the closing parenthesis lost'),
+]
+
 if __name__ == '__main__':
     d = sys.argv[1]
     for f, fx in F.items():

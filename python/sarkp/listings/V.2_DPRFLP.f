@@ -21,7 +21,8 @@ C КООРДИНАТАХ,
 C ALFA(N), ROK(N) — УГЛЫ ДАВЛЕНИЯ И РАДИУСЫ КРИВИЗНЫ
 C В ТОЧКАХ ПРОФИЛЯ, ДЛЯ КОТОРЫХ ВЫЧИСЛЯЮТСЯ
 C КООРДИНАТЫ.
-      DIMENSION FI(N), A(N), V(N), S(N), XA(N), YA(N), R1(N), *DELTA(N),
+C OCR: "R1(N), *DELTA(N)," -> "R1(N), DELTA(N)," (a stray continuation mark)
+      DIMENSION FI(N), A(N), V(N), S(N), XA(N), YA(N), R1(N), DELTA(N),
      *ALFA(N), ROK(N)
       DO 5 K = 1, N
       D2SDFI = V(K)/W
@@ -33,7 +34,8 @@ C КООРДИНАТЫ.
       ALFA(K) = ATAN((DSDFI - EXCNTR)/(RO + S(K)))
       C = RO + S(K)
       OMEGA = (C * COS(ALFA(K)) + DSDFI * SIN(ALFA(K)) * (COS(ALFA
-     *(K))) ** - D 2 SDFI * (COS(ALFA(K)))/C ** 2
+C OCR: "** - D 2 SDFI * (COS(ALFA(K)))/C ** 2" -> "** 2 - D2SDFI * (COS(ALFA(K))) ** 3)/C ** 2" (exponents and a parenthesis lost)
+     *(K))) ** 2 - D2SDFI * (COS(ALFA(K))) ** 3)/C ** 2
       ROK(K) = 1.0/OMEGA
 5     CONTINUE
       RETURN

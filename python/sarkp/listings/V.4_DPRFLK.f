@@ -1,13 +1,15 @@
 C LISTING V.4 DPRFLK: BELOKONEV 1990, BOOK LINES L3270-3320
 C AS PRINTED. OCR MISREADINGS CORRECTED, EACH MARKED "C OCR:".
-      SUBROUTINE DPRFLK(N, W1, ETAO, F1, RO, L, R, E2, W2, PSI,
+C OCR: "DPRFLK(N, W1, ETAO, F1, RO," -> "DPRFLK(N, W1, ETAO, FI, RO,"
+      SUBROUTINE DPRFLK(N, W1, ETAO, FI, RO, L, R, E2, W2, PSI,
      *XA, YA, R1, DELTA, RKRZVN, ALFA)
 C СИНТЕЗ ПРОФИЛЯ КУЛАЧКА МЕХАНИЗМА С КАЧАЮЩИМСЯ
 C ТОЛКАТЕЛЕМ.
 C ПРИ ОБРАЩЕНИИ ОПИСАТЬ МАССИВЫ:
 C FI(N) — УГЛЫ ПОВОРОТА КУЛАЧКА, E2(N) — УГЛОВЫЕ УСКОРЕНИЯ
 C ТОЛКАТЕЛЯ, W2(N) — УГЛОВЫЕ СКОРОСТИ ТОЛКАТЕЛЯ.
-C RSI(N) — УГЛОВЫЕ ПЕРЕМЕЩЕНИЯ ТОЛКАТЕЛЯ.
+C OCR: "C RSI(N)" -> "C PSI(N)"
+C PSI(N) — УГЛОВЫЕ ПЕРЕМЕЩЕНИЯ ТОЛКАТЕЛЯ.
 C N — РАЗМЕРНОСТЬ МАССИВОВ, W1 — УГЛОВАЯ СКОРОСТЬ
 C КУЛАЧКА.
 C RO, L, R — РАДИУС КУЛАЧКОВОЙ ШАЙБЫ, МЕЖСОСЕВЫЕ

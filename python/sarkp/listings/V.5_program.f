@@ -3,7 +3,8 @@ C AS PRINTED. OCR MISREADINGS CORRECTED, EACH MARKED "C OCR:".
 C ПРИМЕР ПРОЕКТИРОВАНИЯ КУЛАЧКОВОГО МЕХАНИЗМА С
 C ПОСТУПАТЕЛЬНО ДВИЖУЩИМСЯ ЗАОСТРЕННЫМ ТОЛКАТЕЛЕМ.
       COMMON/KLCHK/ALFAD, BETA, W, RSCNTR, RZMR, INDEX, RKSH,
-      EXCTST, ETAO
+C OCR: "      EXCTST, ETAO" -> "     *EXCTST, ETAO" (continuation mark lost)
+     *EXCTST, ETAO
       DIMENSION FI(51), D2SDT(51), DSDT(51), S(51), XPRFL(51),
      *YPRFL(51), RPRFL(51), DELTA(51), ALFA(51), RKRVZN(51)
       DATA PI, N/31.4159,51/
@@ -49,20 +50,25 @@ C ПОСТУПАТЕЛЬНО ДВИЖУЩИМСЯ ЗАОСТРЕННЫМ ТОЛ�
      *YPRFL, RPRFL, A, ALFA, RKRZVN)
       WRITE(3, 8)
 8     FORMAT(50H КИНЕМАТИЧЕСКИЕ ХАРАКТЕРИСТИКИ ДВИЖЕНИЯ
-     *ТОЛКАТЕЛЯ).
+C OCR: "*ТОЛКАТЕЛЯ)." -> "*ТОЛКАТЕЛЯ)"
+     *ТОЛКАТЕЛЯ)
       WRITE(3, 9)
 9     FORMAT(1X, 5X, 'FI', 10X, 'D2SDT', 7X, 'DSDT', 10X, 'S')
       WRITE(3, 10)(FI(K), D2SDT(K), DSDT(K), S(K), K = 1, N)
-10    FORMAT(1H, 4F12.5)
+C OCR: "FORMAT(1H, 4F12.5)" -> "FORMAT(1H , 4F12.5)" (the blank of 1H lost)
+10    FORMAT(1H , 4F12.5)
       WRITE(3, 11)RKSH, EXCTST
+C OCR: "ШАЙБЫ F9.5," -> "ШАЙБЫ —', F9.5," (an apostrophe and a dash lost; uncertain)
 11    FORMAT(1X, 'ОСНОВНЫЕ РАЗМЕРЫ КУЛАЧКА: РАДИУС
-     *КУЛАЧКОВОЙ ШАЙБЫ F9.5, 'ЭКСЦЕНТРИСИТЕТ —', F9.5//
+     *КУЛАЧКОВОЙ ШАЙБЫ —', F9.5, 'ЭКСЦЕНТРИСИТЕТ —', F9.5//
      *10X, 'ХАРАКТЕРИСТИКИ ПРОФИЛЯ КУЛАЧКА')
       WRITE(3, 15)
 15    FORMAT(1X, 5X, 'FI', 8X, 'XPRFL', 6X, 'YPRFL', 6X, 'RPRFL', 6X,
-     *'DELTA 6X, 'ALFA', 6X, 'RKRZVN')
+C OCR: "*'DELTA 6X," -> "*'DELTA', 6X,"
+     *'DELTA', 6X, 'ALFA', 6X, 'RKRZVN')
       WRITE(3,16)(FI(K), XPRFL(K), YPRFL(K), RPRFL(K), DELTA(K),
-     *ALFA(K), ZN(K), K = 1, N)
+C OCR: "ALFA(K), ZN(K), K" -> "ALFA(K), RKRZVN(K), K" (the name cut)
+     *ALFA(K), RKRZVN(K), K = 1, N)
 16    FORMAT(1X, 7F11.5)
       STOP
       END

@@ -49,8 +49,10 @@ C SHEMA — ОБОЗНАЧЕНИЕ СХЕМЫ ПЛАНЕТАРНОГО РЕДУ�
       Z3 = Z2 * L3/L2
       Z4 = (Z1 * L3 * (Q - P))/(L2 * Q)
       PRINT 20, COT, COK, CO, C1, Z1, Z2, Z3, Z4, SHEMA
-      IF((Z2 - ZKRH).LT.0) GO TO 3
-      IF((Z3 - ZKRH).LT.0) GO TO 3
+C OCR: "ZKRH" -> "ZKRN"
+      IF((Z2 - ZKRN).LT.0) GO TO 3
+C OCR: "ZKRH" -> "ZKRN"
+      IF((Z3 - ZKRN).LT.0) GO TO 3
       IF((Z4 - ZKRN).LT.0) GO TO 3
       GO TO 6
 5     Z2 = (Z1 * (P * L3 - Q * L3 + Q * L2))/(Q * (L2 - L3))
@@ -70,10 +72,12 @@ C SHEMA — ОБОЗНАЧЕНИЕ СХЕМЫ ПЛАНЕТАРНОГО РЕДУ�
 10    FORMAT(1X, 'ПРИ ЗАДАНЫХ УСЛОВИЯХ ПОДБОР ЧИСЕЛ'
      *'ЗУБЬЕВ НЕВОЗМОЖЕН')
       RETURN
-6     WRITE(3, 11)SHEMA, Z1, Z2, Z3, Z3, KS
-11    FORMAT(1X, 'ЧИСЛА ЗУБЬЕВ ПЛАНЕТАРНОГО РЕДУКТОРА/'
-     *1X, 'SHEMA =', 11/' Z1 = I, 13.' Z3 = ', 13.
-     *' Z4 = ', 13/
-     *'КОЛИЧЕСТВО БЛОКОВ САТЕЛЛИТОВ KS = ', 12)
+C OCR: "Z2, Z3, Z3, KS" -> "Z2, Z3, Z4, KS"
+6     WRITE(3, 11)SHEMA, Z1, Z2, Z3, Z4, KS
+C OCR: "РЕДУКТОРА/'" -> "РЕДУКТОРА'/"; "11/" -> "I1/"; "' Z1 = I, 13.' Z3 = ', 13." -> "' Z1 = ', I3, ' Z2 = ', I3, ' Z3 = ', I3," (the Z2 item lost; uncertain); "13/" -> "I3/"; "12)" -> "I2)"
+11    FORMAT(1X, 'ЧИСЛА ЗУБЬЕВ ПЛАНЕТАРНОГО РЕДУКТОРА'/
+     *1X, 'SHEMA =', I1/' Z1 = ', I3, ' Z2 = ', I3, ' Z3 = ', I3,
+     *' Z4 = ', I3/
+     *'КОЛИЧЕСТВО БЛОКОВ САТЕЛЛИТОВ KS = ', I2)
       RETURN
       END

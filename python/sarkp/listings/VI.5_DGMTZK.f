@@ -28,7 +28,8 @@ C OCR: ", NE," -> ".NE."
       IF(AAA.NE.0.0)RETURN
       WRITE(3,1)
 1     FORMAT(20X, 40H ГЕОМЕТРИЧЕСКИЕ РАЗМЕРЫ ЗУБЧАТОГО
-      КОЛЕСА)
+C OCR: "      КОЛЕСА)" -> "     *КОЛЕСА)" (continuation mark lost)
+     *КОЛЕСА)
       WRITE(3,2)
 2     FORMAT(20X, 20H ИСХОДНЫЕ ПАРАМЕТРЫ:)
       WRITE(3,3)M, Z, BETA, X

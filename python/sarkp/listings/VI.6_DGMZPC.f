@@ -17,7 +17,8 @@ C РЕЗУЛЬТАТЫ ПЕЧАТАЮТСЯ ПРИ AAA = 0.0
       A = (Z1 + Z2) * M / (2.0 * COS(BETA))
       XS = X1 + X2
       INVALW = (2.0 * XS * TAN(ALFA)) / (Z1 + Z2) + TAN(ALFAT) - ALFAT
-      ALFAW = DUGINY(INVALW, PI/18.0, 0.0, 0.0, 0.0)
+C OCR: "DUGINY(" -> "DUGINV("
+      ALFAW = DUGINV(INVALW, PI/18.0, 0.0, 0.0, 0.0)
       AW = (Z1 + Z2) * M * COS(ALFAT) / 2.0 * COS(BETA) * COS(ALFAW)
       XY = (AW - A) / M
       XUR = XS - XY
@@ -32,7 +33,8 @@ C РЕЗУЛЬТАТЫ ПЕЧАТАЮТСЯ ПРИ AAA = 0.0
       IF(AAA.NE.0.0) RETURN
 C OCR: "WRITE(3.1)" -> "WRITE(3,1)"
       WRITE(3,1) A, XS, ALFAW, AW, XY, XUR, E
-      I FORMAT(10X, 'ОСНОВНЫЕ ПАРАМЕТРЫ ЗАЦЕПЛЕНИЯ'//
+C OCR: "      I FORMAT(" -> "1     FORMAT("
+1     FORMAT(10X, 'ОСНОВНЫЕ ПАРАМЕТРЫ ЗАЦЕПЛЕНИЯ'//
      *'ДЕЛИТЕЛЬНОЕ МЕЖОСЕВОЕ РАССТОЯНИЕ — A = ', F10.4/
      *'КОЭФФИЦИЕНТ СУММАРНОГО СМЕЩЕНИЯ — XS = ', F7.4/
      *'УГОЛ ЗАЦЕПЛЕНИЯ', 18X, ' — ALFAW = ', F7.4/

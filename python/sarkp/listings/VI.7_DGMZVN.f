@@ -22,7 +22,8 @@ C С КОЛЕСАМИ НА ПЕЧАТЬ НЕ ВЫВОДЯТСЯ.
       ALFA = PI / 9.0
       XD = X2 - X1
       INVALW = TAN(ALFA) - ALFA + 2.0 * XD * TAN(ALFA) / (Z2 - Z1)
-      ALFAW = DUGINV(INVALW, PI/18, 0, 0.00001)
+C OCR: "DUGINV(INVALW, PI/18, 0, 0.00001)" -> "DUGINV(INVALW, PI/18.0, 0.00001)"
+      ALFAW = DUGINV(INVALW, PI/18.0, 0.00001)
       AW = A * COS(ALFA) / COS(ALFAW)
       D1 = M * Z1
       D2 = M * Z2
@@ -33,7 +34,8 @@ C С КОЛЕСАМИ НА ПЕЧАТЬ НЕ ВЫВОДЯТСЯ.
       XUR = XD - XY
       INVO2 = 2.0 * (X2 - XO) * TAN(ALFA) / (Z2 - ZO2) + TAN(ALFA) -
      *ALFA
-      ALFAO2 = DUGINV(INVO2, PI/18, 0, 0.00001)
+C OCR: "DUGINV(INVO2, PI/18, 0, 0.00001)" -> "DUGINV(INVO2, PI/18.0, 0.00001)"
+      ALFAO2 = DUGINV(INVO2, PI/18.0, 0.00001)
       AWO2 = (Z2 - ZO2) * M * COS(ALFA) / (2.0 * COS(ALFAO2))
       XYO2 = AWO2 / M - (Z2 - ZO2) / 2.0
       XURO2 = X2 - XO - XYO2
@@ -47,10 +49,13 @@ C С КОЛЕСАМИ НА ПЕЧАТЬ НЕ ВЫВОДЯТСЯ.
       ALA1 = ARCCOS(M * Z1 * COS(ALFA)/DA1)
       ALA2 = ARCCOS(M * Z2 * COS(ALFA)/DA2)
       EALFA = (Z1 * TAN(ALA1) - Z2 * TAN(ALA2) + (Z2 - Z1) * TAN
-     *(ALFAW))/(2.0 * PISA1 = DA1 * ((0.5 * PI + 2.0 * X1 * TAN(ALFA)))/
+C OCR: "(2.0 * PISA1 = DA1 * ((0.5 * PI + 2.0 * X1 * TAN(ALFA)))/" -> "(2.0 * PI)" and "SA1 = DA1 * ((0.5 * PI + 2.0 * X1 * TAN(ALFA))/" (two statements run together)
+     *(ALFAW))/(2.0 * PI)
+      SA1 = DA1 * ((0.5 * PI + 2.0 * X1 * TAN(ALFA))/
      *Z1 + (TAN(ALFA) - ALFA) - (TAN(ALA1) - ALA1))
       SA2 = DA2 * ((0.5 * PI - 2.0 * X2 + TAN(ALFA))/Z2 - (TAN(ALFA) -
-      ALFA) * (TAN(ALA2) - ALA2))
+C OCR: "      ALFA) *" -> "     *ALFA) *" (continuation mark lost)
+     *ALFA) * (TAN(ALA2) - ALA2))
       IF(AAA.NE.0.0)RETURN
 C OCR: "WRITE(3.1)" -> "WRITE(3,1)"
       WRITE(3,1)A, XD, ALFAW, AW, D1, D2, XY, XUR, DA1, DA2, DF1, DF2
