@@ -10,6 +10,7 @@ from .modes import MODES, as_printed, get_mode, mode, set_mode
 from .operators import (DFRNCL, DINTGR, DMOMNT, DOMEGA, DSMVKT, DUGL1, DUGL2, DUGL3,
                         DUGL4, DUGL5, DUGOL, DVKT)
 from .solver import GELG
+from .listings import errata, listing
 from .synthesis import DSNTZ1, DSNTZ2, DSNTZ3, DSNTZK, DSNTZR
 from .kinematics import (DKNMA1, DKNMA2, DKNMA3, DKNMA4, DKNMA5, DPRM1, DPRM2, DPRM3,
                          DPRM4, DPRM5, DSKOR1, DSKOR2, DSKOR3, DSKOR4, DSKOR5, DUSKR1,
@@ -20,6 +21,7 @@ __version__ = "0.1.0"
 __all__ = [
     "SarkpError", "AssemblyError", "SingularError", "RequirementError",
     "SignificanceWarning", "MODES", "set_mode", "get_mode", "mode", "as_printed", "GELG",
+    "listing", "errata",
     # chapter 2
     "DINTGR", "DFRNCL", "DUGL1", "DUGL2", "DUGL3", "DUGL4", "DUGL5", "DUGOL", "DMOMNT",
     "DOMEGA", "DVKT", "DSMVKT",

@@ -3,6 +3,8 @@
     sarkp book list                       the reproduced programs and figures
     sarkp book run PROGRAM [--mode M]     a program's printout, in the book's layout
     sarkp book diff FIG|all [--mode M]    compare a reproduction with the printed figure
+    sarkp listing [NAME] [--modern|--diff [side]]   the book's code; sarkp's routine; both
+    sarkp errata ID|NAME                  a row of docs/ERRATA.md, or every row of a routine
 
 Book programs run as printed by default (``--mode as-printed``).
 """
@@ -12,7 +14,7 @@ from __future__ import annotations
 import argparse
 import sys
 
-from . import book, modes
+from . import book, listings, modes
 from .book import figures
 
 
@@ -37,8 +39,29 @@ def main(argv=None) -> int:
     diff.add_argument("figure", help="figure number, e.g. 4, or 'all'")
     for p in (run, diff):
         p.add_argument("--mode", choices=modes.MODES, default="as-printed")
+    listing = sub.add_parser("listing", help="the book's listing of a routine or program")
+    listing.add_argument("name", nargs="?", help="e.g. DPRM1 or IV.1; none lists them all")
+    shown = listing.add_mutually_exclusive_group()
+    shown.add_argument("--modern", action="store_true", help="sarkp's Fortran 90 routine")
+    shown.add_argument("--diff", nargs="?", const="unified", choices=("unified", "side"),
+                       help="book against sarkp, each deviation with its ERRATA ids")
+    errata = sub.add_parser("errata", help="rows of docs/ERRATA.md")
+    errata.add_argument("key", help="an id (E-DUSKR1-1) or a routine (DUSKR1)")
     args = parser.parse_args(argv)
 
+    if args.command in ("listing", "errata"):
+        try:
+            if args.command == "errata":
+                text = listings.errata(args.key)
+            elif args.name is None:
+                text = listings.table()
+            else:
+                text = listings.listing(args.name, modern=args.modern, diff=args.diff)
+        except ValueError as exc:
+            print(f"sarkp: {exc}", file=sys.stderr)
+            return 2
+        print(text.rstrip("\n"))
+        return 0
     if args.action == "list":
         for listing, name in book.PROGRAMS.items():
             prog = book.program(listing)

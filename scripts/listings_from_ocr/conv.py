@@ -28,6 +28,10 @@ def fix_code(s):
     for is_str, t in pieces:
         if is_str:
             res.append(t); continue
+        def wr(m):
+            new = f'{m.group(1)}({m.group(2)},{m.group(3)})'.replace('Ø', '0').replace('θ', '0')
+            marks.append((m.group(0), new)); return new
+        t = re.sub(r'\b(WRITE|READ)\s*\(([\dØθ]+)\.\s?([\dØθ]+)\)', wr, t)
         # zeros
         def zero(m):
             w = m.group(0); n = re.sub(r'Ø|θ|∅|\\varnothing|О(?=[\d.])', '0', w)
@@ -50,10 +54,6 @@ def fix_code(s):
         def low(m):
             w = m.group(0); n = w.upper(); marks.append((w, n)); return n
         t = re.sub(r'\b\w*[a-z]\w*\b', low, t)
-        def wr(m):
-            new = f'{m.group(1)}({m.group(2)},{m.group(3)})'
-            marks.append((m.group(0), new)); return new
-        t = re.sub(r'\b(WRITE|READ)\s*\((\d+)\.\s?(\d+)\)', wr, t)
         def dash(m):
             marks.append((m.group(0), '-')); return '-'
         if not re.search(r'[А-Я]', t):

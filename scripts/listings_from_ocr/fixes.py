@@ -18,7 +18,7 @@ F['II.9_DMOMNT.f'] = []
 F['III.1_DSNTZR.f'] = [
     ('all', r'\bF11\(', 'FI1('), ('all', r'\bF13\(', 'FI3('),
     ('sub', 'DSNTZR(LO, L3, F11, F13,', 'DSNTZR(LO, L3, FI1, FI3,'),
-    ('sub', 'C F11(3)', 'C FI1(3)'), ('sub', 'C F13(3)', 'C FI3(3)'), ('sub', 'МАССИВА F13(3)', 'МАССИВА FI3(3)'),
+    ('sub', 'F11(3) — УГЛОВЫЕ', 'FI1(3) — УГЛОВЫЕ'), ('sub', 'F13(3) — УГЛОВЫЕ', 'FI3(3) — УГЛОВЫЕ'), ('sub', 'МАССИВА F13(3)', 'МАССИВА FI3(3)'),
     ('sub', '/2,0', '/2.0'),
     ('sub', "FORMAT(1X, СИНТЕЗ МЕХАНИЗМА ШАРНИРНОГО/", "FORMAT(1X, 'СИНТЕЗ МЕХАНИЗМА ШАРНИРНОГО'/", 'quotes lost'),
     ('sub', "'ЗВЕНЬЕВ. '//ИСХОДНЫЕ", "'ЗВЕНЬЕВ. '//'ИСХОДНЫЕ", 'quote lost'),
@@ -36,7 +36,7 @@ F['III.3_DSNTZ2.f'] = [
     ('sub', 'KC1A + TAN', 'KC1A = TAN'),
     ('sub', "*' 1X, 'ВЫХОДНЫЕ", "*1X, 'ВЫХОДНЫЕ"),
     ('raw', """     *' L1 = ',F7.4,' L2 = ',F7.4,' LO = ',F7.4,' XA = ',F7.4,' Y
-     *'F7.4//)""", """C OCR: "' Y" / "*'F7.4//)" -> "' YA = '," / "*F7.4//)"
+     *'F7.4//)""", """C OCR: "' Y" -> "' YA = ',"; "*'F7.4//)" -> "*F7.4//)"
      *' L1 = ',F7.4,' L2 = ',F7.4,' LO = ',F7.4,' XA = ',F7.4,' YA = ',
      *F7.4//)"""),
 ]
@@ -132,7 +132,7 @@ F['V.2_DPRFLP.f'] = [
 ]
 F['V.4_DPRFLK.f'] = [
     ('sub', 'DPRFLK(N, W1, ETAO, F1, RO,', 'DPRFLK(N, W1, ETAO, FI, RO,'),
-    ('sub', 'C RSI(N)', 'C PSI(N)'),
+    ('sub', 'RSI(N) —', 'PSI(N) —'),
 ]
 F['V.5_program.f'] = [
     ('raw', '      EXCTST, ETAO', 'C OCR: "      EXCTST, ETAO" -> "     *EXCTST, ETAO" (continuation mark lost)\n     *EXCTST, ETAO'),
