@@ -15,8 +15,17 @@ def apply(path, fixes):
             j = i
             while j > 0 and lines[j-1].startswith('C OCR:'):
                 j -= 1
-            # merge with an OCR line right above
-            if j < i:
+            # an OCR correction of an earlier correction: rewrite that pair
+            chained = False
+            for k in range(j, i):
+                pairs = re.findall(r'"([^"]*)" -> "([^"]*)"', lines[k])
+                for r, f in pairs:
+                    if old in f and not chained:
+                        lines[k] = lines[k].replace(f'"{r}" -> "{f}"', f'"{r}" -> "{f.replace(old, new)}"')
+                        chained = True
+            if chained:
+                pass
+            elif j < i:          # merge with an OCR line right above
                 lines[i-1] += '; ' + mark[7:]
             else:
                 lines.insert(i, mark)

@@ -189,6 +189,74 @@ F['VI.8_DCHRVC.f'] = [
     ('sub', "R = ', F7.3//", "R = ', F7.3//)", 'the closing parenthesis lost'),
 ]
 
+F['VII.3_DNMAF4.f'] = [
+    ('sub', '+ F3 * COS(G3 - FIN))\n', '+ F3 * COS(G3 - FIN))/\n', 'the division sign lost'),
+]
+F['VII.4_DNMAF3.f'] = [
+    ('all', r'\bF/3\b|\bF13\b', 'FI3'),
+]
+F['VII.5_DNMAF5.f'] = [
+    ('sub', 'RAS2 * F2 * *', 'RAS2 * F2 *', 'the continuation mark printed twice'),
+]
+F['VII.6_DNMA1.f'] = [
+    ('all', r'\bF1([23])\b', r'FI\1'),
+    ('sub', 'DUGL3(RI2,', 'DUGL3(FI2,'),
+    ('sub', 'L2, F12 И L3, F13 —', 'L2, FI2 И L3, FI3 —'),
+    ('raw', '      СТВУЮЩИЕ ВНЕШНИХ СИЛ', 'C OCR: "СТВУЮЩИЕ ВНЕШНИХ СИЛ" -> "C СТВУЮЩИЕ ВНЕШНИХ СИЛ" (the comment mark lost)\nC СТВУЮЩИЕ ВНЕШНИХ СИЛ'),
+    ('raw', '      RA = SQRT{RAN^2 + RAT^2}', 'C OCR: "\\sqrt{RAN^2 + RAT^2}" -> "SQRT(RAN ** 2 + RAT ** 2)"\n      RA = SQRT(RAN ** 2 + RAT ** 2)'),
+    ('raw', '      RC = SQRT{RCN^2 + RCT^2}', 'C OCR: "\\sqrt{RCN^2 + RCT^2}" -> "SQRT(RCN ** 2 + RCT ** 2)"\n      RC = SQRT(RCN ** 2 + RCT ** 2)'),
+    ('raw', '      RB = SQRT{RBX^2 + RBY^2}', 'C OCR: "\\sqrt{RBX^2 + RBY^2}" -> "SQRT(RBX ** 2 + RBY ** 2)"\n      RB = SQRT(RBX ** 2 + RBY ** 2)'),
+]
+F['VII.7_DNMA2.f'] = [
+    ('sub', 'DNMA2(L2, F12, L3, ETA, F10,', 'DNMA2(L2, FI2, L3, ETA, FIO,'),
+    ('sub', 'RA, CA, RB,', 'RA, GA, RB,'),
+    ('sub', 'L2, F12 И L3, ETA, F10 —', 'L2, FI2 И L3, ETA, FIO —'),
+    ('sub', 'DUGL6(RAN, CAN,', 'DUGL6(RAN, GAN,'),
+]
+F['VII.8_DNMA3.f'] = [
+    ('sub', 'COS(GR + PI)', 'COS(GB + PI)'),
+]
+F['VII.10_DNMA5.f'] = [
+    ('sub', '8.00001', '0.00001'),
+]
+
+F['VII.10_program.f'] = [
+    ('raw', '      200.0/', 'C OCR: "      200.0/" -> "     *200.0/" (continuation mark lost)\n     *200.0/'),
+    ('sub', 'Q4, -PID2, X, FC2,', 'Q4, -PID2, XD, Y, FC2,', 'two names lost'),
+    ('sub', 'Q2, -RFS3 * COS(FI3) + ROF,', 'Q2, -PID2, RFS3 * COS(FI3) + ROF,', 'PID2 and a comma lost'),
+    ('sub', 'D1011', 'G1011'),
+    ('raw', '      40FORMAT(1X, 12F10.1)', '40    FORMAT(1X, 12F10.1)'),
+    ('raw', 'C OCR: "F2.θ3" -> "F2.03"', 'C OCR: "F2.θ3" -> "F20.3"'),
+    ('raw', '42    FORMAT(1X, F2.03,', '42    FORMAT(1X, F20.3,'),
+    ('raw', 'C OCR: "G11θ" -> "G110"\n      G110\n', 'C OCR: "G11θ" -> "*G110" (the continuation mark lost)\n     *G110\n'),
+]
+F['X_program.f'] = [
+    ('sub', '*0.42/H5/0.64/,', '*0.42/, H5/0.64/,'),
+    ('all', r'\(IX,', '(1X,'),
+    ('all', r'//IX,', '//1X,'),
+    ('sub', '6, 7, 3, 0, 200, 3)', '6, 7, 30, 200, 3)'),
+    ('sub', "КОЛЕС:')", "КОЛЕС:'/", 'uncertain: the quotes and slashes of FORMAT 3'),
+    ('sub', "*X1 = ', F7.3,", "*' X1 = ', F7.3,"),
+    ('sub', "*УГОЛ ЗАЦЕПЛЕНИЯ AL12", "*' УГОЛ ЗАЦЕПЛЕНИЯ AL12"),
+    ('sub', 'DATA W1/3.0, DSMAX/0.06/', 'DATA W1/3.0/, DSMAX/0.06/'),
+    ('all', r'\bPHI\b', 'PSI'),
+    ('sub', "*ГОЛКАТЕЛЯ' 5X,", "*ТОЛКАТЕЛЯ'/5X,"),
+    ('sub', "ПРОФИЛЯ КУЛАЧКА//", "ПРОФИЛЯ КУЛАЧКА'//"),
+    ('sub', '0.0, 2.0, VBA, ALBA, VEC, ALBC,', '0.0, 2.0, VBA, ALBA, VBC, ALBC,'),
+    ('raw', """      BD = DUGL3(FICB(K) + PI, PI - ATAN(ABS(K))/W3(K) ** 2)
+     *E3(K))""", """C OCR: "ATAN(ABS(K))/W3(K) ** 2)" -> "ATAN(ABS(E3(K))/W3(K) ** 2),"
+      BD = DUGL3(FICB(K) + PI, PI - ATAN(ABS(E3(K))/W3(K) ** 2),
+     *E3(K))"""),
+    ('sub', 'DUSKR2(AD, BD, 0., 0., 0., RDE,', 'DUSKR2(AD, BD, 0., 0., 0., 0., RDE,', 'a zero lost'),
+    ('sub', 'DMOONT', 'DMOMNT'),
+    ('sub', '*G23(K), F30(K), G30(K)\n', '*G23(K), F30(K), G30(K))\n', 'the closing parenthesis lost'),
+    ('all', r'\bF1([12])\(K\)', r'FI\1(K)'),
+    ('sub', '30    C CONTINUE', '30    CONTINUE'),
+    ('sub', "FORMAT('//ОПРЕДЕЛЕНИЕ", "FORMAT(//'ОПРЕДЕЛЕНИЕ"),
+    ('sub', "УРАВНЕНИЯ ДВИЖЕНИЯ /", "УРАВНЕНИЯ ДВИЖЕНИЯ'/"),
+    ('sub', 'DE3(K)', 'DEC(K)'),
+]
+
 if __name__ == '__main__':
     d = sys.argv[1]
     for f, fx in F.items():

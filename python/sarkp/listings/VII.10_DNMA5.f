@@ -22,7 +22,8 @@ C РЕЗУЛЬТАТ — RA, GA, RB, HB, GB, RC, HC, GC.
       X(2, 2) = SIN(FIM + ETA3 + PID2)
       Y(1) = -Q3 * COS(G3)
       Y(2) = -Q3 * SIN(G3)
-      CALL GELG(Y, X, 2, 1, 8.00001, IER)
+C OCR: "8.00001" -> "0.00001"
+      CALL GELG(Y, X, 2, 1, 0.00001, IER)
       RC = ABS(Y(1))
       GC = DUGL3(FIM, PID2, Y(1))
       RB = ABS(Y(2))

@@ -16,7 +16,8 @@ C H21, H34 — ПЛЕЧИ СИЛ F21, F34 ОТНОСИТЕЛЬНО С.
       COMMON/PRMTR/PI, PID2
       CALL DVKT(XB, YB, XS2, YS2, RBS2, FIBS2)
       CALL DVKT(XB, YB, XS3, YS3, RBS3, FIBS3)
-      F12 = -(F2 * COS(G2 - FIN) + F3 * COS(G3 - FIN))
+C OCR: "+ F3 * COS(G3 - FIN))" -> "+ F3 * COS(G3 - FIN))/" (the division sign lost)
+      F12 = -(F2 * COS(G2 - FIN) + F3 * COS(G3 - FIN))/
      *COS(FIM + PID2 - FIN)
       G12 = DUGL3(FIM, PID2, F12)
       G21 = G12 - PI

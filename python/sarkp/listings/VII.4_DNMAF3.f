@@ -1,6 +1,7 @@
 C LISTING VII.4 DNMAF3: BELOKONEV 1990, BOOK LINES L5179-5210
 C AS PRINTED. OCR MISREADINGS CORRECTED, EACH MARKED "C OCR:".
-      SUBROUTINE DNMAF3(XA, YA, XC, YC, F/3, XS2, YS2, F2, G2, XS3, YS3, F3, G3, T2, T3, AAA, F21, G21, F23, G23, H23, F34, G34)
+C OCR: "F/3" -> "FI3"
+      SUBROUTINE DNMAF3(XA, YA, XC, YC, FI3, XS2, YS2, F2, G2, XS3, YS3, F3, G3, T2, T3, AAA, F21, G21, F23, G23, H23, F34, G34)
 C ОПРЕДЕЛЕНИЕ РЕАКЦИЙ В КИНЕМАТИЧЕСКИХ ПАРАХ
 C СТРУКТУРНОЙ ГРУППЫ ТРЕТЬЕГО ВИДА.
 C А, С — ЦЕНТРЫ ШАРНИРОВ КИНЕМАТИЧЕСКИХ ПАР.
@@ -11,15 +12,19 @@ C F21, F23, F34 — РЕАКЦИИ В КИНЕМАТИЧЕСКИХ ПАРАХ,
 C G21, G23, G34 — ИХ НАПРАВЛЯЮЩИЕ УГЛЫ,
 C H23 — ПЛЕЧО СИЛЫ F23 ОТ С.
       COMMON/PRMTR/PI, PID2
-      F12T3 = -F2 * COS(G2 - F/3)
-      G12T3 = DUGL4(F13, PI, F12T3)
+C OCR: "F/3" -> "FI3"
+      F12T3 = -F2 * COS(G2 - FI3)
+C OCR: "F13" -> "FI3"
+      G12T3 = DUGL4(FI3, PI, F12T3)
       CALL DVKT(XC, YC, XA, YA, RCA, FICA)
       CALL DVKT(XC, YC, XS2, YS2, RCS2, FICS2)
       CALL DVKT(XC, YC, XS3, YS3, RCS3, FICS3)
       F12N3 = -(RCA * ABS(F12T3) * SIN(G12T3 - FICA) + RCS2 * F2 *
      *SIN(G2 - FICS2) + RCS3 * F3 * SIN(G3 - FICS3) + T2 + T3)/(RCA *
-     *SIN(F13 + PID2 - FICA))
-      G12N3 = DUGL3(F13, PID2, F12N3)
+C OCR: "F13" -> "FI3"
+     *SIN(FI3 + PID2 - FICA))
+C OCR: "F13" -> "FI3"
+      G12N3 = DUGL3(FI3, PID2, F12N3)
       CALL DSMVKT(ABS(F12T3), G12T3, ABS(F12N3), G12N3, F21, G)
       G21 = G - PI
       CALL DSMVKT(F21, G, F2, G2, F23, G23)

@@ -25,7 +25,8 @@ C H23, H34 — ПЛЕЧИ СИЛ F23, F34 ОТНОСИТЕЛЬНО ТОЧКИ А
       CALL DSMVKT(F34, G34 - PI, F3, G3, F32, G32)
       CALL DSMVKT(F32, G32, F2, G2, F21, G21)
       IF(F34.EQ.0.0)GO TO 1
-      H34 = -(T2 + T3 + RAS3 * F3 * SIN(G3 - FIAS3) + RAS2 * F2 * *
+C OCR: "RAS2 * F2 * *" -> "RAS2 * F2 *" (the continuation mark printed twice)
+      H34 = -(T2 + T3 + RAS3 * F3 * SIN(G3 - FIAS3) + RAS2 * F2 *
      *SIN(G2 - FIAS2))/F34
       GO TO 2
 1     H34 = 0.0

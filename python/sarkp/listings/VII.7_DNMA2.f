@@ -1,10 +1,13 @@
 C LISTING VII.7 DNMA2: BELOKONEV 1990, BOOK LINES L5320-5368
 C AS PRINTED. OCR MISREADINGS CORRECTED, EACH MARKED "C OCR:".
-      SUBROUTINE DNMA2(L2, F12, L3, ETA, F10, BS2, BS3, M2,
-     *Q2, G2, M3, Q3, G3, RA, CA, RB, GB, RC, HC, GC)
+C OCR: "DNMA2(L2, F12, L3, ETA, F10," -> "DNMA2(L2, FI2, L3, ETA, FIO,"
+      SUBROUTINE DNMA2(L2, FI2, L3, ETA, FIO, BS2, BS3, M2,
+C OCR: "RA, CA, RB," -> "RA, GA, RB,"
+     *Q2, G2, M3, Q3, G3, RA, GA, RB, GB, RC, HC, GC)
 C ОПРЕДЕЛЕНИЕ РЕАКЦИЙ В КИНЕМАТИЧЕСКИХ ПАРАХ
 C СТРУКТУРНОЙ ГРУППЫ ВТОРОГО ВИДА.
-C L2, F12 И L3, ETA, F10 — ЛИНЕЙНЫЕ И УГЛОВЫЕ РАЗМЕРЫ
+C OCR: "L2, F12 И L3, ETA, F10 —" -> "L2, FI2 И L3, ETA, FIO —"
+C L2, FI2 И L3, ETA, FIO — ЛИНЕЙНЫЕ И УГЛОВЫЕ РАЗМЕРЫ
 C ЗВЕНЬЕВ И УГЛЫ, ОПРЕДЕЛЯЮЩИЕ ИХ ПОЛОЖЕНИЯ.
 C BS2 И BS3 — РАССТОЯНИЯ ОТ ЦЕНТРА ПРОМЕЖУТОЧНОГО
 C ШАРНИРА ДО ТОЧЕК ПРИВЕДЕНИЯ НА СООТВЕТСТВУЮЩИХ
@@ -34,7 +37,8 @@ C РЕЗУЛЬТАТ: RA, GA, RB, GB, RC, GC, HC.
       GC = DUGL3(FIO, PID2, Y(2))
       RC = ABS(Y(2))
       RA = SQRT(RAN ** 2 + RAT ** 2)
-      GA = DUGL6(RAN, CAN, RAT, GAT, FI2)
+C OCR: "DUGL6(RAN, CAN," -> "DUGL6(RAN, GAN,"
+      GA = DUGL6(RAN, GAN, RAT, GAT, FI2)
       MBQ3 = Q3 * COS(G3) * BS3 * SIN(PI + FIO + ETA) - Q3 * SIN(G3) *
      *BS3 * COS(PI + FIO + ETA)
       HC = -(M3 + MBQ3)/RC

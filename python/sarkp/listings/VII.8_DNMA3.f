@@ -26,7 +26,8 @@ C AS PRINTED. OCR MISREADINGS CORRECTED, EACH MARKED "C OCR:".
       RB = ABS(Y(2))
       RA = SQRT(RAN ** 2 + RAT ** 2)
       GA = DUGL6(RAN, GAN, RAT, GAT, FIAC)
-      RX = -(RB * COS(GR + PI) + Q3 * COS(G3))
+C OCR: "COS(GR + PI)" -> "COS(GB + PI)"
+      RX = -(RB * COS(GB + PI) + Q3 * COS(G3))
       RY = -(RB * SIN(GB + PI) + Q3 * SIN(G3))
       RC = SQRT(RX ** 2 + RY ** 2)
       GC = DUGL5(RX, RY)

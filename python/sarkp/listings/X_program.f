@@ -30,10 +30,12 @@ C
 C
 C ОПРЕДЕЛЕНИЕ РАЗМЕРОВ ЗВЕНЬЕВ МАНИПУЛЯТОРА.
       DATA FICD/0.0, 0.349, 0.698/, FI5/1.57, 1.57, 1.57/, X5/0.82, 0.62,
-     *0.42/H5/0.64/, DELTA/0.698/
+C OCR: "*0.42/H5/0.64/," -> "*0.42/, H5/0.64/,"
+     *0.42/, H5/0.64/, DELTA/0.698/
       CALL DSNTZR(X5, H5, FICD, FI5, 1.0, RCD, RDE, FICD1)
       WRITE(3, 1) RCD, RDE, FICD1
-1     FORMAT(IX, 'РАЗМЕРЫ ЗВЕНЬЕВ МАНИПУЛЯТОРА'//
+C OCR: "(IX," -> "(1X,"
+1     FORMAT(1X, 'РАЗМЕРЫ ЗВЕНЬЕВ МАНИПУЛЯТОРА'//
      *'RCD = ', F7.3,' RDE = ', F7.3,' FICD = ', F7.3//)
       SKW = 1.1
       RCB = RCD
@@ -51,7 +53,8 @@ C ПОДБОР ЧИСЕЛ ЗУБЬЕВ ПЛАНЕТАРНОГО РЕДУКТОР
       CALL DZBPL(1, 1, 25, 2, 3, 30, 200, 3)
       CALL DZBPL(1, 1, 25, 3, 4, 30, 200, 3)
       CALL DZBPL(1, 1, 25, 4, 5, 30, 200, 3)
-      CALL DZBPL(1, 1, 25, 6, 7, 3, 0, 200, 3)
+C OCR: "6, 7, 3, 0, 200, 3)" -> "6, 7, 30, 200, 3)"
+      CALL DZBPL(1, 1, 25, 6, 7, 30, 200, 3)
       CALL DZBPL(2, 5, 1, 1, 1, 13, 35, 1)
       CALL DZBPL(3, 5, 1, 1, 1, 13, 35, 1)
       CALL DZBPL(2, 71, 10, 1, 1, 13, 35, 1)
@@ -63,9 +66,12 @@ C УСЛОВИЯ ПОВЫШЕНИЯ ИЗНОСОСТОЙКОСТИ ПОВЕРХ�
 C ЗУБЬЕВ.
       CALL DKRKT(3.0, 20.0, 51.0, 0.0, 3, 1.0, X1, X2, AL12)
       WRITE(3, 3)X1, X2, AL12
-3     FORMAT(1X, 'КОЭФФИЦИЕНТЫ СМЕЩЕНИЯ КОЛЕС:')
-     *X1 = ', F7.3,' X2 = ', F7.3/
-     *УГОЛ ЗАЦЕПЛЕНИЯ AL12 = ', F8.4)
+C OCR: "КОЛЕС:')" -> "КОЛЕС:'/" (uncertain: the quotes and slashes of FORMAT 3)
+3     FORMAT(1X, 'КОЭФФИЦИЕНТЫ СМЕЩЕНИЯ КОЛЕС:'/
+C OCR: "*X1 = ', F7.3," -> "*' X1 = ', F7.3,"
+     *' X1 = ', F7.3,' X2 = ', F7.3/
+C OCR: "*УГОЛ ЗАЦЕПЛЕНИЯ AL12" -> "*' УГОЛ ЗАЦЕПЛЕНИЯ AL12"
+     *' УГОЛ ЗАЦЕПЛЕНИЯ AL12 = ', F8.4)
 C
 C ОПРЕДЕЛЕНИЕ РАЗМЕРОВ КОЛЕС И ХАРАКТЕРИСТИКА
 C ЗАЦЕПЛЕНИЙ.
@@ -80,7 +86,8 @@ C РАСЧЕТ КУЛАЧКОВОГО МЕХАНИЗМА
       FIV = FIU
       FID = (PI - BETA) * 0.2
       SK = FIU / PI
-      DATA W1/3.0, DSMAX/0.06/
+C OCR: "DATA W1/3.0, DSMAX/0.06/" -> "DATA W1/3.0/, DSMAX/0.06/"
+      DATA W1/3.0/, DSMAX/0.06/
       WO = DSMAX * W1 ** 2 / (2.0 * SK ** 2)
       DFI = FIU / 10.0
       FI = -DFI
@@ -101,20 +108,25 @@ C OCR: ", GT," -> ".GT."
       GO TO 27
 26    PSI = FI - (FIU + FID)
       SMAX = 2.0 * WO * (SK / W1) ** 2
-27    AT(K) = AO * COS(PHI / SK)
-      VT(K) = AO * SK / W1 * SIN(PHI / SK)
-      ST(K) = AO * (SK / W1) ** 2 * (1.0 - COS(PHI / SK)) + SMAX
+C OCR: "PHI" -> "PSI"
+27    AT(K) = AO * COS(PSI / SK)
+C OCR: "PHI" -> "PSI"
+      VT(K) = AO * SK / W1 * SIN(PSI / SK)
+C OCR: "PHI" -> "PSI"
+      ST(K) = AO * (SK / W1) ** 2 * (1.0 - COS(PSI / SK)) + SMAX
 5     CONTINUE
       CALL DPRFPL(26, PI/3.0, W1, FIK, AT, VT, X, Y, RK, DLT, ROK, RKSH)
       WRITE(3, 6)
 6     FORMAT(1X, 'КИНЕМАТИЧЕСКИЕ ХАРАКТЕРИСТИКИ ДВИЖЕНИЯ
-     *ГОЛКАТЕЛЯ' 5X, 'FIK', 8X, 'AT', 8X, 'VT', 8X, 'ST')
+C OCR: "*ГОЛКАТЕЛЯ' 5X," -> "*ТОЛКАТЕЛЯ'/5X,"
+     *ТОЛКАТЕЛЯ'/5X, 'FIK', 8X, 'AT', 8X, 'VT', 8X, 'ST')
       WRITE(3, 7)(FIK(K), AT(K), VT(K), ST(K), K = 1, 26)
 7     FORMAT(1X, 4F10.4)
       WRITE(3, 8)RKSH
 8     FORMAT(1X// 'РАДИУС КУЛАЧКОВОЙ ШАЙБЫ - RKSH = ', F7.4//)
       WRITE(3, 9)
-9     FORMAT(1X, 'ХАРАКТЕРИСТИКИ ПРОФИЛЯ КУЛАЧКА//
+C OCR: "ПРОФИЛЯ КУЛАЧКА//" -> "ПРОФИЛЯ КУЛАЧКА'//"
+9     FORMAT(1X, 'ХАРАКТЕРИСТИКИ ПРОФИЛЯ КУЛАЧКА'//
      *5X, 'FIK', 7X, 'X', 9X, 'Y', 9X, 'RK', 7X, 'DLT', 7X, 'ROK')
       WRITE(3, 4)(FIK(K), X(K), Y(K), RK(K), DLT(K), ROK(K), K = 1, 26)
 4     FORMAT(1X, 6F10.4)
@@ -138,7 +150,8 @@ C КИНЕМАТИЧЕСКИЙ РАСЧЕТ МЕХАНИЗМА МАНИПУЛЯ�
       VA = W1 * ROA
       ALA = F + PID2
       CALL DSKOR1(R2, FI2(K), RCB, FICB(K), VA, ALA, 0.0,
-     *0.0, 2.0, VBA, ALBA, VEC, ALBC, VB, ALB, W2(K), W3(K))
+C OCR: "0.0, 2.0, VBA, ALBA, VEC, ALBC," -> "0.0, 2.0, VBA, ALBA, VBC, ALBC,"
+     *0.0, 2.0, VBA, ALBA, VBC, ALBC, VB, ALB, W2(K), W3(K))
       VD = RCD * ABS(W3(K))
       ALD = DUGL3(FICB(K) + PI, PID2, W3(K))
       CALL DSKOR2(VD, ALD, 0.0, 0.0, RDE, FIDE(K), 0.0, 2.0,
@@ -149,9 +162,11 @@ C КИНЕМАТИЧЕСКИЙ РАСЧЕТ МЕХАНИЗМА МАНИПУЛЯ�
      *W2(K), W3(K), 2.0, ABAT, BBAT, ABCT, BBCT, AB, BB,
      *E2(K), E3(K))
       AD = RCD * SQRT(W3(K) ** 4 + E3(K) ** 2)
-      BD = DUGL3(FICB(K) + PI, PI - ATAN(ABS(K))/W3(K) ** 2)
+C OCR: "ATAN(ABS(K))/W3(K) ** 2)" -> "ATAN(ABS(E3(K))/W3(K) ** 2),"
+      BD = DUGL3(FICB(K) + PI, PI - ATAN(ABS(E3(K))/W3(K) ** 2),
      *E3(K))
-      CALL DUSKR2(AD, BD, 0., 0., 0., RDE, FIDE(K), W2(K),
+C OCR: "DUSKR2(AD, BD, 0., 0., 0., RDE," -> "DUSKR2(AD, BD, 0., 0., 0., 0., RDE," (a zero lost)
+      CALL DUSKR2(AD, BD, 0., 0., 0., 0., RDE, FIDE(K), W2(K),
      *0.0, 2.0, AEDT, BEDT, AEG, BEG, E4(K), AE(K), BE(K))
 C
 C ОПРЕДЕЛЕНИЕ УСИЛИЙ В КИНЕМАТИЧЕСКИХ ПАРАХ
@@ -176,13 +191,16 @@ C МАНИПУЛЯТОРА
      *XE(K), YE, F5, G5, 0.0, 0.0, 2.0, F43(K), G43(K), F45(K),
      *G45(K), F50(K), G50(K), H50)
       CALL DSMVKT(F43(K), G43(K), G * M3, -PID2, F3, G3)
-      T3 = DMOONT(0.85 * RCD, FICB(K) + PI, F43(K), G43(K))
+C OCR: "DMOONT" -> "DMOMNT"
+      T3 = DMOMNT(0.85 * RCD, FICB(K) + PI, F43(K), G43(K))
       CALL DNMAF1(XA, YA, XB(K), YB(K), XC, YC, XA + 0.5 * R2 *
      *COS(FI2(K)), YA + 0.5 * R2 * SIN(FI2(K)), G * M2, -PID2,
      *XC + 0.15 * RCD * COS(FICB(K) + PI), YC + 0.15 * RCD * SIN(FICB
      *(K) + PI), F3, G3, 0.0, T3, 2.0, F21(K), G21(K), F23(K),
-     *G23(K), F30(K), G30(K)
-      M1(K) = DMOMNT(ROA, F11(K), F21(K), G21(K))
+C OCR: "*G23(K), F30(K), G30(K)" -> "*G23(K), F30(K), G30(K))" (the closing parenthesis lost)
+     *G23(K), F30(K), G30(K))
+C OCR: "F11(K)" -> "FI1(K)"
+      M1(K) = DMOMNT(ROA, FI1(K), F21(K), G21(K))
 C
 C ОПРЕДЕЛЕНИЕ ПРИВЕДЕННОГО МОМЕНТА ИНЕРЦИИ
       CALL DSMVKT(VD, ALD, ABS(W4(K)) * 0.3 * RDE, ALED, VS4, ALS4)
@@ -190,7 +208,8 @@ C ОПРЕДЕЛЕНИЕ ПРИВЕДЕННОГО МОМЕНТА ИНЕРЦИИ
       IPR(K) = (M5 * VE(K) ** 2 + M4 * VS4 ** 2 + IS4 * W4(K) ** 2 + M3 *
      *(W3(K) * 0.15 * RCD) ** 2 + (IS3 + M3 * (0.15 * RCD) ** 2) *
      *W3(K) ** 2 + M2 * VS2 ** 2 + IS2 * W2(K) ** 2)/W1 ** 2
-30    C CONTINUE
+C OCR: "30    C CONTINUE" -> "30    CONTINUE"
+30    CONTINUE
 C
 C ОПЕРАТОРЫ ВЫВОДА ИНФОРМАЦИИ НА ПЕЧАТАЮЩЕЕ
 C УСТРОЙСТВО
@@ -200,35 +219,41 @@ C УСТРОЙСТВО
      *'ЛИНЕЙНЫЕ И УГЛОВЫЕ ПЕРЕМЕЩЕНИЯ ЗВЕНЬЕВ'/
      *3X, 'F11', 5X, 'F12', 6X, 'FICB', 6X, 'XE', 6X, 'FIDE',
      *6X, 'XB', 7X, 'YB'/)
-      WRITE(3, 11)(F11(K), F12(K), FICB(K), XE(K),
+C OCR: "F11(K)" -> "FI1(K)", "F12(K)" -> "FI2(K)"
+      WRITE(3, 11)(FI1(K), FI2(K), FICB(K), XE(K),
      *FIDE(K), XB(K), YB(K), K = 1, 37)
       WRITE(3, 12)
 11    FORMAT(7F9.4)
 12    FORMAT(5X//'ЛИНЕЙНЫЕ И УГЛОВЫЕ СКОРОСТИ ЗВЕНЬЕВ'/
      *3X, 'F11', 6X, 'W2', 7X, 'W3', 7X, 'VE', 7X, 'ALE', 6X,
      *'W4'/)
-      WRITE(3, 13)(F11(K), W2(K), W3(K), VE(K), ALE(K),
+C OCR: "F11(K)" -> "FI1(K)"
+      WRITE(3, 13)(FI1(K), W2(K), W3(K), VE(K), ALE(K),
      *W4(K), K = 1, 37)
 13    FORMAT(6F9.4)
       WRITE(3, 14)
 14    FORMAT(5X//'ЛИНЕЙНЫЕ И УГЛОВЫЕ УСКОРЕНИЯ ЗВЕНЬЕВ'/
      *3X, 'F11', 6X, 'E2', 7X, 'E3', 7X, 'E4', 7X, 'AE', 7X, 'BE'/)
-      WRITE(3, 15)(F11(K), E2(K), E3(K), E4(K), AE(K),
+C OCR: "F11(K)" -> "FI1(K)"
+      WRITE(3, 15)(FI1(K), E2(K), E3(K), E4(K), AE(K),
      *BE(K), K = 1, 37)
       WRITE(3, 18)
-18    FORMAT('//ОПРЕДЕЛЕНИЕ УСИЛИЙ В КИНЕМАТИЧЕСКИХ'/
+C OCR: "FORMAT('//ОПРЕДЕЛЕНИЕ" -> "FORMAT(//'ОПРЕДЕЛЕНИЕ"
+18    FORMAT(//'ОПРЕДЕЛЕНИЕ УСИЛИЙ В КИНЕМАТИЧЕСКИХ'/
      *'ПАРАХ МЕХАНИЗМА МАНИПУЛЯТОРА'//10X,
      *'ВЕЛИЧИНЫ УСИЛИЙ И МОМЕНТ СОПРОТИВЛЕНИЯ'/
      *4X, 'F11', 5X, 'F43', 6X, 'F45', 6X, 'F50', 6X, 'F30', 6X,
      *'F23', 6X, 'F21', 6X, 'M1')
-      WRITE(3, 19)(F11(K), F43(K), F45(K), F50(K), F30(K),
+C OCR: "F11(K)" -> "FI1(K)"
+      WRITE(3, 19)(FI1(K), F43(K), F45(K), F50(K), F30(K),
      *F23(K), F21(K), M1(K), K = 1, 37)
 19    FORMAT(F8.3, 6F9.1, F8.1)
       WRITE(3, 20)
 20    FORMAT(/10X, 'НАПРАВЛЯЮЩИЕ УГЛЫ ВЕКТОРОВ СИЛ'/
      *4X, 'F11', 5X, 'G43', 6X, 'G45', 6X, 'G50', 6X, 'G30',
      *6X, 'G23', 6X, 'G21')
-      WRITE(3, 21)(F11(K), G43(K), G45(K), G50(K), G30(K),
+C OCR: "F11(K)" -> "FI1(K)"
+      WRITE(3, 21)(FI1(K), G43(K), G45(K), G50(K), G30(K),
      *G23(K), G21(K), K = 1, 37)
 21    FORMAT(F8.3, 6F9.3)
 C
@@ -241,14 +266,18 @@ C ОПРЕДЕЛЕНИЕ МОМЕНТА ИНЕРЦИИ МАХОВИКА
       CALL DZKNDV(37, 37.0, W1, IS1 + IMH, M1, IPR, AAA, AS, ASUM,
      *EV, DEC, WPRM, EPRM)
       WRITE(3, 22)
-22    FORMAT(//IX, 'РЕЗУЛЬТАТЫ РЕШЕНИЯ УРАВНЕНИЯ ДВИЖЕНИЯ /
+C OCR: "//IX," -> "//1X,"; "УРАВНЕНИЯ ДВИЖЕНИЯ /" -> "УРАВНЕНИЯ ДВИЖЕНИЯ'/"
+22    FORMAT(//1X, 'РЕЗУЛЬТАТЫ РЕШЕНИЯ УРАВНЕНИЯ ДВИЖЕНИЯ'/
      *8X, 'МЕХАНИЗМА МАНИПУЛЯТОРА'/
      *2X, 'F11', 4X, 'IPR', 5X, 'AS', 4X, 'ASUM', 4X, 'EV', 5X,
      *'DEC', 3X, 'WPR', 5X, 'EPR', 2X, 'WPRM', 4X, 'EPRM'/)
-      WRITE(3, 23)(F11(K), IPR(K), AS(K), ASUM(K), EV(K),
-     *DE3(K), WPR(K), EPR(K), WPRM(K), EPRM(K), K = 1, 37)
+C OCR: "F11(K)" -> "FI1(K)"
+      WRITE(3, 23)(FI1(K), IPR(K), AS(K), ASUM(K), EV(K),
+C OCR: "DE3(K)" -> "DEC(K)"
+     *DEC(K), WPR(K), EPR(K), WPRM(K), EPRM(K), K = 1, 37)
       WRITE(3, 24)IMH
-24    FORMAT(//IX, 'МОМЕНТ ИНЕРЦИИ МАХОВИКА — IMH = ', F7.2)
+C OCR: "//IX," -> "//1X,"
+24    FORMAT(//1X, 'МОМЕНТ ИНЕРЦИИ МАХОВИКА — IMH = ', F7.2)
 23    FORMAT(F6.3, 5F7.1, F7.2, F8.2, F6.2, F8.2)
       STOP
       END
