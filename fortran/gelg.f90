@@ -29,6 +29,7 @@ module gelg_mod
 contains
 
   subroutine gelg(r, a, m, n, eps, ier)
+    !sarkp ier-is-output
     integer, intent(in) :: m, n
     real(dp), intent(inout) :: r(m, n)
     real(dp), intent(inout) :: a(m, m)

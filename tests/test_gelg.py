@@ -39,9 +39,11 @@ def test_zero_matrix_gives_minus_one():
     assert GELG([1.0], [[0.0]], 1, 1, 1e-4).IER == -1
 
 
-@pytest.mark.parametrize("m", [0, -3])
-def test_m_below_one_gives_minus_one(m):
-    assert GELG([1.0], [[1.0]], m, 1, 1e-4).IER == -1
+@pytest.mark.parametrize("m", [0, -3, 2.5, float("nan"), float("inf")])
+def test_m_out_of_range_is_named(m):
+    """SSP returned IER = -1 for M < 1; here M is checked against the arrays first."""
+    with pytest.raises(ValueError, match="GELG: M = "):
+        GELG([1.0], [[1.0]], m, 1, 1e-4)
 
 
 @pytest.mark.parametrize("m, rank", [(2, 1), (3, 1), (3, 2), (5, 3), (8, 6)])
