@@ -100,7 +100,8 @@ def convert(lid, name, kind, ranges, note):
                 if zm:
                     out.append('C OCR: ' + ', '.join(f'"{w}" -> "{w.replace("θ", "0").replace("Ø", "0")}"' for w in zm))
                     txt = txt.replace('θ', '0').replace('Ø', '0')
-                parts = re.split(r' С (?=[А-ЯA-Z0-9])', txt) if len(txt) > 62 else [txt]
+                # (a merged comment mark; not the preposition of 'С КОТОРОЙ', 'С КАЧАЮЩИМСЯ')
+                parts = re.split(r' С (?=[А-ЯA-Z0-9])(?!КОТОРОЙ|КАЧАЮЩИМСЯ)', txt) if len(txt) > 62 else [txt]
                 for p in parts:
                     out.append(('C ' + p).rstrip())
                 continue

@@ -103,8 +103,8 @@ C OCR: "WRITE(3.51)" -> "WRITE(3,51)"
       GO TO 56
 C OCR: "WRITE(3.54)" -> "WRITE(3,54)"
 22    WRITE(3,54)
-54    FORMAT(1X, 'ЗАДАВАЕМЫЕ ПАРАМЕТРЫ ТРЕБУЮТ
-C OCR: "      'КОРРЕКТИРОВКИ')" -> "     *'КОРРЕКТИРОВКИ')" (continuation mark lost)
+C OCR: "ТРЕБУЮТ" -> "ТРЕБУЮТ '"; "'КОРРЕКТИРОВКИ')" -> "*'КОРРЕКТИРОВКИ')" (an apostrophe and the continuation mark lost)
+54    FORMAT(1X, 'ЗАДАВАЕМЫЕ ПАРАМЕТРЫ ТРЕБУЮТ '
      *'КОРРЕКТИРОВКИ')
 C OCR: "WRITE(3.55)" -> "WRITE(3,55)"
 56    WRITE(3,55)AO, X1Z, X2Z, X1P, X2P, Y, ALFAW, XS, X1, X2, SDVIG,
