@@ -152,7 +152,8 @@ def _modern(item: Listing) -> str:
     if item.kind == "program":
         raise ValueError(f"{item.name} is a program: sarkp runs it in Python "
                          f"(`sarkp book run {item.name}`), it has no Fortran 90 routine")
-    start = re.compile(rf"^\s*(real\(dp\)\s+)?(subroutine|function)\s+{item.name}\s*\(", re.I)
+    start = re.compile(rf"^\s*((pure|elemental|recursive|real\(dp\)|integer)\s+)*"
+                       rf"(subroutine|function)\s+{item.name}\s*\(", re.I)
     end = re.compile(rf"^\s*end\s+(subroutine|function)\s+{item.name}\b", re.I)
     for source in sorted(_data("fortran").iterdir(), key=lambda p: p.name):
         if not source.name.endswith(".f90") or source.name.startswith("sweeps"):
@@ -205,9 +206,14 @@ _DECLARATION = re.compile(r"^(\d+\s+)?(REAL|INTEGER|DIMENSION|COMMON|IMPLICIT|US
                           r"DOUBLE\s*PRECISION)\b|^REAL\s*\(DP\)", re.I)
 
 
+_DESIGN = re.compile(r"^(\w+\s*=\s*0\.0_dp|if\s*\(\s*failed\(ier\)\s*\)\s*return|"
+                     r"ier\s*=\s*st_ok)$", re.I)
+
+
 def _statements(statements: list[str]) -> list[str]:
-    """Executable statements only (declarations differ by design), one END."""
-    out = [s for s in statements if not _DECLARATION.match(s)]
+    """Executable statements only, one END.  Left out: declarations, and sarkp's status
+    handling (outputs zeroed, IER set and tested), which differ by design."""
+    out = [s for s in statements if not _DECLARATION.match(s) and not _DESIGN.match(s)]
     out = [("END" if re.match(r"END\s+(SUBROUTINE|FUNCTION)\b", s, re.I) else s) for s in out]
     if len(out) > 1 and out[-1].upper() == "END" and out[-2].upper() == "RETURN":
         del out[-2]
@@ -217,6 +223,7 @@ def _statements(statements: list[str]) -> list[str]:
 def _key(statement: str) -> str:
     """What a statement says, without style: case, blanks, kinds and literal forms."""
     s = statement.upper()
+    s = re.sub(r"^((PURE|ELEMENTAL|RECURSIVE|REAL\(DP\))\s+)+", "", s)
     s = re.sub(r"_DP\b", "", s)
     s = re.sub(r"(\d)D0\b", r"\1", s)
     s = re.sub(r"\s+", "", s)
@@ -230,15 +237,43 @@ def _normal(s: str) -> str:
 
 
 def _snippets(cell: str) -> list[str]:
-    return [_normal(s) for s in re.findall(r"`([^`]+)`", cell) if len(_normal(s)) >= 3]
+    # " / " in an ERRATA quote is a line break (" / *" before a continuation line)
+    quotes = (re.sub(r"\s/\s\*?", " ", q) for q in re.findall(r"`([^`]+)`", cell))
+    return [_normal(q) for q in quotes if len(_normal(q)) >= 3]
 
 
-def _annotate(book_side: list[str], modern_side: list[str], rows: list[ErrataRow]) -> list[str]:
+def _found(snippet: str, texts: tuple[str, ...]) -> bool:
+    """Whether a quote (its "..." elisions allowed) occurs in one of the texts."""
+    parts = [p for p in snippet.split("...") if p]
+    for text in texts:
+        at = 0
+        for part in parts:
+            at = text.find(part, at)
+            if at < 0:
+                break
+            at += len(part)
+        else:
+            if parts:
+                return True
+    return False
+
+
+def _as_read(text: str, pairs: list[tuple[str, str]]) -> str:
+    """The text with the listing's OCR corrections undone: the ERRATA quotes the OCR."""
+    for read, fixed in pairs:
+        if _normal(fixed).lstrip("*"):
+            text = text.replace(_normal(fixed).lstrip("*"), _normal(read).lstrip("*"))
+    return text
+
+
+def _annotate(book_side: list[str], modern_side: list[str], rows: list[ErrataRow],
+              ocr: list[tuple[str, str]] = ()) -> list[str]:
     old, new = _normal(" ".join(book_side)), _normal(" ".join(modern_side))
+    olds = (old, _as_read(old, list(ocr)))
     hits = []
     for r in rows:
         printed = _snippets(r.as_printed)
-        if any(p in old or old and old in p for p in printed) or (
+        if any(_found(p, olds) or old and old in p for p in printed) or (
                 not printed and any(c in new for c in _snippets(r.correction))):
             hits.append(r.id)
     return hits
@@ -246,6 +281,8 @@ def _annotate(book_side: list[str], modern_side: list[str], rows: list[ErrataRow
 
 def _diff(item: Listing, style: str) -> str:
     book_text, modern_text = item.text(), _modern(item)
+    ocr = [pair for line in book_text.splitlines() if line.startswith("C OCR:")
+           for pair in re.findall(r'"([^"]*)"\s*->\s*"([^"]*)"', line)]
     cited = errata_ids_of(modern_text)
     try:
         rows = errata_rows(item.name)
@@ -254,6 +291,10 @@ def _diff(item: Listing, style: str) -> str:
     rows += [r for r in _errata_rows() if r.id in cited and r not in rows]
     a = _statements(_book_statements(book_text))
     b = _statements(_modern_statements(modern_text))
+    head = re.compile(r"(\w+\s+)?(SUBROUTINE|FUNCTION)\s", re.I)
+    headers = None
+    if a and b and head.match(a[0]) and head.match(b[0]):
+        headers, a, b = (a[0], b[0]), a[1:], b[1:]
     matcher = difflib.SequenceMatcher(None, [_key(s) for s in a], [_key(s) for s in b],
                                       autojunk=False)
     out = [f"{item.name}: the book's listing {item.listing} ({item.lines}) against sarkp's "
@@ -262,20 +303,30 @@ def _diff(item: Listing, style: str) -> str:
            f"ERRATA ids the routine cites: {', '.join(cited) if cited else 'none'}", ""]
     used: set[str] = set()
     width = 64
+    if headers and _key(headers[0]) != _key(headers[1]):
+        ids = _annotate([headers[0]], [headers[1]], rows, ocr)
+        used.update(ids)
+        plain = re.sub(r",IER\)$", ")", _key(headers[1]))
+        note = ", ".join(ids) if ids else (
+            "the interface: IER appended (sarkp's design, not an erratum)"
+            if plain == _key(headers[0]) else "no ERRATA row matches")
+        out.append(f"@@ the header: {note}")
+        if style == "side":
+            out.append(f"! {headers[0][:width]:<{width}} | {headers[1][:width]}")
+        else:
+            out += [f"- {headers[0]}", f"+ {headers[1]}"]
     for tag, i1, i2, j1, j2 in matcher.get_opcodes():
         if tag == "equal":
             if style == "side":
                 for s, t in zip(a[i1:i2], b[j1:j2]):
                     out.append(f"  {s[:width]:<{width}} | {t[:width]}")
             continue
-        ids = _annotate(a[i1:i2], b[j1:j2], rows)
+        ids = _annotate(a[i1:i2], b[j1:j2], rows, ocr)
         used.update(ids)
         note = ", ".join(ids) if ids else "no ERRATA row matches (a rewrite of the same step)"
-        head = re.compile(r"(SUBROUTINE|FUNCTION)\s", re.I)
-        if not ids and i2 - i1 == 1 and head.match(a[i1]) and j2 > j1 and head.search(b[j1]):
-            note = ("the interface: IER appended and the outputs zeroed on failure "
-                    "(sarkp's design, not an erratum)")
-        out.append(f"@@ book statements {i1 + 1}-{i2}, sarkp statements {j1 + 1}-{j2}: {note}")
+        where = lambda n1, n2: f"{n1 + 2}-{n2 + 1}" if n2 > n1 else f"none (after {n1 + 1})"
+        out.append(f"@@ book statements {where(i1, i2)}, sarkp statements {where(j1, j2)}: "
+                   f"{note}")
         if style == "side":
             left, right = a[i1:i2], b[j1:j2]
             for k in range(max(len(left), len(right))):
@@ -291,8 +342,8 @@ def _diff(item: Listing, style: str) -> str:
         out += ["", "OCR misreadings, already corrected in the listing (its C OCR: lines): "
                 + ", ".join(ocr)]
     if other:
-        out += ["", "Cited but not located in one hunk (see `sarkp errata ID`): "
-                + ", ".join(other)]
+        out += ["", "Cited but not located in one hunk (declarations are not compared; "
+                "see `sarkp errata ID`): " + ", ".join(other)]
     return "\n".join(out) + "\n"
 
 
