@@ -272,11 +272,32 @@ def _annotate(book_side: list[str], modern_side: list[str], rows: list[ErrataRow
     olds = (old, _as_read(old, list(ocr)))
     hits = []
     for r in rows:
+        if r.kind.strip() == "OCR":
+            continue                      # corrected in the listing itself, not a deviation
         printed = _snippets(r.as_printed)
         if any(_found(p, olds) or old and old in p for p in printed) or (
                 not printed and any(c in new for c in _snippets(r.correction))):
             hits.append(r.id)
     return hits
+
+
+def _loose(statement: str) -> str:
+    """A looser key, to set equivalent statements side by side: Y(1) is y1."""
+    return re.sub(r"\b([A-Z]+)\((\d)\)", r"\1\2", _key(statement))
+
+
+def _pair(left: list[str], right: list[str]) -> list[tuple[str, str, str]]:
+    """The statements of a differing hunk in rows, equivalent ones in the same row
+    (marked "~"; "!" where they differ)."""
+    rows: list[tuple[str, str, str]] = []
+    m = difflib.SequenceMatcher(None, [_loose(s) for s in left], [_loose(t) for t in right],
+                                autojunk=False)
+    for tag, i1, i2, j1, j2 in m.get_opcodes():
+        l, r = left[i1:i2], right[j1:j2]
+        for k in range(max(len(l), len(r))):
+            rows.append(("~" if tag == "equal" else "!", l[k] if k < len(l) else "",
+                         r[k] if k < len(r) else ""))
+    return rows
 
 
 def _diff(item: Listing, style: str) -> str:
@@ -328,11 +349,8 @@ def _diff(item: Listing, style: str) -> str:
         out.append(f"@@ book statements {where(i1, i2)}, sarkp statements {where(j1, j2)}: "
                    f"{note}")
         if style == "side":
-            left, right = a[i1:i2], b[j1:j2]
-            for k in range(max(len(left), len(right))):
-                s = left[k] if k < len(left) else ""
-                t = right[k] if k < len(right) else ""
-                out.append(f"! {s[:width]:<{width}} | {t[:width]}")
+            for mark, s, t in _pair(a[i1:i2], b[j1:j2]):
+                out.append(f"{mark} {s[:width]:<{width}} | {t[:width]}")
         else:
             out += [f"- {s}" for s in a[i1:i2]] + [f"+ {t}" for t in b[j1:j2]]
     kinds = {r.id: r.kind for r in rows}
