@@ -15,6 +15,15 @@ F['II.13_program.f'] = [
      *VD, ALD)'''),
 ]
 F['II.9_DMOMNT.f'] = []
+# Two defects ERRATA calls "OCR/author" are read as OCR here: the book's own printed results
+# come from code that called these routines, so the code the author ran had a label 110
+# (a label 111 does not exist) and took the step H (its body uses H; every call passes it).
+F['II.6_DUGL4.f'] = [
+    ('sub', 'IF(VEL)109,110,111', 'IF(VEL)109,110,110', 'no label 111 exists; ERRATA E-DUGL4-1'),
+]
+F['II.1_DINTGR.f'] = [
+    ('sub', 'DINTGR(M, N, NOMER, Y, FINT)', 'DINTGR(M, H, NOMER, Y, FINT)', 'the body and every call use the step H; ERRATA E-DINTGR-1'),
+]
 F['III.1_DSNTZR.f'] = [
     ('all', r'\bF11\(', 'FI1('), ('all', r'\bF13\(', 'FI3('),
     ('sub', 'DSNTZR(LO, L3, F11, F13,', 'DSNTZR(LO, L3, FI1, FI3,'),

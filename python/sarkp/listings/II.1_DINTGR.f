@@ -1,6 +1,7 @@
 C LISTING II.1 DINTGR: BELOKONEV 1990, BOOK LINES L433-480
 C AS PRINTED. OCR MISREADINGS CORRECTED, EACH MARKED "C OCR:".
-      SUBROUTINE DINTGR(M, N, NOMER, Y, FINT)
+C OCR: "DINTGR(M, N, NOMER, Y, FINT)" -> "DINTGR(M, H, NOMER, Y, FINT)" (the body and every call use the step H; ERRATA E-DINTGR-1)
+      SUBROUTINE DINTGR(M, H, NOMER, Y, FINT)
 C ПРОГРАММА ЧИСЛЕННОГО ИНТЕГРИРОВАНИЯ ФУНКЦИИ, ЗАДАННОЙ МАССИВОМ ЧИСЕЛ.
 C В ЗАВИСИМОСТИ ОТ ЗНАЧЕНИЯ ПЕРЕМЕННОЙ NOMER ПРОГРАММА
 C ИСПОЛЬЗУЕТ:

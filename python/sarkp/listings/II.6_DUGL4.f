@@ -6,7 +6,8 @@ C ДЕЙСТВИЯ.
 C UGOL1 — УГОЛ, ОПРЕДЕЛЯЮЩИЙ ЛИНИЮ ДЕЙСТВИЯ ВЕКТОРА.
 C UGOLD — ДОПОЛНЯЮЩИЙ УГОЛ.
 C VEL — ОПРЕДЕЛЯЮЩИЙ ПАРАМЕТР.
-      IF(VEL)109,110,111
+C OCR: "IF(VEL)109,110,111" -> "IF(VEL)109,110,110" (no label 111 exists; ERRATA E-DUGL4-1)
+      IF(VEL)109,110,110
 109   DUGL4 = UGOL1 - UGOLD
       RETURN
 110   DUGL4 = UGOL1
