@@ -87,9 +87,24 @@ class ErrataRow:
 
 
 def _cells(line: str) -> list[str]:
-    # a table row; "\|" inside a cell is a literal bar
-    cells = re.split(r"(?<!\\)\|", line.strip())[1:-1]
-    return [c.strip().replace("\\|", "|") for c in cells]
+    """A table row's cells; a bar written "\\|" or inside a `code span` is part of a cell."""
+    cells, cell, code, i = [], "", False, 0
+    text = line.strip()
+    while i < len(text):
+        ch = text[i]
+        if ch == "\\" and text[i + 1:i + 2] == "|":
+            cell, i = cell + "|", i + 2
+            continue
+        if ch == "`":
+            code = not code
+        if ch == "|" and not code:
+            cells.append(cell.strip())
+            cell = ""
+        else:
+            cell += ch
+        i += 1
+    cells.append(cell.strip())
+    return cells[1:-1]
 
 
 @lru_cache(maxsize=None)
