@@ -369,11 +369,19 @@ def _diff(item: Listing, style: str) -> str:
         else:
             out += [f"- {s}" for s in a[i1:i2]] + [f"+ {t}" for t in b[j1:j2]]
     kinds = {r.id: r.kind for r in rows}
-    ocr = [i for i in cited if i not in used and kinds.get(i, "").strip() == "OCR"]
-    other = [i for i in cited if i not in used and i not in ocr]
-    if ocr:
+    reads = [_normal(r) for r, _ in ocr]
+    by_id = {r.id: r for r in rows}
+
+    def in_marks(i):                  # an "OCR/author" row the listing corrects as OCR
+        r = by_id.get(i)
+        return r is not None and any(any(p in m or m in p for m in reads if m)
+                                     for p in _snippets(r.as_printed))
+    ocr_ids = [i for i in cited if i not in used and (kinds.get(i, "").strip() == "OCR"
+                                                      or in_marks(i))]
+    other = [i for i in cited if i not in used and i not in ocr_ids]
+    if ocr_ids:
         out += ["", "OCR misreadings, already corrected in the listing (its C OCR: lines): "
-                + ", ".join(ocr)]
+                + ", ".join(ocr_ids)]
     if other:
         out += ["", "Cited but not located in one hunk (declarations are not compared; "
                 "see `sarkp errata ID`): " + ", ".join(other)]
