@@ -173,3 +173,18 @@ def test_tables_and_the_books_signature():
         XA=0.0, YA=0.0, XC=1.0, YC=0.0, RZ2=0.7, RZ3=0.6, P=1.0, AAA=1.0)
     with pytest.raises(TypeError):
         P.DPRM1(0.0, 0.0, 1.0)
+
+
+def test_printed_programs_say_why_they_cannot_run():
+    programs = [i.name for i in L.listings() if i.kind == "program"]
+    assert len(programs) == 7
+    for name in programs:
+        with pytest.raises(P.PrintedCodeError, match=f"program {name}"):
+            P.program(name)
+        assert name in P.excluded()
+    # the reasons that cite ERRATA rows cite real ones
+    for reason in P.excluded().values():
+        for i in L.errata_ids_of(reason):
+            assert sarkp.errata(i).startswith(i)
+    with pytest.raises(ValueError):
+        P.program("DPRM1")

@@ -24,7 +24,7 @@ import numpy as np
 
 from . import _printed, listings
 
-__all__ = ["PrintedCodeError", "names", "excluded"]
+__all__ = ["PrintedCodeError", "names", "excluded", "program"]
 
 _printed.prinit(os.devnull)
 
@@ -52,6 +52,17 @@ def excluded() -> dict[str, str]:
                                   if not hasattr(sarkp, item.name) else
                                   "not built into sarkp._printed")
     return reasons
+
+
+def program(name: str):
+    """The book's main program NAME (``"II.13"``) as printed.  None of the seven can run as
+    printed: this raises :class:`PrintedCodeError` with the reason (sarkp runs the programs
+    in Python: ``sarkp book run``)."""
+    item = listings._find(name)
+    if item.kind != "program":
+        raise ValueError(f"{name} is a routine, not a program: sarkp.printed.{item.name}")
+    raise PrintedCodeError(f"program {item.name}: the printed code cannot run as printed: "
+                           f"{_excluded()[item.name]}")
 
 
 def names() -> list[str]:
