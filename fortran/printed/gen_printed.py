@@ -3,12 +3,13 @@
     python gen_printed.py OUT.f OUT.pyf LISTINGS_DIR CHAPTER.f90 [CHAPTER.f90 ...]
 
 Writes OUT.f, the book's listings as printed (python/sarkp/listings/, OCR misreadings
-corrected) of every routine that sarkp also has and that can run as printed, and OUT.pyf,
+corrected) of the routines that listings/printed.csv says run as printed, and OUT.pyf,
 their f2py signatures for the extension ``sarkp._printed``.
 
-* A routine runs as printed unless listings/printed_exclusions.csv says why not; its
-  printed argument list must be sarkp's (the chapter module's, without the trailing IER),
-  or the build stops.
+* printed.csv lists every routine: ``runs = yes``, or ``no`` with the reason.  A routine is
+  added only after it was checked against sarkp (tests/test_printed.py); a new chapter's
+  routines stay out until then.  A listed routine's printed argument list must be sarkp's
+  (the chapter module's, without the trailing IER), or the build stops.
 * Types are the listing's: REAL (single precision) by FORTRAN's implicit rule unless the
   listing declares otherwise; INTEGER for I-N.  Which arguments are inputs and which are
   outputs comes from sarkp's routine (its ``intent``), since the book's FORTRAN does not say.
@@ -92,14 +93,17 @@ def prepare(text: str) -> str:
 def main(out_f: str, out_pyf: str, listings: str, *chapters: str) -> None:
     listings_dir = Path(listings)
     index = list(csv.DictReader((listings_dir / "index.csv").open(encoding="utf-8")))
-    excluded = {r["name"] for r in csv.DictReader(
-        (listings_dir / "printed_exclusions.csv").open(encoding="utf-8"))}
+    runs = {r["name"] for r in csv.DictReader(
+        (listings_dir / "printed.csv").open(encoding="utf-8")) if r["runs"] == "yes"}
     modern = modern_interfaces(chapters)
     code, sigs = [], []
     for row in index:
         name = row["name"]
-        if row["kind"] == "program" or name not in modern or name in excluded:
+        if row["kind"] == "program" or name not in runs:
             continue
+        if name not in modern:
+            sys.exit(f"gen_printed: {name} runs as printed (printed.csv) but sarkp has no "
+                     f"routine {name} to take its signature from")
         text = (listings_dir / row["file"]).read_text(encoding="utf-8")
         stmts = statements(text)
         head = HEAD.match(stmts[0][0])
@@ -110,7 +114,7 @@ def main(out_f: str, out_pyf: str, listings: str, *chapters: str) -> None:
         want = [a for a in info["args"] if a != "IER"]
         if args != want:
             sys.exit(f"gen_printed: the printed {name}({', '.join(args)}) is not sarkp's "
-                     f"({', '.join(want)}): list it in printed_exclusions.csv with the reason")
+                     f"({', '.join(want)}): set runs = no in printed.csv, with the reason")
         types = printed_types(stmts)
         code.append(prepare(text))
         kind = "function" if head.group(2).upper() == "FUNCTION" else "subroutine"

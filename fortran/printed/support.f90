@@ -2,8 +2,9 @@
 ! The listings are compiled as printed, in their own types (REAL is single precision);
 ! these few routines stand in for the ES EVM's library and the main programs.
 
-! COMMON /PRMTR/ is set by the book's main programs (PI = 3.14159, L2489); the printer
-! units 3 (WRITE(3, ...)) and 6 (PRINT) go to DEVNULL: sarkp renders the book's layouts.
+! COMMON /PRMTR/ is set by the book's main programs (PI = 3.14159, L2489).  The printer's
+! unit 3 (WRITE(3, ...)) goes to DEVNULL and PRINT's unit 6 to a scratch file (one file
+! cannot be open on two units): sarkp renders the book's layouts itself.
 subroutine prinit(devnull)
   implicit none
   character(len=*), intent(in) :: devnull
@@ -12,7 +13,8 @@ subroutine prinit(devnull)
   pi = 3.14159
   pid2 = pi/2.0
   open(3, file=devnull)
-  open(6, file=devnull)
+  close(6)
+  open(6, status='scratch')
 end subroutine prinit
 
 ! ES FORTRAN's names of ACOS and ASIN.

@@ -4,13 +4,15 @@ The extension ``sarkp._printed`` is built from the listings in ``sarkp/listings/
 misreadings corrected, nothing else) as legacy fixed-form FORTRAN in the book's own types:
 REAL is single precision, as on the ES EVM, and the printed code calls sarkp's GELG in that
 precision.  ``COMMON /PRMTR/`` holds the book's PI = 3.14159, as its main programs set it.
-What the printed code writes to the printer (``WRITE(3, ...)``, ``PRINT``) is discarded.
+What the printed code writes to the printer (``WRITE(3, ...)``, ``PRINT``) is discarded:
+importing this module connects the Fortran units 3 and 6 of the process to ``os.devnull``
+and a scratch file.
 
 Each routine takes sarkp's Python signature (``sarkp.printed.DPRM1(XA, YA, XC, YC, RZ2,
 RZ3, P, AAA=1.0)``) and returns the same named tuple (a FUNCTION, a float), computed by the
 printed code: scalars only, no checks, no errors; whatever the printed code does with bad
 input, it does here.  A routine whose printed code cannot run as printed raises
-:class:`PrintedCodeError` saying why (``listings/printed_exclusions.csv``).
+:class:`PrintedCodeError` saying why (``listings/printed.csv``).
 """
 
 from __future__ import annotations
@@ -34,24 +36,15 @@ class PrintedCodeError(ValueError):
 
 
 def _excluded() -> dict[str, str]:
-    text = resources.files("sarkp").joinpath("listings", "printed_exclusions.csv").read_text(
+    text = resources.files("sarkp").joinpath("listings", "printed.csv").read_text(
         encoding="utf-8")
-    return {r["name"]: r["reason"] for r in csv.DictReader(io.StringIO(text))}
+    return {r["name"]: r["reason"] for r in csv.DictReader(io.StringIO(text))
+            if r["runs"] != "yes"}
 
 
 def excluded() -> dict[str, str]:
-    """Every book routine whose printed code does not run here, with the reason."""
-    import sarkp
-    reasons = _excluded()
-    for item in listings.listings():
-        if item.kind == "program":
-            continue
-        if item.name not in reasons and not hasattr(_printed, item.name.lower()):
-            reasons[item.name] = ("sarkp has no routine for it in this build, so there is "
-                                  "no signature to run the printed code with"
-                                  if not hasattr(sarkp, item.name) else
-                                  "not built into sarkp._printed")
-    return reasons
+    """Every routine and program whose printed code does not run here, with the reason."""
+    return _excluded()
 
 
 def program(name: str):
