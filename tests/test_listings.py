@@ -135,9 +135,10 @@ def _cited_ids():
             elif p.name.endswith(".py"):
                 for i in L.errata_ids_of(p.read_text(encoding="utf-8")):
                     found.setdefault(i, p.name)
-    for f in package_file("fortran").iterdir():
-        for i in L.errata_ids_of(f.read_text(encoding="utf-8")):
-            found.setdefault(i, f"fortran/{f.name}")
+    for folder in ("fortran", "listings"):        # Fortran headers; the listings' marks
+        for f in package_file(folder).iterdir():
+            for i in L.errata_ids_of(f.read_text(encoding="utf-8")):
+                found.setdefault(i, f"{folder}/{f.name}")
     return found
 
 
