@@ -151,7 +151,7 @@ def errata_rows(key: str) -> list[ErrataRow]:
     found = [r for r in _errata_rows() if _mentions(r, name)]
     if not found:
         if any(i.name.upper() == name for i in listings()):
-            raise ValueError(f"{name} has no ERRATA row: sarkp corrects nothing in it")
+            raise ValueError(f"docs/ERRATA.md has no row for {name}")
         raise ValueError(f"no ERRATA row or routine named {key!r}")
     return found
 
