@@ -18,12 +18,16 @@ PROGRAMS = {
     "II.13": "prog_ii_13",
     "III.5": "prog_iii_5",
     "IV.15": "prog_iv_15",
+    "V.5": "prog_v_5",
+    "V.5-FLAT": "prog_v_5_flat",
 }
 
 #: figure number -> listing of the program that prints it
 FIGURES = {
     "4": "II.13",
     "10": "III.5",
+    "35": "V.5",
+    "36": "V.5-FLAT",
 }
 
 

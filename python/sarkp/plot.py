@@ -1,0 +1,145 @@
+"""Pictures of mechanisms and their diagrams (matplotlib, an optional extra).
+
+matplotlib is imported inside the functions only, so ``import sarkp`` never needs it.
+Every function draws on a new ``matplotlib.figure.Figure`` (no pyplot state, no display
+needed) and returns it; ``save(figure, path)`` writes a PNG.
+
+Cams (chapter 5):
+
+* :func:`cam_profile`: the profile, its base circle and the follower in one position;
+* :func:`cam_diagrams`: the pressure angle and the radius of curvature against the cam
+  angle.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+
+def _figure(*, rows=1, size=(6.0, 6.0)):
+    try:
+        from matplotlib.figure import Figure
+    except ImportError as exc:            # pragma: no cover - depends on the installation
+        raise ImportError("sarkp.plot needs matplotlib: pip install matplotlib") from exc
+    figure = Figure(figsize=size, layout="constrained")
+    axes = figure.subplots(rows, 1, squeeze=False)[:, 0]
+    return figure, axes
+
+
+def save(figure, path) -> None:
+    """Write ``figure`` as a PNG file."""
+    figure.savefig(path, dpi=120)
+
+
+def _rotate(x, y, angle):
+    c, s = math.cos(angle), math.sin(angle)
+    return c * x - s * y, s * x + c * y
+
+
+def cam_profile(XA, YA, FI, *, position=None, follower="knife", offset=0.0,
+                base_radius=None, title=""):
+    """The cam profile (points XA, YA in the cam's frame, m, at the cam angles FI, rad)
+    turned to the cam angle ``FI[position]``, with its base circle, the cam centre, and
+    the follower touching it there.
+
+    ``follower``: ``"knife"`` (a translating knife-edge on the line x = ``offset``, as
+    DPRFLP), ``"flat"`` (a flat face perpendicular to the y axis, as DPRFPL).
+    ``position``: the index of the position drawn (default: the highest lift).
+    ``base_radius``: the radius of the base circle (default: the smallest radius of the
+    profile).
+    """
+    XA, YA, FI = (np.asarray(a, dtype=float) for a in (XA, YA, FI))
+    radius = np.hypot(XA, YA)
+    k = int(np.argmax(radius)) if position is None else int(position)
+    x, y = _rotate(XA, YA, FI[k])                      # the fixed frame: the cam turned
+    r0 = float(np.min(radius)) if base_radius is None else float(base_radius)
+    size = float(np.max(radius))
+    figure, (ax,) = _figure()
+    ax.plot(x, y, "-", color="C0", lw=1.6, label="cam profile")
+    ax.plot(x, y, ".", color="C0", ms=3)
+    step = abs(FI[-1] - FI[-2]) if FI.size > 1 else 0.0
+    gap = 2 * math.pi - abs(FI[-1] - FI[0])
+    if gap > 1.5 * step:
+        # the table stops before the turn is complete (V.5: 250 of 360 degrees): the rest
+        # is a dwell at the last radius, an arc back to the first point
+        a0, a1 = math.atan2(y[-1], x[-1]), math.atan2(y[0], x[0])
+        turn = -1.0 if FI[-1] > FI[0] else 1.0          # the points turn against the cam
+        sweep = (a1 - a0) % (2 * math.pi) if turn > 0 else -((a0 - a1) % (2 * math.pi))
+        arc = a0 + np.linspace(0.0, sweep, 100)
+        r = np.linspace(radius[-1], radius[0], 100)
+        ax.plot(r * np.cos(arc), r * np.sin(arc), ":", color="C0", lw=1.6,
+                label="dwell outside the table")
+    t = np.linspace(0.0, 2 * math.pi, 361)
+    ax.plot(r0 * np.cos(t), r0 * np.sin(t), "--", color="0.5", lw=0.9,
+            label=f"base circle, r = {r0:.5f} m")
+    ax.plot([0.0], [0.0], "+", color="k", ms=10)
+    tip_x, tip_y = float(x[k]), float(y[k])
+    if follower == "knife":
+        ax.plot([offset, offset], [tip_y, tip_y + 0.6 * size], "-", color="C3", lw=3,
+                solid_capstyle="butt", label="follower (knife edge)")
+        ax.plot([tip_x], [tip_y], "v", color="C3", ms=8)
+        ax.axvline(offset, color="C3", lw=0.6, ls=":")
+    elif follower == "flat":
+        half = 0.45 * size
+        ax.plot([tip_x - half, tip_x + half], [tip_y, tip_y], "-", color="C3", lw=3,
+                solid_capstyle="butt", label="follower (flat face)")
+        ax.plot([0.0, 0.0], [tip_y, tip_y + 0.5 * size], "-", color="C3", lw=2)
+        ax.plot([tip_x], [tip_y], "o", color="C3", ms=4)
+    else:
+        raise ValueError(f"follower must be 'knife' or 'flat', not {follower!r}")
+    ax.set_aspect("equal")
+    ax.set_xlabel("x, m")
+    ax.set_ylabel("y, m")
+    ax.set_title(title or f"cam turned by {FI[k]:.4f} rad")
+    ax.grid(True, lw=0.3)
+    ax.legend(loc="lower left", fontsize=8)
+    return figure
+
+
+def _clip(values, spread=3.0):
+    """y limits that keep the bulk of ``values`` visible (a radius of curvature runs off
+    to infinity where the curvature changes sign): the data's range, cut at ``spread``
+    times the 10-90 percentile range beyond those percentiles."""
+    v = np.asarray(values, dtype=float)
+    lo, hi = np.percentile(v, [10, 90])
+    pad = spread * max(hi - lo, 1e-12)
+    low, high = max(v.min(), lo - pad), min(v.max(), hi + pad)
+    margin = 0.08 * max(high - low, 1e-12)
+    return low - margin, high + margin
+
+
+def cam_diagrams(FI, ROK, ALFA=None, *, ALD=None, title=""):
+    """The pressure angle ALFA (rad; omitted for a flat-faced follower, where it is 0)
+    and the radius of curvature ROK (m) against the cam angle FI (rad).  ``ALD``, the
+    allowed pressure angle, is drawn as two limits."""
+    FI, ROK = np.asarray(FI, dtype=float), np.asarray(ROK, dtype=float)
+    rows = 1 if ALFA is None else 2
+    figure, axes = _figure(rows=rows, size=(7.0, 2.8 * rows + 0.6))
+    if ALFA is not None:
+        ax = axes[0]
+        ax.plot(FI, ALFA, ".-", color="C0", lw=1.2, ms=4, label="pressure angle")
+        if ALD is not None:
+            for limit in (ALD, -ALD):
+                ax.axhline(limit, color="C3", ls="--", lw=0.9)
+            ax.plot([], [], "--", color="C3", label=f"allowed, ±{ALD:.3f} rad")
+        ax.set_ylabel("pressure angle α, rad")
+        ax.legend(fontsize=8)
+        ax.grid(True, lw=0.3)
+    ax = axes[-1]
+    ax.plot(FI, ROK, ".-", color="C2", lw=1.2, ms=4, label="radius of curvature")
+    ax.axhline(0.0, color="k", lw=0.6)
+    low, high = _clip(ROK)
+    off = (ROK < low) | (ROK > high)
+    if off.any():
+        ax.plot(FI[off], np.clip(ROK[off], low, high), "^", color="C3", ms=6,
+                label="off scale: " + ", ".join(f"{r:.4g}" for r in ROK[off]) + " m")
+    ax.set_ylim(low, high)
+    ax.set_ylabel("radius of curvature ρ, m")
+    ax.set_xlabel("cam angle φ1, rad")
+    ax.legend(fontsize=8)
+    ax.grid(True, lw=0.3)
+    if title:
+        figure.suptitle(title)
+    return figure
