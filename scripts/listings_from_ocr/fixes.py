@@ -142,9 +142,12 @@ F['V.2_DPRFLP.f'] = [
 F['V.4_DPRFLK.f'] = [
     ('sub', 'DPRFLK(N, W1, ETAO, F1, RO,', 'DPRFLK(N, W1, ETAO, FI, RO,'),
     ('sub', 'RSI(N) —', 'PSI(N) —'),
+    ('sub', '*DPSIFI) * COS(PSI(K) + COS(PSI(K) + ETAO)) ** (3.0/2.0))', '*DPSIFI) * COS(PSI(K) + ETAO)) ** (3.0/2.0)', 'ERRATA E-DPRFLK-2'),
 ]
 F['V.5_program.f'] = [
     ('raw', '      EXCTST, ETAO', 'C OCR: "      EXCTST, ETAO" -> "     *EXCTST, ETAO" (continuation mark lost)\n     *EXCTST, ETAO'),
+    ('sub', 'RKRVZN(51)', 'RKRZVN(51)', 'ERRATA E-V5-3'),
+    ('sub', 'DATA PI, N/31.4159,51/', 'DATA PI, N/3.14159,51/', 'ERRATA E-V5-1'),
     ('sub', '*ТОЛКАТЕЛЯ).', '*ТОЛКАТЕЛЯ)'),
     ('sub', 'FORMAT(1H, 4F12.5)', 'FORMAT(1H , 4F12.5)', 'the blank of 1H lost'),
     ('raw', """11    FORMAT(1X, 'ОСНОВНЫЕ РАЗМЕРЫ КУЛАЧКА: РАДИУС

@@ -36,7 +36,8 @@ C RKRZVN — РАДИУСЫ КРИВИЗНЫ В ЭТИХ ТОЧКАХ.
       ALFA(K) = ATAN(R * (1.0 + DPSIFI)/L/SIN(PSI(K) + ETAO) -
      *1.0/TAN(PSI(K) + ETAO))
       C1 = (L ** 2 + R ** 2 * (1.0 + DPSIFI) ** 2 - 2.0 * L * R * (1 +
-     *DPSIFI) * COS(PSI(K) + COS(PSI(K) + ETAO)) ** (3.0/2.0))
+C OCR: "*DPSIFI) * COS(PSI(K) + COS(PSI(K) + ETAO)) ** (3.0/2.0))" -> "*DPSIFI) * COS(PSI(K) + ETAO)) ** (3.0/2.0)" (ERRATA E-DPRFLK-2)
+     *DPSIFI) * COS(PSI(K) + ETAO)) ** (3.0/2.0)
       C2 = L ** 2 + R ** 2 * (1.0 + DPSIFI) ** 3 - L * R * (COS(PSI(K) +
      *ETAO) * (1.0 + DPSIFI) * (2.0 + DPSIFI) + D2PSIF * SIN(PSI(K) +
      *ETAO))

@@ -6,8 +6,10 @@ C ПОСТУПАТЕЛЬНО ДВИЖУЩИМСЯ ЗАОСТРЕННЫМ ТОЛ�
 C OCR: "      EXCTST, ETAO" -> "     *EXCTST, ETAO" (continuation mark lost)
      *EXCTST, ETAO
       DIMENSION FI(51), D2SDT(51), DSDT(51), S(51), XPRFL(51),
-     *YPRFL(51), RPRFL(51), DELTA(51), ALFA(51), RKRVZN(51)
-      DATA PI, N/31.4159,51/
+C OCR: "RKRVZN(51)" -> "RKRZVN(51)" (ERRATA E-V5-3)
+     *YPRFL(51), RPRFL(51), DELTA(51), ALFA(51), RKRZVN(51)
+C OCR: "DATA PI, N/31.4159,51/" -> "DATA PI, N/3.14159,51/" (ERRATA E-V5-1)
+      DATA PI, N/3.14159,51/
       W = 5.0
       A1 = 15.0
       ALFAD = 0.523
