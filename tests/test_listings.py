@@ -190,11 +190,11 @@ def test_what_the_ocr_read_is_in_the_book_at_the_listings_lines():
             assert norm(read) in raw, f"{row['file']}: {read!r} is not in the book"
 
 
-def _authors_errors():
-    """ERRATA rows of kind 'author' whose printed text is code of one listing."""
+def _authors_errors(kind="author"):
+    """ERRATA rows of the kind whose printed text is code of one listing."""
     names = {r["name"]: r for r in index()}
     for r in L._errata_rows():
-        if r.kind.strip() != "author":
+        if r.kind.strip() != kind:
             continue
         routine = r.routine.split(",")[0].split()[0]
         if routine not in names or re.search(r"\b(missing|no|never|not|lacks?)\b", r.as_printed):
@@ -227,6 +227,20 @@ def test_the_authors_errors_stay_as_printed():
         if "..." in want:
             continue
         assert want in code or want in as_read, f"{rid}: {snippet!r} no longer in {row['file']}"
+        checked += 1
+    assert checked >= 10
+
+
+def test_ocr_rows_are_corrected_in_the_listings():
+    checked = 0
+    for rid, row, snippet in _authors_errors(kind="OCR"):
+        text = package_file("listings", row["file"]).read_text(encoding="utf-8")
+        squeeze = lambda s: re.sub(r"\s+", "", s)
+        code = squeeze("".join(l[6:] if l[5:6] == "*" else l for l in code_lines(text)))
+        want = squeeze(re.sub(r"\s/\s\*?", "", snippet.replace("\\*", "*")))
+        if "..." in want:
+            continue
+        assert want not in code, f"{rid}: the OCR's {snippet!r} is still in {row['file']}"
         checked += 1
     assert checked >= 10
 
