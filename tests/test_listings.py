@@ -204,7 +204,9 @@ def _authors_errors(kind="author"):
         cited = [int(x) for x in re.findall(r"L(\d+)", r.line)]
         if not any(a <= n <= b for n in cited for a, b in spans):
             continue                 # the row quotes the text or a table, not the listing
-        for snippet in re.findall(r"`([^`]+)`", r.as_printed):
+        # "`line` / `*continuation`": consecutive lines of one statement, quoted separately
+        printed = re.sub(r"`\s*/\s*`\*?", "", r.as_printed)
+        for snippet in re.findall(r"`([^`]+)`", printed):
             statement = re.match(r"(CALL|IF|DO|SUBROUTINE|FUNCTION|REAL|DIMENSION|WRITE|"
                                  r"PRINT|DATA|[A-Z][A-Z0-9]*(\(.*\))?\s*=)", snippet)
             printed_values = re.search(r"=\s*-?[\d.]+\s+[A-Z]", snippet)
