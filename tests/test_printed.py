@@ -21,7 +21,8 @@ SAMPLES = 25
 TOL = 4e-6
 
 #: Printed routines that differ from sarkp's as-printed mode, with the ERRATA rows that say
-#: why (as-printed mode does not keep their corrections) and the outputs they change.
+#: why (as-printed mode does not keep the printed text: "no", or "same in both" for a row
+#: the listing keeps as printed) and the outputs they change.
 DIFFERS = {
     "DSKOR4": ({"E-DSKOR4-3"}, {"VBBM", "ALBBM", "VBBN", "ALBBN", "VB", "ALB"}),
     "DUSKR4": ({"E-DUSKR4-1", "E-DUSKR4-2"}, {"ABBMR", "BBBMR", "ABBNR", "BBBNR", "AB", "BB"}),
@@ -30,6 +31,8 @@ DIFFERS = {
     "DKNMA2": ({"E-DKNMA1-2", "E-DKNMA2-3", "E-DKNMA2-4"}, set(sarkp.DKNMA2.spec.outputs)),
     "DKNMA3": ({"E-DKNMA1-2", "E-DKNMA3-3"}, set(sarkp.DKNMA3.spec.outputs)),
     "DKNMA4": ({"E-DKNMA4-2"}, {"BB"}),
+    "DNMAF4": ({"E-DNMAF4-2"}, {"F23", "G23", "F34", "G34", "H34"}),
+    "DNMA4": ({"E-DNMA4-1"}, {"HC"}),
     "DKNMA5": ({"E-DKNMA5-2", "E-DKNMA5-4"}, set(sarkp.DKNMA5.spec.outputs)),
 }
 #: Routines whose printed formulation is worse conditioned than sarkp's (the tolerance
@@ -54,6 +57,12 @@ def sample(spec, rng):
             v = float(rng.uniform(0.05, 0.5))
         elif a == "KW3":
             v = float(rng.uniform(1.05, 2.0))
+        elif a == "ZM":                      # DZKNDV: the count M again, as a REAL
+            v = float(values["M"])
+        elif a in ("W1", "ISC"):             # a mean speed, a constant inertia
+            v = float(rng.uniform(0.5, 3.0))
+        elif a == "ISPR":                    # inertias
+            v = rng.uniform(0.1, 1.0, 7)
         elif a in spec.tables:
             v = rng.uniform(-2, 2, 7)
         else:
@@ -79,16 +88,22 @@ def conditioning(f, spec, x, y):
     """sum_i |d y / d x_i| |x_i| from sarkp's own finite differences (double precision)."""
     s = [np.zeros_like(o) for o in y]
     for a in spec.inputs:
-        v = x[a]
-        if a in ("AAA", "P", "Q", "ANALOG", "NOMER", "M"):
+        if a in ("AAA", "P", "Q", "ANALOG", "NOMER", "M", "ZM"):
             continue
-        h = 1e-6 * max(1.0, float(np.max(np.abs(v))))
-        try:
-            y2 = as_printed(f, {**x, a: v + h})
-        except Exception:
-            continue                       # a step that leaves the domain: no estimate
-        for k in range(len(y)):
-            s[k] += np.abs((y2[k] - y[k]) / h) * float(np.max(np.abs(v)))
+        v = x[a]
+        for j in range(np.size(v)):        # each element of a table on its own
+            h = 1e-6 * max(1.0, abs(float(np.ravel(v)[j])))
+            if np.ndim(v):
+                v2 = np.array(v, dtype=float)
+                v2[j] += h
+            else:
+                v2 = v + h
+            try:
+                y2 = as_printed(f, {**x, a: v2})
+            except Exception:
+                continue                   # a step that leaves the domain: no estimate
+            for k in range(len(y)):
+                s[k] += np.abs((y2[k] - y[k]) / h) * abs(float(np.ravel(v)[j]))
     return s
 
 
@@ -117,7 +132,8 @@ def test_printed_code_agrees_with_as_printed_mode(name):
     for x, y, yp, cond in comparisons(name, seed=sum(map(ord, name))):
         for k, out in enumerate(spec.outputs):
             err = np.abs(yp[k] - y[k])
-            ok = np.all(err <= tol * (cond[k] + np.abs(y[k])) + 1e-12)
+            # a table's elements come from running sums: its largest value scales them all
+            ok = np.all(err <= tol * (cond[k] + np.max(np.abs(y[k]))) + 1e-12)
             if out in changed:
                 differed.update([out] if not ok else [])
                 continue
@@ -127,7 +143,8 @@ def test_printed_code_agrees_with_as_printed_mode(name):
     assert not changed or differed, (name, "listed as different but agrees")
     for i in ids:
         row = L.errata_rows(i)[0]
-        assert row.as_printed_keeps.lower().startswith("no"), (i, row.as_printed_keeps)
+        assert row.as_printed_keeps.lower().startswith(("no", "same in both")), (
+            i, row.as_printed_keeps)
 
 
 def test_every_listed_difference_and_looser_tolerance_names_a_row():
