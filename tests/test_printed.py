@@ -206,3 +206,12 @@ def test_printed_programs_say_why_they_cannot_run():
             assert sarkp.errata(i).startswith(i)
     with pytest.raises(ValueError):
         P.program("DPRM1")
+
+
+def test_cli_book_run_printed_says_why():
+    import subprocess
+    import sys
+    r = subprocess.run([sys.executable, "-m", "sarkp", "book", "run", "II.13", "--printed"],
+                       capture_output=True, text=True)
+    assert r.returncode == 2 and r.stdout == ""
+    assert "E-II13-1" in r.stderr and len(r.stderr.strip().splitlines()) == 1

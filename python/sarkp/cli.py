@@ -81,6 +81,8 @@ def _main(argv=None) -> int:
     book_sub.add_parser("list", help="list the reproduced programs and figures")
     run = book_sub.add_parser("run", help="run a book program and print its output")
     run.add_argument("program", help="listing number, e.g. II.13")
+    run.add_argument("--printed", action="store_true",
+                     help="the book's main program compiled as printed (sarkp.printed)")
     run.add_argument("--plots", metavar="DIR",
                      help="also write the program's pictures as PNG files in DIR "
                           "(needs matplotlib)")
@@ -118,7 +120,12 @@ def _main(argv=None) -> int:
             figs = ", ".join(f"Fig. {f}" for f in prog.FIGURES) or "no printed output"
             print(f"{listing:8s} {prog.TITLE} ({figs})")
         return 0
-    if args.action == "run":
+    if args.action == "run" and args.printed:
+        from . import printed
+        try:
+            printed.program(args.program)
+        except ValueError as exc:             # PrintedCodeError, or an unknown name
+            raise UsageError(str(exc)) from None
         if args.program.upper().replace("П", "II") not in book.PROGRAMS:
             raise UsageError(f"no book program {args.program!r}; known: "
                              f"{', '.join(book.PROGRAMS)}")
