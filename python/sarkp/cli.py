@@ -6,6 +6,7 @@
     sarkp book diff FIG|all [--mode M]    compare a reproduction with the printed figure
     sarkp listing [NAME] [--modern|--diff [side]]   the book's code; sarkp's routine; both
     sarkp errata ID|NAME                  a row of docs/ERRATA.md, or every row of a routine
+    sarkp book run PROGRAM --printed      the program compiled as printed (says why not)
 
 Book programs run as printed by default (``--mode as-printed``: the book's PI = 3.14159
 and the author errors its printed figures depend on); ``--mode corrected`` runs them with
