@@ -158,6 +158,8 @@ F['V.5_program.f'] = [
     ('sub', 'ALFA(K), ZN(K), K', 'ALFA(K), RKRZVN(K), K', 'the name cut'),
 ]
 F['VI.1_DZBPL.f'] = [
+    ('sub', 'ОПРЕДЕЛЕНИЕМ ЧИСЕЛ', 'ОПРЕДЕЛЕНИЕ ЧИСЕЛ'),
+    ('sub', 'ЗАЩЕПЛЕНИЯ ПО', 'ЗАЦЕПЛЕНИЯ ПО'),
     ('all', r'\bZKRH\b', 'ZKRN'),
     ('sub', 'Z2, Z3, Z3, KS', 'Z2, Z3, Z4, KS'),
     ('raw', """11    FORMAT(1X, 'ЧИСЛА ЗУБЬЕВ ПЛАНЕТАРНОГО РЕДУКТОРА/'
@@ -176,10 +178,14 @@ F['VI.3_DKRKT.f'] = [
     ('sub', "*XS = ', F6.3)/ X1 = ', F6.3, ' X2 = 1, F6.3, ' SDVIG = ', 12,", "*' XS = ', F6.3/' X1 = ', F6.3, ' X2 = ', F6.3, ' SDVIG = ', I2,"),
 ]
 F['VI.5_DGMTZK.f'] = [
+    ('sub', 'WRITE(2,5)', 'WRITE(3,5)', 'ERRATA E-DGMTZK-3'),
     ('raw', '      КОЛЕСА)', 'C OCR: "      КОЛЕСА)" -> "     *КОЛЕСА)" (continuation mark lost)\n     *КОЛЕСА)'),
 ]
 F['VI.6_DGMZPC.f'] = [
-    ('sub', 'DUGINY(', 'DUGINV('),
+    ('sub', 'DUGINY(INVALW, PI/18.0, 0.0, 0.0, 0.0)', 'DUGINV(INVALW, PI/18.0, 0.00001)', 'ERRATA E-DGMZPC-1'),
+    ('sub', "' — AW', F10.4", "' — AW = ', F10.4", 'ERRATA E-DGMZPC-4'),
+    ('sub', "— XY', F7.4", "— XY = ', F7.4"),
+    ('sub', "— XUR', F7.4", "— XUR = ', F7.4"),
     ('sub', '      I FORMAT(', '1     FORMAT('),
 ]
 F['VI.7_DGMZVN.f'] = [
