@@ -178,12 +178,12 @@ F['VI.3_DKRKT.f'] = [
     ('sub', "*XS = ', F6.3)/ X1 = ', F6.3, ' X2 = 1, F6.3, ' SDVIG = ', 12,", "*' XS = ', F6.3/' X1 = ', F6.3, ' X2 = ', F6.3, ' SDVIG = ', I2,"),
 ]
 F['VI.5_DGMTZK.f'] = [
-    ('sub', 'WRITE(2,5)', 'WRITE(3,5)', 'ERRATA E-DGMTZK-3'),
+    ('sub', 'WRITE(2,5)', 'WRITE(3,5)'),
     ('raw', '      КОЛЕСА)', 'C OCR: "      КОЛЕСА)" -> "     *КОЛЕСА)" (continuation mark lost)\n     *КОЛЕСА)'),
 ]
 F['VI.6_DGMZPC.f'] = [
-    ('sub', 'DUGINY(INVALW, PI/18.0, 0.0, 0.0, 0.0)', 'DUGINV(INVALW, PI/18.0, 0.00001)', 'ERRATA E-DGMZPC-1'),
-    ('sub', "' — AW', F10.4", "' — AW = ', F10.4", 'ERRATA E-DGMZPC-4'),
+    ('sub', 'DUGINY(INVALW, PI/18.0, 0.0, 0.0, 0.0)', 'DUGINV(INVALW, PI/18.0, 0.00001)'),
+    ('sub', "' — AW', F10.4", "' — AW = ', F10.4"),
     ('sub', "— XY', F7.4", "— XY = ', F7.4"),
     ('sub', "— XUR', F7.4", "— XUR = ', F7.4"),
     ('sub', '      I FORMAT(', '1     FORMAT('),

@@ -17,7 +17,7 @@ C РЕЗУЛЬТАТЫ ПЕЧАТАЮТСЯ ПРИ AAA = 0.0
       A = (Z1 + Z2) * M / (2.0 * COS(BETA))
       XS = X1 + X2
       INVALW = (2.0 * XS * TAN(ALFA)) / (Z1 + Z2) + TAN(ALFAT) - ALFAT
-C OCR: "DUGINY(INVALW, PI/18.0, 0.0, 0.0, 0.0)" -> "DUGINV(INVALW, PI/18.0, 0.00001)" (ERRATA E-DGMZPC-1)
+C OCR: "DUGINY(INVALW, PI/18.0, 0.0, 0.0, 0.0)" -> "DUGINV(INVALW, PI/18.0, 0.00001)"
       ALFAW = DUGINV(INVALW, PI/18.0, 0.00001)
       AW = (Z1 + Z2) * M * COS(ALFAT) / 2.0 * COS(BETA) * COS(ALFAW)
       XY = (AW - A) / M
@@ -38,7 +38,7 @@ C OCR: "      I FORMAT(" -> "1     FORMAT("
      *'ДЕЛИТЕЛЬНОЕ МЕЖОСЕВОЕ РАССТОЯНИЕ — A = ', F10.4/
      *'КОЭФФИЦИЕНТ СУММАРНОГО СМЕЩЕНИЯ — XS = ', F7.4/
      *'УГОЛ ЗАЦЕПЛЕНИЯ', 18X, ' — ALFAW = ', F7.4/
-C OCR: "' — AW', F10.4" -> "' — AW = ', F10.4" (ERRATA E-DGMZPC-4)
+C OCR: "' — AW', F10.4" -> "' — AW = ', F10.4"
      *'МЕЖОСЕВОЕ РАССТОЯНИЕ', 15X, ' — AW = ', F10.4/
 C OCR: "— XY', F7.4" -> "— XY = ', F7.4"
      *'КОЭФФИЦИЕНТ ВОСПРИНИМАЕМОГО СМЕЩЕНИЯ — XY = ', F7.4/
