@@ -127,6 +127,7 @@ def _main(argv=None) -> int:
             printed.program(args.program)
         except ValueError as exc:             # PrintedCodeError, or an unknown name
             raise UsageError(str(exc)) from None
+    if args.action == "run":
         if args.program.upper().replace("П", "II") not in book.PROGRAMS:
             raise UsageError(f"no book program {args.program!r}; known: "
                              f"{', '.join(book.PROGRAMS)}")
