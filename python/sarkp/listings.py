@@ -171,7 +171,7 @@ def _modern(item: Listing) -> str:
                        rf"(subroutine|function)\s+{item.name}\s*\(", re.I)
     end = re.compile(rf"^\s*end\s+(subroutine|function)\s+{item.name}\b", re.I)
     for source in sorted(_data("fortran").iterdir(), key=lambda p: p.name):
-        if not source.name.endswith(".f90") or source.name.startswith("sweeps"):
+        if not source.name.endswith(".f90"):
             continue
         lines = source.read_text(encoding="utf-8").splitlines()
         for i, line in enumerate(lines):
@@ -252,7 +252,9 @@ def _normal(s: str) -> str:
 
 
 def _snippets(cell: str) -> list[str]:
-    # " / " in an ERRATA quote is a line break (" / *" before a continuation line)
+    # " / " in an ERRATA quote is a line break (" / *" before a continuation line), also
+    # between two quotes: "`line` / `*continuation`" is one statement
+    cell = re.sub(r"`\s*/\s*`\*?", " ", cell)
     quotes = (re.sub(r"\s/\s\*?", " ", q) for q in re.findall(r"`([^`]+)`", cell))
     return [_normal(q) for q in quotes if len(_normal(q)) >= 3]
 
