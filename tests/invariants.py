@@ -426,8 +426,8 @@ def fd_vs(f, h, got, scale, bound, coords=0.0):
     """Compare got with the central difference of f (None where f fails), within 1e-4 of
     scale (or 100 times what the routine vouched for): a check that catches a wrong
     formula, branch or sign, not the last digits (the references of benchmarks/fuzz.py
-    judge those).  The difference quotient is used only where it is good to a quarter of
-    that: its three steps agree, and the rounding of absolute coordinates of size
+    judge those).  The difference quotient is used only where it is good to a sixteenth
+    of that: its three steps agree, and the rounding of absolute coordinates of size
     `coords` (the inputs of the routine at t = +-h), divided by h, is small enough."""
     def g(t):
         r = f(t)
@@ -440,7 +440,7 @@ def fd_vs(f, h, got, scale, bound, coords=0.0):
         return 0.0
     allowed = max(1e-4, 100 * bound) * scale
     noise = err + 16 * U * coords / h
-    if not noise <= allowed / 4:
+    if not noise <= allowed / 16:
         return 0.0
     return rel(d - np.asarray(got), 1.0) / allowed
 
@@ -567,7 +567,7 @@ def chk_dknma1(args, out, bound):
         v.append(fd_vs(lambda s: (lambda o: None if o is None else
                                   list(polar(o.VB, o.ALB)))(
             quiet("DKNMA1", *_dknma1_at(args, s))), h, polar(out.AB, out.BB), Aa, bound,
-            np.abs(np.r_[A, C]).max() * V / min(rz2, rz3)))
+            np.abs(np.r_[A, C]).max() * W))
     return worst(*v)
 
 
