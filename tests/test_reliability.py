@@ -585,3 +585,75 @@ def test_dsntzr_reports_the_transmission_angle_of_a_four_bar_and_of_a_crank_slid
 def test_dsntzk_transmission_angle_is_a_right_angle():
     r = sarkp.DSNTZK(1.5, 0.3, 0.05, 1.0)
     assert r.GMIN_TURN == r.GMAX_TURN == pytest.approx(math.pi / 2, abs=1e-15)
+
+
+# the velocity and acceleration routines fed with angles approaching their dead centres
+
+def _signed_of(mod, ang, ref):
+    return mod if math.cos(ang - ref) > 0 else -mod
+
+
+SEQ_CASES = {
+    # name: (args(delta), exact unknowns (mpmath), computed unknowns, data scale)
+    "DSKOR2": (lambda d: [1.0, 0.4, 0.7, 2.1, 0.8, 0.3 - math.pi / 2 + d, 0.3],
+               lambda a: solve(kx(e(mpf(a[5]))), -e(mpf(a[6])),
+                               vec(a[2], a[3]) - vec(a[0], a[1])),        # (w2 rz2, s)
+               lambda o, a: [o.W2 * a[4], _signed_of(o.VBBM, o.ALBBM, a[6])],
+               lambda a: a[0] + a[2]),
+    "DSKOR3": (lambda d: [0.1, 0.2, 1.3, 0.7, 1.0, 0.4, 0.6, 2.1,
+                          math.atan2(0.2 - 0.7, 0.1 - 1.3) + math.pi / 2 - d],
+               lambda a: solve(e(mpf(a[8])), -kx(e(mpmath.atan2(mpf(a[1]) - mpf(a[3]),
+                                                                 mpf(a[0]) - mpf(a[2])))),
+                               vec(a[6], a[7]) - vec(a[4], a[5])),    # (v_A3A, w3 |CA|)
+               lambda o, a: [_signed_of(o.VA3A, o.ALA3A, a[8]),
+                             o.W3 * math.hypot(a[0] - a[2], a[1] - a[3])],
+               lambda a: a[4] + a[6]),
+    "DSKOR4": (lambda d: [0.9, 0.3, 0.5, 1.2, 2.0, 0.5 + d, 1.5, -0.7],
+               lambda a: solve(e(mpf(a[2])), -e(mpf(a[5])),
+                               mpf(a[7]) * kx(vec(a[3], a[4])) - mpf(a[6]) * kx(vec(a[0], a[1]))),
+               lambda o, a: [_signed_of(o.VBBM, o.ALBBM, a[2]), _signed_of(o.VBBN, o.ALBBN, a[5])],
+               lambda a: abs(a[6]) * a[0] + abs(a[7]) * a[3]),
+    "DUSKR1": (lambda d: [1.0, 0.4, 0.7, 2.1, 1.0, 0.3, 1.5, 0.3 + math.pi - d, 0.8, -0.5],
+               lambda a: (lambda r2, r3: solve(kx(r2) / mpf(a[4]), -kx(r3) / mpf(a[6]),
+                                               vec(a[2], a[3]) - vec(a[0], a[1]) -
+                                               mpf(a[9])**2 * r3 + mpf(a[8])**2 * r2))(
+                   vec(a[4], a[5]), vec(a[6], a[7])),
+               lambda o, a: [o.E2 * a[4], o.E3 * a[6]],
+               lambda a: a[0] + a[2] + a[8]**2 * a[4] + a[9]**2 * a[6]),
+    "DUSKR4": (lambda d: [0.9, 0.3, 0.5, 1.2, 2.0, 0.5 + d, 1.5, 0.4, -0.7, 0.2, 0.3, 1.0,
+                          0.2, -1.0],
+               lambda a: (lambda rm, rn: solve(
+                   e(mpf(a[2])), -e(mpf(a[5])),
+                   mpf(a[9]) * kx(rn) - mpf(a[8])**2 * rn + vec(a[12], a[13]) -
+                   mpf(a[7]) * kx(rm) + mpf(a[6])**2 * rm - vec(a[10], a[11])))(
+                   vec(a[0], a[1]), vec(a[3], a[4])),
+               lambda o, a: [_signed_of(o.ABBMR, o.BBBMR, a[2]),
+                             _signed_of(o.ABBNR, o.BBBNR, a[5])],
+               lambda a: (abs(a[7]) + a[6]**2) * a[0] + (abs(a[9]) + a[8]**2) * a[3] + a[10]
+               + a[12]),
+    "DSKOR5": (lambda d: [1.3, 0.7, 0.1, 0.2, 0.3, d, 0.9, 1.0, 2.0],
+               lambda a: solve(e(mpf(a[4]) + mpf(a[5])), -e(mpf(a[4])),
+                               mpf(a[6]) * kx(mpmath.matrix([mpf(a[0]) - mpf(a[2]),
+                                                             mpf(a[1]) - mpf(a[3])]))
+                               - vec(a[7], a[8])),
+               lambda o, a: [_signed_of(o.VC2C3, o.ALC2C3, a[4] + a[5]),
+                             _signed_of(o.VC2CM, o.ALC2CM, a[4])],
+               lambda a: 0.0),
+}
+
+
+@pytest.mark.parametrize("name", list(SEQ_CASES))
+def test_velocity_and_acceleration_routines_near_their_dead_centres(name):
+    make, exact, got, scale = SEQ_CASES[name]
+
+    def errors(out, a):
+        f = getattr(sarkp, name).spec.outputs
+        o = dict(zip(f, out))
+
+        class O:
+            pass
+        ob = O()
+        ob.__dict__.update(o)
+        x = exact(a)
+        return [rel_err(got(ob, a), [x[0], x[1]], scale(a) / math.sqrt(2))]
+    check_sequence(name, lambda d: make(d) + [1.0], errors)        # AAA = 1
