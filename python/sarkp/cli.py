@@ -1,8 +1,9 @@
 """The ``sarkp`` command line (also ``python -m sarkp``).
 
     sarkp book list                       the reproduced programs and figures
-    sarkp book run PROGRAM [--mode M] [--plots DIR]
+    sarkp book run PROGRAM [--mode M] [--plots DIR] [--stage S]
                                           a program's printout, in the book's layout
+                                          (--stage: one stage of program X alone)
     sarkp book diff FIG|all [--mode M]    compare a reproduction with the printed figure
 
 Book programs run as printed by default (``--mode as-printed``: the book's PI = 3.14159
@@ -19,6 +20,7 @@ import sys
 from importlib import resources
 
 from . import book, modes
+from .errors import SarkpError
 from .book import figures
 
 
@@ -31,7 +33,7 @@ def _diff(number: str, mode: str) -> tuple[str, int, int]:
     program = _figure_program(number)
     figure = figures.load_figure(number)
     with modes.mode(mode):
-        computed = program.cells()
+        computed = book.figure_cells(number)
     return figures.report(figure, figures.compare(figure, computed), mode,
                           getattr(program, "CORRECTED_DIFFERENCES", None))
 
@@ -79,6 +81,9 @@ def _main(argv=None) -> int:
     book_sub.add_parser("list", help="list the reproduced programs and figures")
     run = book_sub.add_parser("run", help="run a book program and print its output")
     run.add_argument("program", help="listing number, e.g. II.13")
+    run.add_argument("--stage", metavar="STAGE",
+                     help="program X only: run one stage alone (synthesis, teeth, gears, "
+                          "cam, kinematics, forces, dynamics)")
     run.add_argument("--plots", metavar="DIR",
                      help="also write the program's pictures as PNG files in DIR "
                           "(needs matplotlib)")
@@ -101,13 +106,24 @@ def _main(argv=None) -> int:
             raise UsageError(f"no book program {args.program!r}; known: "
                              f"{', '.join(book.PROGRAMS)}")
         prog = book.program(args.program)
+        stages = getattr(prog, "STAGES", ())
+        if args.stage is not None and args.stage not in stages:
+            raise UsageError(f"--stage {args.stage!r}: " + (
+                f"program {args.program} has the stages {', '.join(stages)}" if stages
+                else f"program {args.program} has no stages"))
         with modes.mode(args.mode):
-            print(prog.render())
+            try:
+                text = prog.render(args.stage) if stages else prog.render()
+            except SarkpError as exc:       # a stage that cannot run: nothing printed
+                print(f"sarkp: error: {exc}", file=sys.stderr)
+                return 1
+            print(text)
             if args.plots:
                 if not hasattr(prog, "plots"):
                     print(f"sarkp: program {args.program} has no pictures", file=sys.stderr)
                     return 2
-                for path in prog.plots(args.plots):
+                for path in (prog.plots(args.plots, args.stage) if stages
+                             else prog.plots(args.plots)):
                     print(f"wrote {path}", file=sys.stderr)
         return 0
     numbers = list(book.FIGURES) if args.figure == "all" else [args.figure]
