@@ -4,6 +4,12 @@ matplotlib is imported inside the functions only, so ``import sarkp`` never need
 Every function draws on a new ``matplotlib.figure.Figure`` (no pyplot state, no display
 needed) and returns it; ``save(figure, path)`` writes a PNG.
 
+Linkages (chapter 4, program X):
+
+* :func:`mechanism`: a planar linkage drawn in several positions, with the paths of
+  chosen points;
+* :func:`diagrams`: quantities against the crank angle, one panel per unit.
+
 Cams (chapter 5):
 
 * :func:`cam_profile`: the profile, its base circle and the follower in one position;
@@ -31,6 +37,75 @@ def _figure(*, rows=1, size=(6.0, 6.0)):
 def save(figure, path) -> None:
     """Write ``figure`` as a PNG file."""
     figure.savefig(path, dpi=120)
+
+
+def mechanism(points, links, *, fixed=(), guide=None, highlight=0, every=1, paths=(),
+              title=""):
+    """A planar linkage in several positions.
+
+    ``points``: {name: (x, y)} with x, y arrays over the positions (m), or floats for a
+    fixed point; ``links``: tuples of point names, each drawn as a polyline (a lever
+    B-C-D as one tuple); ``fixed``: names drawn as frame pivots; ``guide``: the height
+    (m) of a horizontal slider guide; ``highlight``: the position drawn in colour, with
+    the point names; ``every``: draw every n-th other position in grey; ``paths``: names
+    whose paths are drawn."""
+    xy = {n: (np.atleast_1d(np.asarray(x, float)), np.atleast_1d(np.asarray(y, float)))
+          for n, (x, y) in points.items()}
+    count = max(v[0].size for v in xy.values())
+
+    def at(name, k):
+        x, y = xy[name]
+        return (x[k] if x.size > 1 else x[0]), (y[k] if y.size > 1 else y[0])
+    figure, (ax,) = _figure(size=(7.5, 6.0))
+    for k in range(0, count, max(1, every)):
+        if k == highlight:
+            continue
+        for link in links:
+            c = [at(n, k) for n in link]
+            ax.plot([p[0] for p in c], [p[1] for p in c], "-", color="0.75", lw=0.8)
+    for i, name in enumerate(paths):
+        x, y = xy[name]
+        ax.plot(x, y, "-", color=f"C{i + 2}", lw=3.0, alpha=0.45, label=f"path of {name}")
+    for i, link in enumerate(links):
+        c = [at(n, highlight) for n in link]
+        ax.plot([p[0] for p in c], [p[1] for p in c], "o-", color="C0", lw=2.2, ms=4,
+                label="position 1" if i == 0 else None)
+    for name in fixed:
+        x, y = at(name, 0)
+        ax.plot([x], [y], "^", color="k", ms=9)
+    for name in xy:
+        x, y = at(name, highlight)
+        ax.annotate(name, (x, y), xytext=(7, -12), textcoords="offset points",
+                    fontsize=10, color="C0", fontweight="bold", zorder=5,
+                    bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.8))
+    if guide is not None:
+        ax.axhline(guide, color="C3", lw=0.7, ls="--", label="guide of the slider")
+    ax.set_aspect("equal")
+    ax.set_xlabel("x, m")
+    ax.set_ylabel("y, m")
+    ax.grid(True, lw=0.3)
+    ax.legend(loc="best", fontsize=8)
+    ax.set_title(title or "mechanism in its positions")
+    return figure
+
+
+def diagrams(x, panels, *, xlabel="crank angle φ1, rad", title=""):
+    """Curves against ``x``, one panel per entry of ``panels``: (ylabel with its unit,
+    {curve label: values})."""
+    x = np.asarray(x, dtype=float)
+    figure, axes = _figure(rows=len(panels), size=(7.5, 2.5 * len(panels) + 0.6))
+    for ax, (ylabel, curves) in zip(axes, panels):
+        for i, (label, values) in enumerate(curves.items()):
+            ax.plot(x, np.asarray(values, dtype=float), ".-", color=f"C{i}", lw=1.2,
+                    ms=3, label=label)
+        ax.axhline(0.0, color="k", lw=0.5)
+        ax.set_ylabel(ylabel)
+        ax.grid(True, lw=0.3)
+        ax.legend(fontsize=8, loc="best")
+    axes[-1].set_xlabel(xlabel)
+    if title:
+        figure.suptitle(title)
+    return figure
 
 
 def _rotate(x, y, angle):
@@ -90,6 +165,7 @@ def cam_profile(XA, YA, FI, *, position=None, follower="knife", offset=0.0,
     else:
         raise ValueError(f"follower must be 'knife' or 'flat', not {follower!r}")
     ax.set_aspect("equal")
+    ax.locator_params(axis="x", nbins=6)
     ax.set_xlabel("x, m")
     ax.set_ylabel("y, m")
     ax.set_title(title or f"cam turned by {FI[k]:.4f} rad")

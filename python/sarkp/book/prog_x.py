@@ -795,3 +795,86 @@ def corrected_report(done: dict, stages) -> str:
         row("largest IPR", f"{d['IPR'].max():.2f}", f"{db['IPR'].max():.2f}", "kg m2",
             "E-X-IPR-1")
     return "\n".join(lines)
+
+
+# ---- pictures --------------------------------------------------------------------------------
+
+def plots(directory, stage: str | None = None) -> list:
+    """Write the drawing-sheet pictures of the stages run (``stage``, or every stage this
+    build can run) as PNG files in ``directory``; return their paths.  Needs matplotlib.
+
+    kinematics: the mechanism in its positions, the velocity and the acceleration
+    diagrams; cam: the profile with the flat follower, the radius of curvature; forces:
+    the hodographs of the joint reactions; dynamics: the energy and the crank's angular
+    speed without and with the flywheel."""
+    from pathlib import Path
+
+    from .. import plot
+
+    stages = [stage] if stage else [s for s in STAGES if available(s)]
+    done = run(stages)
+    directory = Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    mode = get_mode()
+    written = []
+
+    def save(figure, name):
+        path = directory / name
+        plot.save(figure, path)
+        written.append(path)
+    if "kinematics" in stages:
+        k, s = done["kinematics"], done["synthesis"]
+        pts = {"O": (0.0, 0.0), "A": (k["XA"], k["YA"]), "B": (k["XB"], k["YB"]),
+               "C": (k["XC"], k["YC"]), "D": (k["XD"], k["YD"]), "E": (k["XE"], k["YE"])}
+        save(plot.mechanism(pts, [("O", "A"), ("A", "B"), ("B", "C", "D"), ("D", "E")],
+                            fixed=("O", "C"), guide=float(k["YE"][0]), every=3,
+                            paths=("A", "E"),
+                            title=f"Program X ({mode}): the mechanism every 30° of the "
+                                  f"crank\nROA {s['ROA']:.3f} m, RAB {s['RAB']:.3f} m, "
+                                  f"ROC {s['ROC']:.3f} m"),
+             "x_mechanism.png")
+        vex = k["VE"] * np.cos(k["ALE"])
+        save(plot.diagrams(k["FI1"], [
+            ("angular velocity, rad/s", {"ω2": k["W2"], "ω3": k["W3"], "ω4": k["W4"]}),
+            ("velocity of E, m/s", {"v_E (along x)": vex})],
+            title=f"Program X: velocities, ω1 = {W1:g} rad/s ({mode})"), "x_velocities.png")
+        aex = k["AE"] * np.cos(k["BE"])
+        save(plot.diagrams(k["FI1"], [
+            ("angular acceleration, rad/s²", {"ε2": k["E2"], "ε3": k["E3"], "ε4": k["E4"]}),
+            ("acceleration of E, m/s²", {"a_E (along x)": aex})],
+            title=f"Program X: accelerations ({mode}"
+                  + ("; E3 with E-DUSKR1-1, E4 and a_E with E-X-W4)" if mode == "as-printed"
+                     else ")")), "x_accelerations.png")
+    if "cam" in stages:
+        c = done["cam"]
+        save(plot.cam_profile(c["X"], c["Y"], c["FIK"], follower="flat",
+                              base_radius=c["RKSH"],
+                              title=f"Program X ({mode}): flat-faced follower,"
+                                    f" r0 = {c['RKSH']:.4f} m\nradius of curvature < 0 at "
+                                    f"{int(np.sum(c['ROK'] < 0))} of {CAM_POINTS} points: "
+                                    f"not convex (E-DPRFPL-1)"), "x_cam_profile.png")
+        save(plot.cam_diagrams(c["FIK"], c["ROK"],
+                               title=f"Program X: radius of curvature of the cam ({mode})"),
+             "x_cam_curvature.png")
+    if "forces" in stages and hasattr(plot, "reaction_hodograph"):
+        f = done["forces"]
+        for name, label in (("21", "A (F21)"), ("23", "B (F23)"), ("30", "C (F30)"),
+                            ("43", "D (F43)")):
+            save(plot.reaction_hodograph(f["F" + name], f["G" + name],
+                                         label=f"reaction at {label}",
+                                         title=f"Program X: hodograph of the reaction at "
+                                               f"{label}, N ({mode})"),
+                 f"x_hodograph_{name}.png")
+    if "dynamics" in stages:
+        d = done["dynamics"]
+        save(plot.diagrams(d["FI1"], [
+            ("work and energy, J", {"ΣA (ASUM)": d["ASUM"], "E of the links (EV)": d["EV"],
+                                    "ΔE (DEC)": d["DEC"]}),
+            ("reduced moment of inertia, kg·m²", {"J_pr (IPR)": d["IPR"]})],
+            title=f"Program X: energy ({mode})"), "x_energy.png")
+        if hasattr(plot, "speed_diagram"):
+            save(plot.speed_diagram(d["FI1"], d["WPR"], d["WPRM"], W1=W1,
+                                    title=f"Program X: angular speed of the crank, "
+                                          f"IMH = {d['IMH']:.1f} kg·m² ({mode})"),
+                 "x_omega.png")
+    return written
