@@ -309,3 +309,17 @@ def test_plots_are_written(tmp_path):
     with sarkp.mode("corrected"):
         assert [p.name for p in prog_x.plots(tmp_path / "c", "cam")] == [
             "x_cam_profile.png", "x_cam_curvature.png"]
+
+
+def test_readme_summary_is_the_diff_summary():
+    """README.md's summary table is what ``sarkp book diff all`` prints now."""
+    import pathlib
+    import re
+    readme = (pathlib.Path(__file__).resolve().parents[1] / "README.md").read_text("utf-8")
+    shown = re.search(r"<!-- summary:.*?-->\n(.*?)\n<!-- end of summary -->", readme,
+                      re.S).group(1)
+    rows = []
+    for number in book.FIGURES:
+        figure, comparisons = diff(number)
+        rows.append(figures.summary(figure, comparisons))
+    assert shown == figures.summary_table(rows)

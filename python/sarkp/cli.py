@@ -5,6 +5,8 @@
                                           a program's printout, in the book's layout
                                           (--stage: one stage of program X alone)
     sarkp book diff FIG|all [--mode M]    compare a reproduction with the printed figure
+                                          (all: ends with a summary table; status 0 when
+                                          every difference has its ERRATA id)
 
 Book programs run as printed by default (``--mode as-printed``: the book's PI = 3.14159
 and the author errors its printed figures depend on); ``--mode corrected`` runs them with
@@ -29,13 +31,15 @@ def _version() -> str:
     return __version__
 
 
-def _diff(number: str, mode: str) -> tuple[str, int, int]:
+def _diff(number: str, mode: str) -> tuple[str, dict]:
     program = _figure_program(number)
     figure = figures.load_figure(number)
     with modes.mode(mode):
         computed = book.figure_cells(number)
-    return figures.report(figure, figures.compare(figure, computed), mode,
-                          getattr(program, "CORRECTED_DIFFERENCES", None))
+    comparisons = figures.compare(figure, computed)
+    text, _, _ = figures.report(figure, comparisons, mode,
+                                getattr(program, "CORRECTED_DIFFERENCES", None))
+    return text, figures.summary(figure, comparisons)
 
 
 class UsageError(Exception):
@@ -129,15 +133,19 @@ def _main(argv=None) -> int:
     numbers = list(book.FIGURES) if args.figure == "all" else [args.figure]
     for number in numbers:
         _figure_program(number)
-    total_match = total = 0
+    rows = []
     for number in numbers:
-        text, matching, compared = _diff(number, args.mode)
+        text, row = _diff(number, args.mode)
         print(text)
         print()
-        total_match, total = total_match + matching, total + compared
+        rows.append(row)
     if len(numbers) > 1:
-        print(f"all figures: {total_match} of {total} cells match")
-    return 0 if total_match == total else 1
+        print(f"Summary ({args.mode} mode):")
+        print(figures.summary_table(rows))
+        print(f"all figures: {sum(r['matching'] for r in rows)} of "
+              f"{sum(r['compared'] for r in rows)} cells match")
+    # 0: every compared cell matches or differs for the ERRATA id the figure data gives it
+    return 0 if all(r["unexplained"] == 0 for r in rows) else 1
 
 
 if __name__ == "__main__":

@@ -126,3 +126,34 @@ def report(figure: Figure, comparisons: list, mode: str,
                      f"(columns {' '.join(columns)}; {', '.join(reasons)})")
     lines.append(f"{len(matching)} of {len(compared)} cells match")
     return "\n".join(lines), len(matching), len(compared)
+
+
+def summary(figure: Figure, comparisons: list) -> dict:
+    """Counts of a diff: cells compared, matching, differing with an ERRATA id of their
+    own (explained), differing without one (unexplained), left out and the ids why."""
+    compared = [c for c in comparisons if c.cell.reproducible]
+    differ = [c for c in compared if not c.matches]
+    explained = [c for c in differ if c.cell.errata]
+    skipped = [c for c in comparisons if not c.cell.reproducible]
+    reasons = sorted({e for c in skipped for e in c.cell.errata.split(";") if e})
+    because = sorted({e for c in explained for e in c.cell.errata.split(";") if e})
+    return {"figure": figure.number, "compared": len(compared), "because": ", ".join(because),
+            "matching": len(compared) - len(differ), "explained": len(explained),
+            "unexplained": len(differ) - len(explained), "left_out": len(skipped),
+            "why": ", ".join(reasons)}
+
+
+def summary_table(rows: list) -> str:
+    """The summary of several diffs as a Markdown table."""
+    out = ["| figure | cells compared | matching | explained differences | unexplained "
+           "| cells left out (why) |", "|---|---|---|---|---|---|"]
+    for r in rows:
+        left = f"{r['left_out']} ({r['why']})" if r["left_out"] else "0"
+        explained = f"{r['explained']} ({r['because']})" if r["explained"] else "0"
+        out.append(f"| Fig. {r['figure']} | {r['compared']} | {r['matching']} | "
+                   f"{explained} | {r['unexplained']} | {left} |")
+    total = {k: sum(r[k] for r in rows) for k in ("compared", "matching", "explained",
+                                                 "unexplained", "left_out")}
+    out.append(f"| all | {total['compared']} | {total['matching']} | {total['explained']} "
+               f"| {total['unexplained']} | {total['left_out']} |")
+    return "\n".join(out)
