@@ -16,8 +16,11 @@ named) and writes module ``drv_<module>`` with, for each book routine NAME:
   stops the loop and comes back in ``sarkp_bad`` = (input, element), and a NaN gives the
   position status st_missing when ``sarkp_nan`` allows it.
 
-Every driver sets the mode (prmtr's ``set_mode``) inside the same Fortran call, so no other
-Python thread can change it in between.  ``sarkp_status`` is the routine's trailing IER when
+Every driver sets the mode (prmtr's ``set_mode``) inside the same Fortran call.  The
+drivers release the GIL (f2py ``threadsafe``): the mode lives in thread-private variables
+of prmtr (``!$omp threadprivate``, thread-local storage), and no other module variable is
+written, except the COMMON results of the routines that have them, whose drivers keep the
+GIL.  ``sarkp_status`` is the routine's trailing IER when
 it has one (a prmtr status code), else ``st_ok``; a result that is not a finite number while
 the routine reported success becomes ``st_range``.  A book FUNCTION's value is ``fres``.
 
@@ -248,6 +251,8 @@ def scalar_driver(mod, p, variables):
         names.append("fres")
     names.append(p.status_arg or "sarkp_status")
     w.append(f"  subroutine {p.name}_1({wrap_list(names)})")
+    if not p.commons:
+        w.append("    !f2py threadsafe")
     w.append("    integer, intent(in) :: sarkp_mode")
     for a in p.argnames:
         arg = p.args[a]
@@ -291,8 +296,10 @@ def sweep_driver(mod, p, variables):
     result = ["fres"] if p.kind == "function" else []
     names = (["sarkp_mode", "sarkp_n", "sarkp_inc", "sarkp_kind", "sarkp_nan"] + ins + outs
              + extra + result + ["sarkp_status", "sarkp_bad"])
-    w = [f"  subroutine {p.name}_n({wrap_list(names)})",
-         "    integer, intent(in) :: sarkp_mode, sarkp_n, sarkp_nan",
+    w = [f"  subroutine {p.name}_n({wrap_list(names)})"]
+    if not p.commons:
+        w.append("    !f2py threadsafe")
+    w += ["    integer, intent(in) :: sarkp_mode, sarkp_n, sarkp_nan",
          f"    integer, intent(in) :: sarkp_inc({len(ins)}), sarkp_kind({len(ins)})"]
     for a in ins:
         arg = p.args[a]
@@ -305,7 +312,8 @@ def sweep_driver(mod, p, variables):
     if result:
         w.append(f"    {p.result_type or 'real(dp)'}, intent(out) :: fres(sarkp_n)")
     w += ["    integer, intent(out) :: sarkp_status(sarkp_n), sarkp_bad(2)",
-          "    integer :: sarkp_i, sarkp_j, sarkp_l, sarkp_state",
+          "    integer :: sarkp_i, sarkp_j, sarkp_state"
+          + (", sarkp_l" if any(p.args[a].dims for a in ins) else ""),
           "    sarkp_bad = 0",
           "    call set_mode(sarkp_mode)",
           "    do sarkp_i = 1, sarkp_n",

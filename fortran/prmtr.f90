@@ -16,6 +16,9 @@ module prmtr
   real(dp), public :: pi = pi_exact
   real(dp), public :: pid2 = pi_exact/2
   integer, public :: printed_mode = 0                        ! 0 corrected, 1 as-printed
+  ! One copy per thread (thread-local storage): the generated drivers release the GIL and
+  ! set the caller's mode at the start of every call, so threads must not share it.
+  !$omp threadprivate(pi, pid2, printed_mode)
 
   ! Status codes returned in the trailing IER of every routine that can fail.
   ! (The book has no such argument: it let ARCOS or a division fail at run time.)

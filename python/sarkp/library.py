@@ -85,6 +85,8 @@ ON_ERROR_DOC = """
 """
 
 _SCALAR_TYPES = (float, np.floating)
+#: what the scalar path takes (a bool is an int; complex, strings, arrays go the long way)
+_SCALARS = frozenset({float, int, bool, np.float64, np.float32, np.int64, np.int32})
 _PACKAGE_DIR = os.path.dirname(os.path.abspath(__file__))
 _INT_MAX = 2**31 - 1
 
@@ -311,11 +313,11 @@ class Routine:
                              f"not {on_error!r}")
         if self.sweeps_tables:
             return self._call_tables(args, on_error)
-        if not self._fixed:
-            # Python or NumPy floats add up to a float; anything else goes the long way.
+        if not self._fixed and all(type(a) in _SCALARS for a in args):
+            # Python or NumPy scalars: one call; their sum tells whether all are finite
             try:
                 total = sum(args)
-            except (TypeError, OverflowError, ValueError):   # (ValueError: shapes)
+            except OverflowError:                             # an integer beyond a double
                 total = None
             if isinstance(total, _SCALAR_TYPES):
                 return self._call_scalar(args, total, on_error)
@@ -695,7 +697,7 @@ def _fast_path(spec, namespace):
     and a computed result: one Fortran call and a tuple, nothing else.  Every other case
     (arrays, NaN, a failure, a warning) falls through to ``Routine.__call__``."""
     args = ", ".join(spec.inputs)
-    cond = ["on_error == 'raise'", "type(_t) is float", "_t - _t == 0.0"]
+    cond = ["on_error == 'raise'", "_t - _t == 0.0"]
     cond += [f"{a} > 0.0" for a in spec.inputs if a in spec.lengths]
     cond += [f"{a} >= 0.0" for a in spec.inputs if a in spec.nonnegative]
     cond += [f"{a} != 0.0" for a in spec.inputs if a in spec.nonzero]
@@ -716,14 +718,16 @@ def _fast_path(spec, namespace):
         result = "_new(_cls, _o[:-1])"
     else:
         result = f"_new(_cls, ({', '.join(f'_o[{i}]' for i in spec._pick)},))"
-    return ["    try:",
+    # exact types first: a NumPy array among the inputs must not be summed here
+    types = [f"type({a}) is _F" if a not in spec.integers
+             else f"(type({a}) is _F or type({a}) is _I)" for a in spec.inputs]
+    namespace.update(_F=float, _I=int)
+    return [f"    if {' and '.join(types)}:",
             f"        _t = {' + '.join(spec.inputs)}",
-            "    except Exception:",
-            "        _t = None",
-            f"    if {' and '.join(cond)}:",
-            f"        _o = _one(_mode(), {args})",
-            "        if _o[-1] == 0:",
-            f"            return {result}"]
+            f"        if {' and '.join(cond)}:",
+            f"            _o = _one(_mode(), {args})",
+            "            if _o[-1] == 0:",
+            f"                return {result}"]
 
 
 def declared_routines():

@@ -15,6 +15,13 @@ Cams (chapter 5):
 * :func:`cam_profile`: the profile, its base circle and the follower in one position;
 * :func:`cam_diagrams`: the pressure angle and the radius of curvature against the cam
   angle.
+
+Forces and dynamics (chapters 7-8):
+
+* :func:`reaction_hodograph`: the hodograph of a joint reaction over a crank turn, the tip
+  of the force vector (F cos G, F sin G) drawn from the origin (e.g. program VII.10's F21);
+* :func:`speed_diagram`: omega(phi) of the reduction link from DZKNDV, with and without
+  the flywheel of DMHVK (Fig. 96's WPR and WPRM).
 """
 
 from __future__ import annotations
@@ -218,4 +225,54 @@ def cam_diagrams(FI, ROK, ALFA=None, *, ALD=None, title=""):
     ax.grid(True, lw=0.3)
     if title:
         figure.suptitle(title)
+    return figure
+
+
+def reaction_hodograph(F, G, *, label=None, mark_every=None, title=""):
+    """The hodograph of a joint reaction over a crank turn.
+
+    ``F, G``: the modulus (N, >= 0) and direction (rad) of the reaction at each crank
+    position, in order (e.g. ``F21``, ``G21`` of :func:`sarkp.book.prog_vii_10.compute`).
+    The curve is (F cos G, F sin G), with the first position marked (and every
+    ``mark_every``-th one, if given) and the origin as a cross; equal scales on both axes.
+    """
+    F = np.asarray(F, dtype=float)
+    G = np.asarray(G, dtype=float)
+    if F.shape != G.shape or F.ndim != 1:
+        raise ValueError(f"F and G must be 1-D arrays of the same length, not {F.shape} "
+                         f"and {G.shape}")
+    figure, (ax,) = _figure()
+    x, y = F * np.cos(G), F * np.sin(G)
+    ax.plot(x, y, "-", color="C0", lw=1.4, label=label)
+    ax.plot(x[:1], y[:1], "o", color="C0")
+    if mark_every:
+        ax.plot(x[::mark_every], y[::mark_every], ".", color="C0")
+    ax.plot([0.0], [0.0], "k+")
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel("x component, N")
+    ax.set_ylabel("y component, N")
+    if label:
+        ax.legend()
+    if title:
+        ax.set_title(title)
+    return figure
+
+
+def speed_diagram(phi, WPR, WPRM=None, *, W1=None, title=""):
+    """omega(phi) of the reduction link: DZKNDV's WPR without the flywheel and, if given,
+    WPRM with it (DZKNDV rerun with ISC + IMHVK); ``W1``, the mean speed, as a dashed line.
+    ``phi`` in rad (e.g. ``np.linspace(0, 2*pi, M)``), speeds in rad/s.
+    """
+    phi = np.asarray(phi, dtype=float)
+    figure, (ax,) = _figure(size=(7.0, 4.0))
+    ax.plot(phi, np.asarray(WPR, dtype=float), "-", color="C0", label="without flywheel")
+    if WPRM is not None:
+        ax.plot(phi, np.asarray(WPRM, dtype=float), "-", color="C1", label="with flywheel")
+    if W1 is not None:
+        ax.axhline(W1, color="0.5", linestyle="--", linewidth=0.8, label="mean speed W1")
+    ax.set_xlabel("phi, rad")
+    ax.set_ylabel("omega, rad/s")
+    ax.legend()
+    if title:
+        ax.set_title(title)
     return figure

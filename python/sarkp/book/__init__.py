@@ -21,6 +21,7 @@ PROGRAMS = {
     "IV.15": "prog_iv_15",
     "V.5": "prog_v_5",
     "V.5-FLAT": "prog_v_5_flat",
+    "VII.10": "prog_vii_10",
     "X": "prog_x",
 }
 
