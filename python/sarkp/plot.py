@@ -105,7 +105,9 @@ def diagrams(x, panels, *, xlabel="crank angle φ1, rad", title=""):
         for i, (label, values) in enumerate(curves.items()):
             ax.plot(x, np.asarray(values, dtype=float), ".-", color=f"C{i}", lw=1.2,
                     ms=3, label=label)
-        ax.axhline(0.0, color="k", lw=0.5)
+        values = np.concatenate([np.asarray(v, dtype=float).ravel() for v in curves.values()])
+        if np.nanmin(values) < 0.0 < np.nanmax(values):
+            ax.axhline(0.0, color="k", lw=0.5)
         ax.set_ylabel(ylabel)
         ax.grid(True, lw=0.3)
         ax.legend(fontsize=8, loc="best")

@@ -529,16 +529,28 @@ def dynamics(links: dict, kin: dict, fo: dict) -> dict:
     is1 = fo["IS1"]
     delta = DELTA_FLYWHEEL[get_mode()]
     n = len(ipr)
+    stalls = False
     try:
-        d1 = sarkp.DZKNDV(n, float(n), W1, is1, fo["M1"], ipr)
+        try:
+            d1 = sarkp.DZKNDV(n, float(n), W1, is1, fo["M1"], ipr)
+        except sarkp.RequirementError:
+            # corrected mode (E-DZKNDV-2): without a flywheel the crank's inertia alone
+            # cannot keep a steady motion at W1 -- the machine stalls, there is no WPR.
+            # DEC does not depend on ISC: take it from a run with a large one.
+            if get_mode() == "as-printed":
+                raise
+            stalls = True
+            d1 = sarkp.DZKNDV(n, float(n), W1, is1 + 1e6, fo["M1"], ipr)
         imh = sarkp.DMHVK(n, delta, is1, W1, d1.DEC)
         imh = float(imh[0] if isinstance(imh, tuple) else imh)
         d2 = sarkp.DZKNDV(n, float(n), W1, is1 + imh, fo["M1"], ipr)
     except SarkpError as exc:
         raise StageError(f"program X, stage 'dynamics' (Fig. 96): {exc}") from exc
+    nan = np.full(n, np.nan)
     return {"FI1": kin["FI1"], "IPR": ipr, "AS": d1.AS, "ASUM": d1.ASUM, "EV": d1.EV,
-            "DEC": d1.DEC, "WPR": d1.WPR, "EPR": d1.EPR, "WPRM": d2.WPR, "EPRM": d2.EPR,
-            "IMH": imh, "DELTA": delta, "IS1": is1}
+            "DEC": d1.DEC, "WPR": nan if stalls else d1.WPR,
+            "EPR": nan if stalls else d1.EPR, "WPRM": d2.WPR, "EPRM": d2.EPR,
+            "IMH": imh, "DELTA": delta, "IS1": is1, "STALLS": stalls}
 
 
 TRAPEZOIDS = " ИСПОЛЬЗУЕТСЯ МЕТОД ТРАПЕЦИЙ"          # DINTGR's message, once per DZKNDV
@@ -551,8 +563,13 @@ def render_dynamics(d: dict) -> str:
                            "МАНИПУЛЯТОРА'/2X,'FI1',4X,'IPR',5X,'AS',4X,'ASUM',4X,'EV',5X,"
                            "'DEC',3X,'WPR',5X,'EPR',2X,'WPRM',4X,'EPRM'/)")]
     cols = ("FI1", "IPR", "AS", "ASUM", "EV", "DEC", "WPR", "EPR", "WPRM", "EPRM")
-    lines += [fortran_write("(F6.3,5F7.1,F7.2,F8.2,F6.2,F8.2)", [d[c][i] for c in cols])
-              for i in range(n)]
+    if d.get("STALLS"):     # corrected mode: no steady motion without the flywheel
+        lines += [fortran_write("(F6.3,5F7.1,A7,A8,F6.2,F8.2)",
+                                [d[c][i] for c in cols[:6]] + ["  stall", "   stall"]
+                                + [d["WPRM"][i], d["EPRM"][i]]) for i in range(n)]
+    else:
+        lines += [fortran_write("(F6.3,5F7.1,F7.2,F8.2,F6.2,F8.2)", [d[c][i] for c in cols])
+                  for i in range(n)]
     lines.append(fortran_write("(//1X,'МОМЕНТ ИНЕРЦИИ МАХОВИКА - IMH = ',F7.2)",
                                [d["IMH"]]))
     return "\n".join(lines)
@@ -681,6 +698,8 @@ def stage_cells(stage: str, results: dict) -> dict:
             for name, v in t.items():
                 if isinstance(v, np.ndarray) and v.shape == t["FI1"].shape:
                     out[(row, name)] = float(v[i])
+            if stage == "forces":
+                out[(row, "FI1_G")] = out[(row, "FI1")]
         if stage == "dynamics":
             out[("IMH", "IMH")] = float(t["IMH"])
     elif stage == "teeth":
@@ -741,6 +760,31 @@ def checks(done: dict) -> dict:
         out["E3_vs_dW3/dt"] = rel(k["E3"], W1 * (plus["W3"] - minus["W3"]) / (2 * h))
         out["E4_vs_dW4/dt"] = rel(k["E4"], W1 * (plus["W4"] - minus["W4"]) / (2 * h))
         out["AE_vs_dVE/dt"] = rel(aex(k), W1 * (vex(plus) - vex(minus)) / (2 * h))
+    if "forces" in done:
+        # virtual work (no inertia loads): the moment M1 of link 2's force on the crank
+        # about O times omega1 is the power of the loads, FS on 5 and the weights of 2-5;
+        # the points' velocities as central differences of their positions
+        links = done["synthesis"]
+        fine = np.linspace(0.0, 2.0 * math.pi, 721)[:-1]
+        h = 1e-6
+        k, kp, km = (kinematics(links, fine + d) for d in (0.0, h, -h))
+        fo = forces(links, k)
+        m = masses(links)
+        pi = book_pi()
+
+        def centres(t):
+            c3 = (t["XC"] + 0.15 * links["RCD"] * np.cos(t["FICB"] + pi),
+                  t["YC"] + 0.15 * links["RCD"] * np.sin(t["FICB"] + pi))
+            s4y = t["YD"] + 0.3 * links["RDE"] * np.sin(t["FIDE"])
+            s2y = t["YA"] + 0.5 * links["RAB"] * np.sin(t["FI2"])
+            return t["XE"], s2y, c3[1], s4y
+        (xe_p, s2_p, s3_p, s4_p), (xe_m, s2_m, s3_m, s4_m) = centres(kp), centres(km)
+        rate = W1 / (2.0 * h)
+        power = (-fo["FS"] * (xe_p - xe_m) * rate
+                 - G * (m["M2"] * (s2_p - s2_m) + m["M3"] * (s3_p - s3_m)
+                        + m["M4"] * (s4_p - s4_m)) * rate)      # slider 5 moves level
+        out["virtual_work"] = float(np.max(np.abs(fo["M1"] * W1 - power))
+                                    / np.max(np.abs(power)))
     if "dynamics" in done:
         d = done["dynamics"]
         w = d["WPRM"]
@@ -785,12 +829,17 @@ def corrected_report(done: dict, stages) -> str:
             key = next(x for x in c if x.startswith(n + "_vs"))
             row(f"{key}, relative", f"{c[key]:.1e}", f"{cb[key]:.1e}", "",
                 "accelerations against numerical derivatives of the velocities")
+    if "forces" in done:
+        row("M1 w1 against the loads' power, relative", f"{c['virtual_work']:.1e}",
+            f"{cb['virtual_work']:.1e}", "", "virtual work")
     if "dynamics" in done:
         d, db = done["dynamics"], book["dynamics"]
         row("flywheel delta (card: 0.02)", f"{d['DELTA']:.2f}", f"{db['DELTA']:.2f}", "",
             "E-X-DELTA-1")
         row("delta realized with the flywheel", f"{c['delta_realized']:.4f}",
             f"{cb['delta_realized']:.4f}")
+        row("steady motion without the flywheel", "stalls" if d["STALLS"] else "yes",
+            "stalls" if db["STALLS"] else "printed", "", "E-DZKNDV-2")
         row("IMH", f"{d['IMH']:.2f}", f"{db['IMH']:.2f}", "kg m2", "E-X-IPR-1; E-X-DELTA-1")
         row("largest IPR", f"{d['IPR'].max():.2f}", f"{db['IPR'].max():.2f}", "kg m2",
             "E-X-IPR-1")
@@ -862,8 +911,8 @@ def plots(directory, stage: str | None = None) -> list:
                             ("43", "D (F43)")):
             save(plot.reaction_hodograph(f["F" + name], f["G" + name],
                                          label=f"reaction at {label}",
-                                         title=f"Program X: hodograph of the reaction at "
-                                               f"{label}, N ({mode})"),
+                                         title=f"Program X ({mode}): reaction at "
+                                               f"{label}, N"),
                  f"x_hodograph_{name}.png")
     if "dynamics" in stages:
         d = done["dynamics"]
@@ -871,10 +920,14 @@ def plots(directory, stage: str | None = None) -> list:
             ("work and energy, J", {"ΣA (ASUM)": d["ASUM"], "E of the links (EV)": d["EV"],
                                     "ΔE (DEC)": d["DEC"]}),
             ("reduced moment of inertia, kg·m²", {"J_pr (IPR)": d["IPR"]})],
-            title=f"Program X: energy ({mode})"), "x_energy.png")
-        if hasattr(plot, "speed_diagram"):
-            save(plot.speed_diagram(d["FI1"], d["WPR"], d["WPRM"], W1=W1,
-                                    title=f"Program X: angular speed of the crank, "
-                                          f"IMH = {d['IMH']:.1f} kg·m² ({mode})"),
-                 "x_omega.png")
+            title=f"Program X ({mode}): work, energy and reduced inertia"), "x_energy.png")
+        panels = [] if d["STALLS"] else [
+            ("ω without flywheel, rad/s", {"ω1 (WPR)": d["WPR"]})]
+        panels.append(("ω with flywheel, rad/s", {"ω1 (WPRM)": d["WPRM"],
+                                                  "mean speed W1": np.full(len(d["FI1"]), W1)}))
+        save(plot.diagrams(d["FI1"], panels,
+                           title=f"Program X ({mode}): angular speed of the crank\n"
+                                 f"flywheel IMH = {d['IMH']:.1f} kg·m² for δ = {d['DELTA']:g}"
+                                 + ("\nwithout the flywheel the machine stalls (E-DZKNDV-2)"
+                                    if d["STALLS"] else "")), "x_omega.png")
     return written
