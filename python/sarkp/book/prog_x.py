@@ -233,47 +233,53 @@ DZBPL_CALLS = ((1, 1, 25, 2, 3, 30, 200, 3), (1, 1, 25, 3, 4, 30, 200, 3),
 
 
 def teeth() -> dict:
-    """The eight DZBPL variants of the planetary reducer (L7344-7363)."""
-    routine = sarkp.DZBPL
-    names = routine.spec.inputs
+    """The eight DZBPL variants of the planetary reducer (L7344-7363); the COMMON
+    /ZUB/ limits ZKRN, ZKRW, DZ of L7344-7346 are DZBPL's own (chapter 6)."""
     out = []
     for call in DZBPL_CALLS:
-        args = dict(zip(names, call))
-        for key, value in ZUB_LIMITS.items():
-            if key in names:
-                args[key] = value
         try:
-            result = routine(**args)
+            result = sarkp.DZBPL(*call)
         except SarkpError as exc:
             raise StageError(f"program X, stage 'teeth' (Fig. 86): DZBPL{call}: "
                              f"{exc}") from exc
-        out.append((args, result))
+        out.append((dict(zip(sarkp.DZBPL.spec.inputs, call)), result))
     return {"variants": out}
 
 
 def render_teeth(t: dict) -> str:
-    spec = sarkp.DZBPL.spec
-    return "\n".join(spec.report(args, list(result)) for args, result in t["variants"])
+    return "\n".join(sarkp.gears.dzbpl_report(args["KS"], args["SHEMA"], list(result))
+                     for args, result in t["variants"])
 
 
 # ---- stage 3: gear geometry (Fig. 87) -------------------------------------------------------
+
+#: L7375-7405: DKRKT with AAA = 1.0 (it prints its input line all the same, L6590), the
+#: geometry routines with AAA = 0.0 (they print their reports)
+GEAR_CALLS = {
+    "DKRKT": dict(M=3.0, Z1=20.0, Z2=51.0, AW=0.0, SDVIG=3, AAA=1.0),
+    "DGMTZK1": dict(M=3.0, Z=20.0, BETA=0.0, AAA=0.0),            # X = X1
+    "DGMTZK2": dict(M=3.0, Z=51.0, BETA=0.0, AAA=0.0),            # X = X2
+    "DGMZPC": dict(M=3.0, Z1=20.0, Z2=51.0, BETA=0.0, BW=20.0, AAA=0.0),
+    "DGMZVN": dict(M=3.0, Z1=51.0, Z2=122.0, X2=0.0, ZO2=25.0, DO=75.0, XO=0.17, DAO=83.8,
+                   AAA=0.0),
+}
+
 
 def gears() -> dict:
     """Shift coefficients (DKRKT, equal specific sliding), the two gears (DGMTZK), the
     external mesh 20/51 (DGMZPC) and the internal mesh 51/122 cut by a shaper cutter
     (DGMZVN), L7365-7405."""
-    calls = [("DKRKT", dict(M=3.0, Z1=20.0, Z2=51.0, AW=0.0, SDVIG=3, AAA=1.0))]
     out = {}
     try:
-        k = sarkp.DKRKT(**calls[0][1])
-        out["DKRKT"] = (calls[0][1], k)
-        for name, z, x in (("DGMTZK1", 20.0, k.X1), ("DGMTZK2", 51.0, k.X2)):
-            args = dict(M=3.0, Z=z, BETA=0.0, X=x, AAA=0.0)
+        args = GEAR_CALLS["DKRKT"]
+        k = sarkp.DKRKT(**args)
+        out["DKRKT"] = (args, k)
+        for name, x in (("DGMTZK1", k.X1), ("DGMTZK2", k.X2)):
+            args = dict(GEAR_CALLS[name], X=x)
             out[name] = (args, sarkp.DGMTZK(**args))
-        args = dict(M=3.0, Z1=20.0, Z2=51.0, BETA=0.0, X1=k.X1, X2=k.X2, BW=20.0, AAA=0.0)
+        args = dict(GEAR_CALLS["DGMZPC"], X1=k.X1, X2=k.X2)
         out["DGMZPC"] = (args, sarkp.DGMZPC(**args))
-        args = dict(M=3.0, Z1=51.0, Z2=122.0, X1=k.X2, X2=0.0, ZO2=25.0, DO=75.0,
-                    XO=0.17, DAO=83.8, AAA=0.0)
+        args = dict(GEAR_CALLS["DGMZVN"], X1=k.X2)
         out["DGMZVN"] = (args, sarkp.DGMZVN(**args))
     except SarkpError as exc:
         raise StageError(f"program X, stage 'gears' (Fig. 87): {exc}") from exc
@@ -281,17 +287,17 @@ def gears() -> dict:
 
 
 def render_gears(g: dict) -> str:
-    parts = []
     args, k = g["DKRKT"]
-    parts.append(sarkp.DKRKT.spec.report(args, list(k)))
-    parts.append(fortran_write("(1X,'КОЭФФИЦИЕНТЫ СМЕЩЕНИЯ КОЛЕС:'/' X1 = ',F7.3,"
-                               "' X2 = ',F7.3/' УГОЛ ЗАЦЕПЛЕНИЯ AL12 = ',F8.4)",
-                               [k.X1, k.X2, k.ALFAW]))
+    # with AAA = 1 DKRKT prints only its input line (FORMAT 25, two records)
+    parts = ["\n".join(sarkp.gears.dkrkt_report(args).split("\n")[:2]),
+             fortran_write("(1X,'КОЭФФИЦИЕНТЫ СМЕЩЕНИЯ КОЛЕС:'/' X1 = ',F7.3,"
+                           "' X2 = ',F7.3/' УГОЛ ЗАЦЕПЛЕНИЯ AL12 = ',F8.4)",
+                           [k.X1, k.X2, k.ALFAW])]
     for name, routine in (("DGMTZK1", sarkp.DGMTZK), ("DGMTZK2", sarkp.DGMTZK),
                           ("DGMZPC", sarkp.DGMZPC), ("DGMZVN", sarkp.DGMZVN)):
         args, result = g[name]
         parts.append(routine.spec.report(args, list(result)))
-    return "\n".join(p for p in parts if p)
+    return "\n".join(parts)
 
 
 # ---- stage 4: cam (Fig. 89) -----------------------------------------------------------------
@@ -703,13 +709,19 @@ def stage_cells(stage: str, results: dict) -> dict:
         if stage == "dynamics":
             out[("IMH", "IMH")] = float(t["IMH"])
     elif stage == "teeth":
-        for n, (_, r) in enumerate(results["variants"], 1):
-            for name, v in r._asdict().items():
-                out[(str(n), name)] = float(v)
+        for n, (args, r) in enumerate(results["variants"], 1):
+            out[(str(n), "SHEMA")] = float(args["SHEMA"])
+            out[(str(n), "KS")] = float(args["KS"])
+            for name in ("Z1", "Z2", "Z3", "Z4"):
+                out[(str(n), name)] = float(getattr(r, name))
     elif stage == "gears":
-        for block, (_, r) in results.items():
-            for name, v in r._asdict().items():
+        rename = {"ALFAW": "ALFA", "XY": "XU"}           # the printed names
+        for block, (args, r) in results.items():
+            for name, v in args.items():
                 out[(block, name)] = float(v)
+            for name, v in r._asdict().items():
+                out[(block, rename.get(name, name))] = float(v)
+        out[("DKRKT", "AL12")] = out[("DKRKT", "ALFA")]
     return out
 
 
