@@ -254,14 +254,16 @@ def render_teeth(t: dict) -> str:
 # ---- stage 3: gear geometry (Fig. 87) -------------------------------------------------------
 
 #: L7375-7405: DKRKT with AAA = 1.0 (it prints its input line all the same, L6590), the
-#: geometry routines with AAA = 0.0 (they print their reports)
+#: geometry routines with AAA = 0.0 (they print their reports).  Here every call is
+#: silent (AAA = 1) and :func:`render_gears` prints the reports afterwards, so that a
+#: failure prints nothing and the order is the book's.
 GEAR_CALLS = {
     "DKRKT": dict(M=3.0, Z1=20.0, Z2=51.0, AW=0.0, SDVIG=3, AAA=1.0),
-    "DGMTZK1": dict(M=3.0, Z=20.0, BETA=0.0, AAA=0.0),            # X = X1
-    "DGMTZK2": dict(M=3.0, Z=51.0, BETA=0.0, AAA=0.0),            # X = X2
-    "DGMZPC": dict(M=3.0, Z1=20.0, Z2=51.0, BETA=0.0, BW=20.0, AAA=0.0),
+    "DGMTZK1": dict(M=3.0, Z=20.0, BETA=0.0, AAA=1.0),            # X = X1
+    "DGMTZK2": dict(M=3.0, Z=51.0, BETA=0.0, AAA=1.0),            # X = X2
+    "DGMZPC": dict(M=3.0, Z1=20.0, Z2=51.0, BETA=0.0, BW=20.0, AAA=1.0),
     "DGMZVN": dict(M=3.0, Z1=51.0, Z2=122.0, X2=0.0, ZO2=25.0, DO=75.0, XO=0.17, DAO=83.8,
-                   AAA=0.0),
+                   AAA=1.0),
 }
 
 
@@ -718,7 +720,8 @@ def stage_cells(stage: str, results: dict) -> dict:
         rename = {"ALFAW": "ALFA", "XY": "XU"}           # the printed names
         for block, (args, r) in results.items():
             for name, v in args.items():
-                out[(block, name)] = float(v)
+                if name != "AAA":
+                    out[(block, name)] = float(v)
             for name, v in r._asdict().items():
                 out[(block, rename.get(name, name))] = float(v)
         out[("DKRKT", "AL12")] = out[("DKRKT", "ALFA")]
