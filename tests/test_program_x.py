@@ -50,11 +50,15 @@ def columns(number):
 #: the largest difference (units of the last digit) each explanation allows
 BOUNDS = {"E-FIG89-4": 0.5 + 6e-8 / 1e-4,   # the tie, less one REAL*4 ulp at 0.236
            "E-FIG91-8": 0.7, "E-FIG91-9": 2.0, "E-FIG91-10": 2.0,
-          "E-FIG94-3": 0.75, "E-FIG94-4": 2.0, "E-FIG96-4": 1.5}
+          "E-FIG94-3": 0.75, "E-FIG94-4": 2.0, "E-FIG96-4": 1.5,
+          "E-FIG87-1": 8.0, "E-FIG87-2": 1.0, "E-FIG87-3": 4.0}
+NO_GEARS = pytest.mark.skipif(not prog_x.available("gears"),
+                              reason="chapter 6 (gears) not in this build")
 
 
 @pytest.mark.parametrize("number, compared, matching", [
-    ("84", 2, 2), ("89", 261, 259), ("91", 703, 675), ("94", 555, 536), ("96", 371, 344)])
+    ("84", 2, 2), ("89", 261, 259), ("91", 703, 675), ("94", 555, 536), ("96", 371, 344),
+    pytest.param("86", 48, 48, marks=NO_GEARS), pytest.param("87", 54, 44, marks=NO_GEARS)])
 def test_every_difference_is_named_and_bounded(number, compared, matching):
     _, comparisons = diff(number)
     done = [c for c in comparisons if c.cell.reproducible]
@@ -203,6 +207,50 @@ def test_fig91_slider_directions_are_0_or_pi():
     for name in ("ALE", "BE"):
         off = np.minimum(np.abs(np.sin(k[name])), 1.0)
         assert off.max() < 1e-4
+
+
+def test_fig86_ocr_fix_from_coaxiality():
+    """E-FIG86-1: scheme 3 needs z1 - z2 = z4 - z3 and i = 1 - z2 z4/(z1 z3) = P/Q."""
+    from fractions import Fraction
+    p = printed("86")
+    ocr = {(c.row, c.column): int(c.ocr) for c in figures.load_figure("86").cells if c.ocr}
+    for row, call in enumerate(prog_x.DZBPL_CALLS, 1):
+        z1, z2, z3, z4 = (int(p[(str(row), f"Z{i}")]) for i in range(1, 5))
+        if call[-1] == 3:
+            assert z1 - z2 == z4 - z3
+            assert 1 - Fraction(z2 * z4, z1 * z3) == Fraction(call[1], call[2])
+    assert ocr[("2", "Z4")] == 126 and 100 - 84 != 126 - 112
+
+
+def test_fig87_identities_of_the_printed_cells():
+    """E-FIG87-2, -3: the printed cells agree with each other through the book's
+    formulas; SA1 is on its rounding edge for any DA1 the print allows."""
+    p = printed("87")
+    a, aw, xu, xur = (p[("DGMZPC", n)] for n in ("A", "AW", "XU", "XUR"))
+    assert abs((aw - a) / 3.0 - xu) <= 0.5e-4 and abs(-xu - xur) <= 1e-12
+    for h, hi, lo in (("H1", "DA1", "DF1"), ("H2", "DF2", "DA2")):
+        half = (p[("DGMZVN", hi)] - p[("DGMZVN", lo)]) / 2.0
+        assert abs(half - p[("DGMZVN", h)]) <= 0.5e-4 + 1e-9
+
+
+@NO_GEARS
+def test_fig87_sa1_is_on_its_rounding_edge():
+    """E-FIG87-3: SA1 of the internal mesh, for any DA1 within the printed 157.2092's
+    interval, straddles the rounding edge of the printed 2.4346 (x of the gear 51 from
+    DKRKT: the printed -0.305 is too coarse for this)."""
+    p = printed("87")
+    with sarkp.as_printed():
+        x1 = sarkp.DKRKT(3.0, 20.0, 51.0, 0.0, 3).X2
+    pi, m, z1 = 3.14159, 3.0, 51.0
+    alfa = pi / 9.0
+
+    def sa1(da1):
+        ala = math.acos(m * z1 * math.cos(alfa) / da1)
+        return da1 * ((0.5 * pi + 2 * x1 * math.tan(alfa)) / z1
+                      + (math.tan(alfa) - alfa) - (math.tan(ala) - ala))
+    da1 = p[("DGMZVN", "DA1")]
+    lo, hi = sorted((sa1(da1 - 0.5e-4), sa1(da1 + 0.5e-4)))
+    assert lo < p[("DGMZVN", "SA1")] - 0.5e-4 < hi
 
 
 def test_fig94_ocr_fixes_from_the_printed_columns():
