@@ -458,7 +458,8 @@ def render_kinematics(k: dict) -> str:
 # ---- stage 6: forces (Fig. 94) --------------------------------------------------------------
 
 def masses(links: dict) -> dict:
-    """L7542-7550: masses of 50 kg per metre of link, J_S = m l**2 (E-X-IS1-1 for J_S1)."""
+    """L7542-7550: masses of 50 kg per metre of link (link 3 is the lever BCD, 2 RCD long),
+    J_S = m l**2, m5 = 2 m4; J_S1 = (ML ROA) ROA**2 is the crank's."""
     rcd, rde, roa, rab = links["RCD"], links["RDE"], links["ROA"], links["RAB"]
     m4 = ML * rde
     m3 = 2.0 * rcd * ML
