@@ -61,7 +61,7 @@ from ..kinematics import DPRM1, DPRM2, DSKOR1, DSKOR2, DUSKR1, DUSKR2
 from ..modes import book_pi
 from ..report import fortran_write
 from ..synthesis import DSNTZ1, DSNTZR
-from . import es_evm
+from .prog_v_5 import _R4      # a REAL*4 of the ES EVM (sarkp.book.es_evm)
 
 LISTING = "X"
 TITLE = "Course project of chapter 10: the conveyor-feeder mechanism (program X)"
@@ -106,7 +106,8 @@ ROUTINES = {
 
 #: Why a printed cell differs in corrected mode (see docs/ERRATA.md).
 CORRECTED_DIFFERENCES = {
-    "RCD": "", "RDE": "",
+    **{c: "E-PI-1; E-FIG89-3 (exact pi, phases by the row number)"
+       for c in ("FIK", "FIK_P", "AT", "VT", "ST", "X", "Y", "RK", "DLT", "ROK", "RKSH")},
     "*": "E-PI-1; E-X-FICD1-1; E-X-LINKS-1; E-DUSKR1-1; E-X-W4; E-X-IPR-1; E-X-DELTA-1 "
          "(the corrected design)",
 }
@@ -136,38 +137,6 @@ class StageError(SarkpError):
 
 
 # ---- the main program's own arithmetic ----------------------------------------------------
-
-class _R4(float):
-    """A REAL*4 of the ES EVM: each operation's exact result truncated to 6 hex digits."""
-
-    def __new__(cls, x):
-        return float.__new__(cls, es_evm.real4(float(x)))
-
-    def __add__(self, o):
-        return _R4(float(self) + float(_R4(o)))
-
-    __radd__ = __add__
-
-    def __sub__(self, o):
-        return _R4(float(self) - float(_R4(o)))
-
-    def __rsub__(self, o):
-        return _R4(float(_R4(o)) - float(self))
-
-    def __mul__(self, o):
-        return _R4(float(self) * float(_R4(o)))
-
-    __rmul__ = __mul__
-
-    def __truediv__(self, o):
-        return _R4(float(self) / float(_R4(o)))
-
-    def __rtruediv__(self, o):
-        return _R4(float(_R4(o)) / float(self))
-
-    def __neg__(self):
-        return _R4(-float(self))
-
 
 def _number():
     """The main program's REAL: the ES EVM's as printed, a double corrected."""
