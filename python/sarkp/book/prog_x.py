@@ -106,7 +106,7 @@ ROUTINES = {
 
 #: Why a printed cell differs in corrected mode (see docs/ERRATA.md).
 CORRECTED_DIFFERENCES = {
-    **{c: "E-PI-1; E-FIG89-3 (exact pi, phases by the row number)"
+    **{c: "E-PI-1; E-FIG89-3 (exact pi and IEEE double arithmetic, phases by the row number)"
        for c in ("FIK", "FIK_P", "AT", "VT", "ST", "X", "Y", "RK", "DLT", "ROK", "RKSH")},
     "*": "E-PI-1; E-X-FICD1-1; E-X-LINKS-1; E-DUSKR1-1; E-X-W4; E-X-IPR-1; E-X-DELTA-1 "
          "(the corrected design)",
