@@ -275,7 +275,11 @@ def test_corrected_design_meets_the_task_card():
         done = prog_x.run(["synthesis", "cam", "kinematics"])
         c = prog_x.checks(done)
     s = done["synthesis"]
-    assert s["FICD1"] == pytest.approx(1.3562568, abs=1e-6)        # E-X-FICD1-1
+    # E-X-FICD1-1: with CD at FICD1 to the guide the slider is at the card's x_E = 0.82
+    ficd1 = s["FICD1"]
+    xe = s["RCD"] * math.cos(ficd1) + math.sqrt(
+        s["RDE"]**2 - (prog_x.H5 - s["RCD"] * math.sin(ficd1))**2)
+    assert xe == pytest.approx(prog_x.X5[0], abs=1e-9)
     assert c["stroke"] == pytest.approx(0.40, abs=1e-6)             # x_E 0.82 -> 0.42
     assert c["swing"] == pytest.approx(prog_x.DELTA, abs=1e-6)
     assert c["K_realized"] == pytest.approx(1.1, abs=1e-5)
@@ -304,7 +308,8 @@ def test_the_book_run_fails_the_task_card():
     with sarkp.as_printed():
         done = prog_x.run(["synthesis", "kinematics"])
         c = prog_x.checks(done)
-    assert c["stroke"] == pytest.approx(0.2431, abs=2e-4)
+    xe = columns("91")["XE"]                 # the printed 10-degree table brackets it
+    assert xe.max() - xe.min() - 1e-4 <= c["stroke"] <= xe.max() - xe.min() + 2e-3 < 0.3
     assert abs(c["K_realized"] - 1.1) > 0.03
     assert c["E3_vs_dW3/dt"] > 0.1 and c["E2_vs_dW2/dt"] < 1e-4
 
