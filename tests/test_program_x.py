@@ -279,7 +279,9 @@ def test_corrected_design_meets_the_task_card():
     ficd1 = s["FICD1"]
     xe = s["RCD"] * math.cos(ficd1) + math.sqrt(
         s["RDE"]**2 - (prog_x.H5 - s["RCD"] * math.sin(ficd1))**2)
-    assert xe == pytest.approx(prog_x.X5[0], abs=1e-9)
+    # (to 1e-3: the DATA's FI5 = 1.57 and 0.349, 0.698 rad are the card's 90, 20, 40
+    # degrees to 3 digits; DSNTZR meets them exactly, the horizontal guide here nearly)
+    assert xe == pytest.approx(prog_x.X5[0], abs=1e-3)
     assert c["stroke"] == pytest.approx(0.40, abs=1e-6)             # x_E 0.82 -> 0.42
     assert c["swing"] == pytest.approx(prog_x.DELTA, abs=1e-6)
     assert c["K_realized"] == pytest.approx(1.1, abs=1e-5)
