@@ -134,7 +134,7 @@ def _lever_d(fi3, M, g):
 
 def _acc_dir_d(fi3, w3, e3, M):
     # the book's DUGL3(FICB + PI, PI - ATAN(ABS(E3)/W3**2), E3), with atan2 for W3 = 0
-    return sarkp.DUGL3(fi3 + PI, PI - M.atan2(M.abs(e3), w3 * w3), e3)[0]
+    return sarkp.DUGL3(fi3 + PI, PI - M.atan2(M.abs(e3), w3 * w3), e3)
 
 
 def course_split(phi, level, M, g=COURSE):
@@ -146,7 +146,7 @@ def course_split(phi, level, M, g=COURSE):
     if level < 2:
         return out
     w3 = out["W3"]
-    v = K.DSKOR2(g["rcd"] * M.abs(w3), sarkp.DUGL3(out["FI3"] + PI, PID2, w3)[0], 0.0, 0.0,
+    v = K.DSKOR2(g["rcd"] * M.abs(w3), sarkp.DUGL3(out["FI3"] + PI, PID2, w3), 0.0, 0.0,
                  g["rde"], p.FI2, 0.0)
     out.update(VE=v.VB, ALE=v.ALB, W4=v.W2)
     if level < 3:
@@ -167,7 +167,7 @@ def course_dknma(phi, level, M, g=COURSE):
     if level >= 3:
         ad, bd = g["rcd"] * M.sqrt(w3**4 + e3**2), _acc_dir_d(out["FI3"], w3, e3, M)
     r = K.DKNMA2(xd, yd, 0.0, g["yg"], 0.0, g["rde"], 0.0, PID2,
-                 g["rcd"] * M.abs(w3), sarkp.DUGL3(out["FI3"] + PI, PID2, w3)[0], 0.0, 0.0,
+                 g["rcd"] * M.abs(w3), sarkp.DUGL3(out["FI3"] + PI, PID2, w3), 0.0, 0.0,
                  0.0, ad, bd, 0.0, 0.0, 1, 1.0 if level < 3 else 0.0)
     out.update(XE=r.XB, FIDE=r.FI2, VE=r.VB, ALE=r.ALB, W4=r.W2, AE=r.AB, BE=r.BB, E4=r.E2)
     return out

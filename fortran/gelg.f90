@@ -29,6 +29,7 @@ module gelg_mod
 contains
 
   subroutine gelg(r, a, m, n, eps, ier)
+    !sarkp ier-is-output
     integer, intent(in) :: m, n
     real(dp), intent(inout) :: r(m, n)
     real(dp), intent(inout) :: a(m, m)
@@ -73,15 +74,89 @@ contains
   ! The 2x2 call every routine of the book makes, CALL GELG(C, A, 2, 1, 0.0001, IER)
   ! (L525), with IER mapped to a status: st_singular for IER = -1 or a solution that
   ! overflowed (C is then zero), st_significance for IER > 0 (C kept), else st_ok.
+  ! It is GELG's own algorithm written out for M = 2, without the library calls: LAPACK's
+  ! DGETC2 (complete pivoting, the last largest element in row order; a pivot below
+  ! max(eps*max|a|, tiny/eps) flags a singular matrix) and DGESC2 (the solve, multiplying
+  ! by the reciprocal pivots, and its scaling test), operation for operation, so that the
+  ! results are bit for bit those of GELG (tests/test_gelg.py checks it).  The library
+  ! calls redid their machine-constant set-up on every call, which cost more than the
+  ! 2x2 solve itself.
   subroutine gelg2(a, c, st)
     real(dp), intent(inout) :: a(2, 2), c(2)
     integer, intent(out) :: st
-    integer :: ier
-    call gelg(c, a, 2, 1, 0.0001_dp, ier)
-    if (ier < 0 .or. .not. (abs(c(1)) <= huge(1.0_dp) .and. abs(c(2)) <= huge(1.0_dp))) then
-      st = st_singular
+    real(dp), parameter :: prec = epsilon(1.0_dp), smlnum = tiny(1.0_dp)/epsilon(1.0_dp)
+    real(dp) :: amax, xmax, smin, t, temp
+    integer :: i, j, ipv, jpv
+
+    st = st_singular
+    amax = max(abs(a(1, 1)), abs(a(2, 1)), abs(a(1, 2)), abs(a(2, 2)))
+    if (.not. (amax > 0.0_dp) .or. amax > huge(amax)) then   ! zero, NaN or inf matrix
       c = 0.0_dp
-    else if (ier > 0) then
+      return
+    end if
+    ! DGETC2, step 1: the pivot is the last largest element in row order
+    xmax = 0.0_dp
+    ipv = 1
+    jpv = 1
+    do i = 1, 2
+      do j = 1, 2
+        if (abs(a(i, j)) >= xmax) then
+          xmax = abs(a(i, j))
+          ipv = i
+          jpv = j
+        end if
+      end do
+    end do
+    smin = max(prec*xmax, smlnum)
+    if (ipv /= 1) then                       ! swap the rows, and the right-hand sides
+      do j = 1, 2
+        t = a(1, j)
+        a(1, j) = a(2, j)
+        a(2, j) = t
+      end do
+      t = c(1)
+      c(1) = c(2)
+      c(2) = t
+    end if
+    if (jpv /= 1) then                       ! swap the columns (undone on the solution)
+      do i = 1, 2
+        t = a(i, 1)
+        a(i, 1) = a(i, 2)
+        a(i, 2) = t
+      end do
+    end if
+    if (abs(a(1, 1)) < smin) then            ! DGETC2 INFO = 1: GELG's IER = -1
+      c = 0.0_dp
+      return
+    end if
+    a(2, 1) = a(2, 1)/a(1, 1)
+    if (a(1, 2) /= 0.0_dp) a(2, 2) = a(2, 2) + a(2, 1)*(-a(1, 2))   ! DGER
+    if (abs(a(2, 2)) < smin) then            ! DGETC2 INFO = 2
+      c = 0.0_dp
+      return
+    end if
+    ! DGESC2: L, the scaling test (a scaled solution is GELG's IER = -1), then U
+    c(2) = c(2) - a(2, 1)*c(1)
+    if (2.0_dp*smlnum*max(abs(c(1)), abs(c(2))) > abs(a(2, 2))) then
+      c = 0.0_dp
+      return
+    end if
+    temp = 1.0_dp/a(2, 2)
+    c(2) = c(2)*temp
+    temp = 1.0_dp/a(1, 1)
+    c(1) = c(1)*temp
+    c(1) = c(1) - c(2)*(a(1, 2)*temp)
+    if (jpv /= 1) then
+      t = c(1)
+      c(1) = c(2)
+      c(2) = t
+    end if
+    if (.not. (abs(c(1)) <= huge(1.0_dp) .and. abs(c(2)) <= huge(1.0_dp))) then
+      c = 0.0_dp
+      return
+    end if
+    ! GELG's significance test at step 2 (SSP's IER = 1): the second pivot against EPS
+    if (abs(a(2, 2)) <= 0.0001_dp*amax) then
       st = st_significance
     else
       st = st_ok

@@ -59,12 +59,10 @@ contains
 
   ! II.3, L551-569.  Direction of the segment (X1,Y1) -> (X2,Y2) in [0, 2*PI).
   ! Coincident points have no direction: the book divides 0 by 0; here 0 is returned.
+  ! A direction a hair below 0 wraps to 2*PI in rounding; it is 0 then (E-DUGOL-1).
   pure real(dp) function dugl1(x1, y1, x2, y2)
     real(dp), intent(in) :: x1, y1, x2, y2
-    real(dp) :: c
-    c = dugl2(x1, y1, x2, y2)
-    if (c < 0.0_dp) c = c + 2.0_dp*pi
-    dugl1 = c
+    dugl1 = dugol(dugl2(x1, y1, x2, y2))
   end function dugl1
 
   ! II.4, L572-588.  Signed direction of (X1,Y1) -> (X2,Y2) in [-pi, pi].
@@ -115,10 +113,13 @@ contains
   end function dugl5
 
   ! II.8, L630-639.  FI if FI >= 0, else FI + 2*PI (one wrap only, as printed).
+  ! FI in (-ulp, 0) would round to FI + 2*PI = 2*PI, outside [0, 2*PI): 0 is returned,
+  ! the same direction to within |FI| (E-DUGOL-1).
   pure real(dp) function dugol(fi)
     real(dp), intent(in) :: fi
     if (fi < 0.0_dp) then
       dugol = fi + 2.0_dp*pi
+      if (dugol >= 2.0_dp*pi) dugol = 0.0_dp
     else
       dugol = fi
     end if

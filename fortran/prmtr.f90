@@ -24,14 +24,20 @@ module prmtr
   integer, parameter, public :: st_singular = 2     ! dead centre / singular system (GELG IER = -1)
   integer, parameter, public :: st_significance = 3 ! GELG IER > 0: loss of significance, result kept
   integer, parameter, public :: st_requirement = 4  ! synthesis requirement no mechanism can meet
+  ! (5 is the Python layer's "missing input": a NaN passed on from a failed earlier step)
+  integer, parameter, public :: st_range = 6        ! a result is not a finite double (overflow)
+  ! 100 + d (d = 1..7): the result was kept, but only about d significant digits are left
+  integer, parameter, public :: st_digits = 100
 
-  public :: set_mode, as_printed, book_sign
+  public :: set_mode, as_printed, book_sign, succeeded
 
 contains
 
   subroutine set_mode(printed)
     ! printed = 0: corrected mode, exact pi; printed = 1: as-printed mode, PI = 3.14159.
+    ! Every generated driver calls this first, with the caller's mode.
     integer, intent(in) :: printed
+    if ((printed /= 0) .eqv. (printed_mode /= 0)) return
     if (printed /= 0) then
       printed_mode = 1
       pi = pi_book
@@ -41,6 +47,12 @@ contains
     end if
     pid2 = pi/2
   end subroutine set_mode
+
+  ! A status whose results are kept: ok, or kept with a loss of significance.
+  pure logical function succeeded(st)
+    integer, intent(in) :: st
+    succeeded = st == st_ok .or. st == st_significance .or. st > st_digits
+  end function succeeded
 
   logical function as_printed()
     as_printed = printed_mode /= 0

@@ -30,7 +30,6 @@ module synthesis
 
   ! The crank pivot A found by the last DSNTZ2 call: the book prints XA, YA in DSNTZ2's
   ! report (L1174-1179) but does not return them; the Python layer reads them here.
-  real(dp), public :: dsntz2_xa = 0.0_dp, dsntz2_ya = 0.0_dp
 
 contains
 
@@ -237,20 +236,21 @@ contains
   ! rocker angle FI3, the rocker L3 with pivot D = (XD, 0) and the transmission angles
   ! GMIN, GMAX at the two extreme positions: PSI = BETA + GMAX - GMIN, C2 at FI3 + PSI,
   ! A = intersection of the lines through C1 at FI3 - GMIN and through C2 at
-  ! FI3 + PSI - GMAX.  XA, YA are printed by the book but are not arguments.
+  ! FI3 + PSI - GMAX.  The book prints the crank pivot XA, YA (L1173) but has no argument
+  ! for it: sarkp returns it after LO.
   ! ERRATA: E-DSNTZ2-1 (KC1A + TAN = KC1A = TAN), E-SYN-1.
-  subroutine dsntz2(kw3, fi3, l3, xd, gmin, gmax, aaa, l1, l2, lo, ier)
+  subroutine dsntz2(kw3, fi3, l3, xd, gmin, gmax, aaa, l1, l2, lo, xa, ya, ier)
     real(dp), intent(in) :: kw3, fi3, l3, xd, gmin, gmax, aaa
-    real(dp), intent(out) :: l1, l2, lo
+    real(dp), intent(out) :: l1, l2, lo, xa, ya
     integer, intent(out) :: ier
-    real(dp) :: beta, psi, xc1, yc1, xc2, yc2, a(2, 2), c(2), xa, ya, ac1, ac2, t1, t2, t3
+    real(dp) :: beta, psi, xc1, yc1, xc2, yc2, a(2, 2), c(2), ac1, ac2, t1, t2, t3
     logical :: ok
 
     l1 = 0.0_dp
     l2 = 0.0_dp
     lo = 0.0_dp
-    dsntz2_xa = 0.0_dp
-    dsntz2_ya = 0.0_dp
+    xa = 0.0_dp
+    ya = 0.0_dp
     ier = st_requirement
     if (.not. (kw3 > 1.0_dp .and. l3 > 0.0_dp)) return
     beta = pi*(kw3 - 1.0_dp)/(kw3 + 1.0_dp)
@@ -267,8 +267,6 @@ contains
     if (ier == st_singular) return                   ! the two lines are parallel
     xa = c(1)
     ya = c(2)
-    dsntz2_xa = xa
-    dsntz2_ya = ya
     ac1 = hypot(xc1 - xa, yc1 - ya)
     ac2 = hypot(xc2 - xa, yc2 - ya)
     l1 = 0.5_dp*(ac1 - ac2)
@@ -278,8 +276,8 @@ contains
       l1 = 0.0_dp
       l2 = 0.0_dp
       lo = 0.0_dp
-      dsntz2_xa = 0.0_dp
-      dsntz2_ya = 0.0_dp
+      xa = 0.0_dp
+      ya = 0.0_dp
       ier = st_requirement
       return
     end if

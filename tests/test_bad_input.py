@@ -32,9 +32,9 @@ def test_shapes_that_do_not_broadcast():
 
 
 def test_tables_need_two_points_and_matching_m():
-    with pytest.raises(ValueError, match="at least 2"):
+    with pytest.raises(ValueError, match="M = 1 is not one of the integers >= 2"):
         sarkp.DINTGR(1, 0.1, 2, [1.0])
-    with pytest.raises(ValueError, match="at least 2"):
+    with pytest.raises(ValueError, match="M = 1 is not one of the integers >= 2"):
         sarkp.DFRNCL(1, 0.1, [1.0])
     with pytest.raises(ValueError, match="M"):
         sarkp.DINTGR(4, 0.1, 2, [1.0, 2.0, 3.0])
@@ -60,9 +60,9 @@ def test_modes_switch_pi_and_restore():
     assert sarkp.get_mode() == "corrected"
     with sarkp.as_printed():
         assert sarkp.get_mode() == "as-printed"
-        assert sarkp.DUGOL(-1.0).DUGOL == pytest.approx(2 * 3.14159 - 1.0, abs=1e-15)
+        assert sarkp.DUGOL(-1.0) == pytest.approx(2 * 3.14159 - 1.0, abs=1e-15)
     assert sarkp.get_mode() == "corrected"
-    assert sarkp.DUGOL(-1.0).DUGOL == pytest.approx(2 * math.pi - 1.0, abs=1e-15)
+    assert sarkp.DUGOL(-1.0) == pytest.approx(2 * math.pi - 1.0, abs=1e-15)
 
 
 def test_nan_from_a_failed_step_passes_through_a_chain_with_on_error_nan():

@@ -1,5 +1,9 @@
 """The book's printed figures, from the package data, against the reproductions."""
 
+import subprocess
+import sys
+import tempfile
+
 import pytest
 
 import sarkp
@@ -69,3 +73,37 @@ def test_unknown_program_and_figure():
         book.program("IX.99")
     with pytest.raises(ValueError, match="no figure"):
         book.figure_program("999")
+
+
+def _sarkp_command():
+    return [sys.executable, "-m", "sarkp"]
+
+
+@pytest.mark.parametrize("args, message", [
+    (["book", "run", "IX.99"], "no book program 'IX.99'"),
+    (["book", "diff", "999"], "no printed figure '999'"),
+    (["book", "diff", "91"], "Fig. 91 is transcribed"),
+])
+def test_cli_user_mistakes_give_one_line_and_status_2(args, message):
+    done = subprocess.run(_sarkp_command() + args, capture_output=True, text=True,
+                          cwd=tempfile.gettempdir())
+    assert done.returncode == 2
+    assert done.stdout == "" and "Traceback" not in done.stderr
+    assert done.stderr.count("\n") == 1 and message in done.stderr
+
+
+def test_cli_closed_pipe_is_not_an_error():
+    """``sarkp book run IV.15 | head -0``: the reader has gone before the first line."""
+    proc = subprocess.Popen(_sarkp_command() + ["book", "run", "IV.15"],
+                            stdout=subprocess.PIPE, stderr=subprocess.PIPE,
+                            cwd=tempfile.gettempdir())
+    proc.stdout.close()                    # every write of the program now fails (EPIPE)
+    err = proc.stderr.read().decode()
+    assert proc.wait() == 0 and err == ""
+
+
+def test_cli_version_and_help():
+    done = subprocess.run(_sarkp_command() + ["--version"], capture_output=True, text=True)
+    assert done.returncode == 0 and done.stdout.strip() == f"sarkp {sarkp.__version__}"
+    done = subprocess.run(_sarkp_command() + ["--help"], capture_output=True, text=True)
+    assert "as printed by default" in " ".join(done.stdout.split())

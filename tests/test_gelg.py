@@ -39,9 +39,11 @@ def test_zero_matrix_gives_minus_one():
     assert GELG([1.0], [[0.0]], 1, 1, 1e-4).IER == -1
 
 
-@pytest.mark.parametrize("m", [0, -3])
-def test_m_below_one_gives_minus_one(m):
-    assert GELG([1.0], [[1.0]], m, 1, 1e-4).IER == -1
+@pytest.mark.parametrize("m", [0, -3, 2.5, float("nan"), float("inf")])
+def test_m_out_of_range_is_named(m):
+    """SSP returned IER = -1 for M < 1; here M is checked against the arrays first."""
+    with pytest.raises(ValueError, match="GELG: M = "):
+        GELG([1.0], [[1.0]], m, 1, 1e-4)
 
 
 @pytest.mark.parametrize("m, rank", [(2, 1), (3, 1), (3, 2), (5, 3), (8, 6)])
@@ -84,3 +86,39 @@ def test_bad_input():
     with pytest.raises(ValueError, match="shape"):
         GELG([1.0, 1.0], [[1.0, 0.0]], 2, 1, 1e-4)
     assert issubclass(sarkp.SingularError, sarkp.SarkpError)
+
+
+def _systems(rng, n):
+    """2x2 systems of every kind: random over 200 decades of scale (a few overflow or
+    underflow), nearly singular, exactly singular, with zeros and with ties among the
+    largest elements."""
+    scale = 10.0 ** rng.integers(-150, 150, (n, 1, 1))
+    a = rng.standard_normal((n, 2, 2)) * scale
+    c = rng.standard_normal((n, 2)) * scale[:, 0] * 10.0 ** rng.integers(-20, 20, (n, 1))
+    k = n // 5
+    a[:k, 1] = 2.0 * a[:k, 0]                                             # nearly singular
+    a[:k, 1, 1] *= 1 + 10.0 ** rng.integers(-17, -3, k)
+    a[k:2 * k, 1] = 2.0 * a[k:2 * k, 0]                                   # singular
+    a[2 * k:3 * k][rng.random((k, 2, 2)) < 0.4] = 0.0                    # zeros
+    a[3 * k:4 * k] = rng.integers(-2, 3, (k, 2, 2))                      # ties
+    c[3 * k:4 * k] = rng.integers(-2, 3, (k, 2))
+    return a, c
+
+
+def test_two_by_two_path_is_bit_for_bit_gelg():
+    """gelg2, the 2x2 GELG every group solves, written out without LAPACK calls: the same
+    solutions, bit for bit, and the same IER as GELG over LAPACK DGETC2/DGESC2."""
+    rng = np.random.default_rng(7)
+    a, c = _systems(rng, 20000)
+    kinds = {0: 0, 3: 0, 2: 0}
+    for k in range(len(a)):
+        aa, cc = np.asfortranarray(a[k]), c[k].copy()
+        st = _sarkp.gelg_mod.gelg2(aa, cc)
+        ref = GELG(c[k], a[k], 2, 1, 1e-4)
+        if ref.IER < 0 or not np.all(np.isfinite(ref.R)):
+            assert st == 2 and np.all(cc == 0.0), (a[k], c[k])
+        else:
+            assert st == (3 if ref.IER > 0 else 0), (a[k], c[k], ref)
+            assert cc.tobytes() == ref.R.tobytes(), (a[k], c[k], cc, ref.R)
+        kinds[st] += 1
+    assert min(kinds.values()) > 1000          # every outcome was exercised

@@ -327,7 +327,7 @@ def test_kind2_velocities_and_accelerations_are_derivatives(seed):
     aa = a.acc(0.0)
     abm = polar(g.point_acc(bb[4], 0.0))
     w = g.omega(0.0)
-    abk, bvk = 2 * abs(w) * v.VBBM[4], sarkp.DUGL3(v.ALBBM[4], math.pi / 2, w).DUGL3
+    abk, bvk = 2 * abs(w) * v.VBBM[4], sarkp.DUGL3(v.ALBBM[4], math.pi / 2, w)
     u = K.DUSKR2(aa[0], aa[1], abm[0], abm[1], abk, bvk, rz2, r.FI2[4], v.W2[4], fim[4])
     A = max(abs(u.AB), S * max(abs(a.w), 1.0), 1e-3)
     assert close(ddt(vb, h), vec(u.AB, u.BB), A, 1e-8)
@@ -362,7 +362,7 @@ def test_dknma2_equals_chain(seed, p, analog):
     if analog == 1.0:
         assert k.AB == k.E2 == 0.0
         return
-    abk, bbk = 2 * abs(wm) * v.VBBM, sarkp.DUGL3(v.ALBBM, math.pi / 2, wm).DUGL3
+    abk, bbk = 2 * abs(wm) * v.VBBM, sarkp.DUGL3(v.ALBBM, math.pi / 2, wm)
     assert close([k.ABK, k.ABAN], [abk, v.W2**2 * rz2], V, 1e-13)
     u = K.DUSKR2(aa, ba, abm, bbm, abk, bbk, rz2, r.FI2, v.W2, g.f0)
     A = max(aa, abm, abk, u.AB, 1.0)
@@ -433,7 +433,7 @@ def test_kind3_velocities_and_accelerations_are_derivatives(seed):
     # accelerations
     aa, ac = a.acc(0.0), c.acc(0.0)
     w = v.W3[4]
-    aak, bak = 2 * abs(w) * v.VA3A[4], sarkp.DUGL3(v.ALA3A[4], math.pi / 2, w).DUGL3
+    aak, bak = 2 * abs(w) * v.VA3A[4], sarkp.DUGL3(v.ALA3A[4], math.pi / 2, w)
     u = K.DUSKR3(aa[0], aa[1], ac[0], ac[1], r.FI3[4], w, r.RZAC[4], r.FICA[4], aak, bak)
     A = max(abs(u.AA3), S * max(abs(a.w), abs(c.w), 1.0), 1e-3)
     assert close(ddt(v.W3, h), u.E3, A / r.RZAC[4], 1e-8)
@@ -469,7 +469,7 @@ def test_dknma3_equals_chain(seed, p, analog):
     if analog == 1.0:
         assert k.AA3 == k.E3 == 0.0
         return
-    aak, bak = 2 * abs(v.W3) * v.VA3A, sarkp.DUGL3(v.ALA3A, math.pi / 2, v.W3).DUGL3
+    aak, bak = 2 * abs(v.W3) * v.VA3A, sarkp.DUGL3(v.ALA3A, math.pi / 2, v.W3)
     u = K.DUSKR3(aa, ba, ac, bc, r.FI3, v.W3, r.RZAC, r.FICA, aak, bak)
     A = max(aa, ac, aak, u.AA3, 1.0)
     assert close([k.AAK, k.AAR, k.AACT, k.AA3, k.E3 * r.RZAC],
@@ -515,8 +515,8 @@ def test_kind4_positions_velocities_accelerations(seed):
     assert close(n.point_vel(bb[4], 0.0) + vec(v.VBBN[4], v.ALBBN[4]), vb[4], S, 1e-12)
     wm, wn = m.omega(0.0), n.omega(0.0)
     u = K.DUSKR4(r.RVBM[4], r.FIVBM[4], fm[4], r.RVBN[4], r.FIVBN[4], fn[4], wm, m.eps, wn,
-                 n.eps, 2 * abs(wm) * v.VBBM[4], sarkp.DUGL3(v.ALBBM[4], math.pi / 2, wm).DUGL3,
-                 2 * abs(wn) * v.VBBN[4], sarkp.DUGL3(v.ALBBN[4], math.pi / 2, wn).DUGL3)
+                 n.eps, 2 * abs(wm) * v.VBBM[4], sarkp.DUGL3(v.ALBBM[4], math.pi / 2, wm),
+                 2 * abs(wn) * v.VBBN[4], sarkp.DUGL3(v.ALBBN[4], math.pi / 2, wn))
     A = max(abs(u.AB), S, 1e-2)
     assert close(ddt(vb, h), vec(u.AB, u.BB), A, 1e-8)
 
@@ -539,8 +539,8 @@ def test_dknma4_equals_chain(seed, analog):
     if analog == 1.0:
         assert k.AB == 0.0
         return
-    ck = (2 * abs(wm) * v.VBBM, sarkp.DUGL3(v.ALBBM, math.pi / 2, wm).DUGL3,
-          2 * abs(wn) * v.VBBN, sarkp.DUGL3(v.ALBBN, math.pi / 2, wn).DUGL3)
+    ck = (2 * abs(wm) * v.VBBM, sarkp.DUGL3(v.ALBBM, math.pi / 2, wm),
+          2 * abs(wn) * v.VBBN, sarkp.DUGL3(v.ALBBN, math.pi / 2, wn))
     u = K.DUSKR4(r.RVBM, r.FIVBM, m.f0, r.RVBN, r.FIVBN, n.f0, wm, em, wn, en, *ck)
     A = max(u.AB, 1.0)
     assert close([k.AB2K, k.AB3K, k.AB2R, k.AB3R, k.AB], [ck[0], ck[2], u.ABBMR, u.ABBNR, u.AB],
@@ -590,8 +590,8 @@ def test_kind5_positions_velocities_accelerations(seed):
     S = max(v.VC2[4], c.r * abs(c.w), 1e-2)
     assert close(ddt(p2, h), vec(v.VC2[4], v.ALC2[4]), S, 1e-8)
     w = m.omega(0.0)
-    ck = (2 * abs(w) * v.VC2CM[4], sarkp.DUGL3(v.ALC2CM[4], math.pi / 2, w).DUGL3,
-          2 * abs(w) * v.VC2C3[4], sarkp.DUGL3(v.ALC2C3[4], math.pi / 2, w).DUGL3)
+    ck = (2 * abs(w) * v.VC2CM[4], sarkp.DUGL3(v.ALC2CM[4], math.pi / 2, w),
+          2 * abs(w) * v.VC2C3[4], sarkp.DUGL3(v.ALC2C3[4], math.pi / 2, w))
     ac = c.acc(0.0)
     u = K.DUSKR5(pc[0, 4], pc[1, 4], m.v[0], m.v[1], fm[4], w, m.eps, t2, ac[0], ac[1], *ck)
     A = max(u.AC2, S, 1e-2)
@@ -623,8 +623,8 @@ def test_dknma5_equals_chain(seed, analog):
     if analog == 1.0:
         assert k.AC == 0.0
         return
-    ck = (2 * abs(wm) * v.VC2CM, sarkp.DUGL3(v.ALC2CM, math.pi / 2, wm).DUGL3,
-          2 * abs(wm) * v.VC2C3, sarkp.DUGL3(v.ALC2C3, math.pi / 2, wm).DUGL3)
+    ck = (2 * abs(wm) * v.VC2CM, sarkp.DUGL3(v.ALC2CM, math.pi / 2, wm),
+          2 * abs(wm) * v.VC2C3, sarkp.DUGL3(v.ALC2C3, math.pi / 2, wm))
     u = K.DUSKR5(xc, yc, m.v[0], m.v[1], m.f0, wm, em, t2, ac, bc, *ck)
     A = max(u.AC2, ac, 1.0)
     assert close([k.AC2C3R, k.AC2CMR, k.AC], [u.AC2C3R, u.AC2CMR, u.AC2], A, 1e-13)
@@ -670,10 +670,10 @@ def test_dead_centre_raises():
 
 
 def test_errors_never_nan_in_fortran():
-    f = sarkp._sarkp.kinematics
-    out = f.dprm1(0.0, 0.0, 3.0, 0.0, 1.0, 1.0, 1.0, 1.0)
+    f = sarkp._sarkp.drv_kinematics
+    out = f.dprm1_1(0, 0.0, 0.0, 3.0, 0.0, 1.0, 1.0, 1.0, 1.0)
     assert out[-1] == sarkp.library.ST_ASSEMBLY and all(x == 0.0 for x in out[:-1])
-    out = f.dskor1(1.0, 0.0, 1.0, math.pi, 1.0, 0.5, 0.0, 0.0, 1.0)
+    out = f.dskor1_1(0, 1.0, 0.0, 1.0, math.pi, 1.0, 0.5, 0.0, 0.0, 1.0)
     assert out[-1] == sarkp.library.ST_SINGULAR and all(x == 0.0 for x in out[:-1])
 
 
@@ -747,7 +747,7 @@ def _program_x():
     """Chapter 10's program X, kinematic part (L7499-7531), with the fitted link sizes."""
     roa, rab, roc, rcb, rde, h5, delta, w1 = (0.16646893, 2.33535352, 2.09023145, 0.5787882,
                                               0.7012536, 0.64, 0.698, 3.0)
-    pi = float(sarkp._sarkp.prmtr.pi)
+    pi = sarkp.modes.book_pi()
     pid2 = pi / 2
     f = np.arange(37) * 2 * pi / 36
     xc, yc = -roc * math.sin(delta), roc * math.cos(delta)
@@ -755,11 +755,11 @@ def _program_x():
     xd, yd = xc + rcb * np.cos(p1.FI3 + pi), yc + rcb * np.sin(p1.FI3 + pi)
     p2 = K.DPRM2(xd, yd, 0.0, h5 + yc, 0.0, rde, 0.0, pid2)
     v1 = K.DSKOR1(rab, p1.FI2, rcb, p1.FI3, w1 * roa, f + pid2, 0.0, 0.0)
-    vd, ald = rcb * np.abs(v1.W3), sarkp.DUGL3(p1.FI3 + pi, pid2, v1.W3).DUGL3
+    vd, ald = rcb * np.abs(v1.W3), sarkp.DUGL3(p1.FI3 + pi, pid2, v1.W3)
     v2 = K.DSKOR2(vd, ald, 0.0, 0.0, rde, p2.FI2, 0.0)
     a1 = K.DUSKR1(w1**2 * roa, f + pi, 0.0, 0.0, rab, p1.FI2, rcb, p1.FI3, v1.W2, v1.W3)
     ad = rcb * np.sqrt(v1.W3**4 + a1.E3**2)
-    bd = sarkp.DUGL3(p1.FI3 + pi, pi - np.arctan(np.abs(a1.E3) / v1.W3**2), a1.E3).DUGL3
+    bd = sarkp.DUGL3(p1.FI3 + pi, pi - np.arctan(np.abs(a1.E3) / v1.W3**2), a1.E3)
     # L7530 passes W2 where W4 belongs (program X's error, kept: it made the figure)
     a2 = K.DUSKR2(ad, bd, 0.0, 0.0, 0.0, 0.0, rde, p2.FI2, v1.W2, 0.0)
     return dict(FI1=f, FI2=p1.FI2, FICB=p1.FI3, XE=p2.XB, FIDE=p2.FI2, XB=p1.XB, YB=p1.YB,
@@ -804,8 +804,8 @@ def test_dknma5_guide_acceleration_with_zero_epsilon():
     # E-DKNMA5-4: EM = 0 must give the centripetal direction (the book sets BCM = 0)
     k = K.DKNMA5(0, 0, 0.3, 1.0, 0.5, 0, 1.2, 0, 0.0, 0.0, 2.0, 0.0, 1.0, 0.4, 3.0, 1.0)
     v = K.DSKOR5(1.0, 0.5, 0.0, 0.0, 0.3, 1.2, 2.0, 1.0, 0.4)
-    ck = (4 * v.VC2CM, sarkp.DUGL3(v.ALC2CM, math.pi / 2, 2.0).DUGL3,
-          4 * v.VC2C3, sarkp.DUGL3(v.ALC2C3, math.pi / 2, 2.0).DUGL3)
+    ck = (4 * v.VC2CM, sarkp.DUGL3(v.ALC2CM, math.pi / 2, 2.0),
+          4 * v.VC2C3, sarkp.DUGL3(v.ALC2C3, math.pi / 2, 2.0))
     u = K.DUSKR5(1.0, 0.5, 0.0, 0.0, 0.3, 2.0, 0.0, 1.2, 3.0, 1.0, *ck)
     assert k.AC == pytest.approx(u.AC2, rel=1e-13)
     assert angdiff(k.BC, u.BC2) == pytest.approx(0.0, abs=1e-12)

@@ -20,7 +20,8 @@ from hypothesis import strategies as st
 
 import sarkp
 from sarkp import RequirementError, SarkpError, SingularError
-from sarkp.synthesis import DSNTZ1, DSNTZ2, DSNTZ3, DSNTZK, DSNTZR, dsntz2_pivot
+from sarkp.book import load_figure
+from sarkp.synthesis import DSNTZ1, DSNTZ2, DSNTZ3, DSNTZK, DSNTZR
 
 TOL = 1e-9
 TWO_PI = 2.0 * math.pi
@@ -291,11 +292,15 @@ def test_dsntz3_truncation_switch_E_DSNTZ3_2():
     assert r == pytest.approx((0.4123106, 0.4247681, 0.5753025), abs=2e-7)
 
 
-def test_fig10_dsntz2_pivot():
+def test_fig10_dsntz2_pivot_in_the_result():
+    """The crank pivot the book prints (L1339-1341) comes back in the result."""
     r = DSNTZ2(1.5, math.pi / 6, 0.5, 0.75, math.pi / 18, math.pi / 3)
-    xa, ya = dsntz2_pivot()
-    assert (round(xa, 4), round(ya, 4)) == (0.1403, -0.1295)
-    assert r.LO == pytest.approx(math.hypot(0.75 - xa, ya), abs=1e-15)
+    printed = {c.column: c for c in load_figure("10").cells if c.row == "DSNTZ2"}
+    for name in ("XA", "YA"):
+        assert abs(getattr(r, name) - printed[name].value) <= printed[name].unit / 2
+    assert r.LO == pytest.approx(math.hypot(0.75 - r.XA, r.YA), abs=1e-15)
+    arrays = DSNTZ2([1.5, 1.6], math.pi / 6, 0.5, 0.75, math.pi / 18, math.pi / 3)
+    assert (float(arrays.XA[0]), float(arrays.YA[0])) == (r.XA, r.YA)
 
 
 def test_dsntz1_vertical_bisector_E_DSNTZ1_3():
@@ -504,7 +509,7 @@ def test_dsntz2_meets_its_requirements(kw3, fi3, l3, xd, gmin, dg):
     C1 = (xd + l3 * math.cos(fi3), l3 * math.sin(fi3))
     C2 = (xd + l3 * math.cos(fi3 + psi), l3 * math.sin(fi3 + psi))
     A = pivot_from(C1, C2, r.L1, r.L2, D, r.LO)
-    assert math.hypot(A[0] - dsntz2_pivot()[0], A[1] - dsntz2_pivot()[1]) < TOL
+    assert math.hypot(A[0] - r.XA, A[1] - r.YA) < TOL
     errs, fb, t1, t2 = check_crank_rocker(A, D, r.L1, r.L2, l3, C1, fi3, fi3 + psi, kw3)
     assert max(errs) < TOL, errs
     # transmission angle BCD: GMIN stretched out, GMAX folded

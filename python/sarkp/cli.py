@@ -4,29 +4,74 @@
     sarkp book run PROGRAM [--mode M]     a program's printout, in the book's layout
     sarkp book diff FIG|all [--mode M]    compare a reproduction with the printed figure
 
-Book programs run as printed by default (``--mode as-printed``).
+Book programs run as printed by default (``--mode as-printed``: the book's PI = 3.14159
+and the author errors its printed figures depend on); ``--mode corrected`` runs them with
+every error fixed.  A mistake on the command line gives a one-line message and exit
+status 2.
 """
 
 from __future__ import annotations
 
 import argparse
+import os
 import sys
+from importlib import resources
 
 from . import book, modes
 from .book import figures
 
 
+def _version() -> str:
+    from . import __version__
+    return __version__
+
+
 def _diff(number: str, mode: str) -> tuple[str, int, int]:
+    program = _figure_program(number)
     figure = figures.load_figure(number)
-    program = book.figure_program(number)
     with modes.mode(mode):
         computed = program.cells()
     return figures.report(figure, figures.compare(figure, computed), mode,
                           getattr(program, "CORRECTED_DIFFERENCES", None))
 
 
+class UsageError(Exception):
+    """A mistake of the user's on the command line (exit status 2)."""
+
+
+def _figure_program(number: str):
+    if number not in book.FIGURES:
+        data = resources.files("sarkp.book") / "data" / f"fig{number}.csv"
+        if data.is_file():
+            raise UsageError(f"Fig. {number} is transcribed (sarkp/book/data/fig{number}.csv) "
+                             f"but no book program reproduces it yet; figures with a diff: "
+                             f"{', '.join(book.FIGURES)}")
+        raise UsageError(f"no printed figure {number!r}; figures with a diff: "
+                         f"{', '.join(book.FIGURES)}")
+    return book.figure_program(number)
+
+
 def main(argv=None) -> int:
-    parser = argparse.ArgumentParser(prog="sarkp", description=__doc__.splitlines()[0])
+    """Run the command line; return the exit status."""
+    try:
+        return _main(argv)
+    except UsageError as exc:
+        print(f"sarkp: error: {exc}", file=sys.stderr)
+        return 2
+    except BrokenPipeError:
+        # the reader went away (``sarkp book run II.13 | head``): not an error
+        devnull = os.open(os.devnull, os.O_WRONLY)
+        os.dup2(devnull, sys.stdout.fileno())
+        return 0
+
+
+def _main(argv=None) -> int:
+    parser = argparse.ArgumentParser(
+        prog="sarkp", description=__doc__.split("\n\n")[0].splitlines()[0],
+        epilog="Book programs run as printed by default (--mode as-printed: PI = 3.14159 "
+               "and the author errors the printed figures depend on); --mode corrected "
+               "fixes every error.")
+    parser.add_argument("--version", action="version", version=f"sarkp {_version()}")
     sub = parser.add_subparsers(dest="command", required=True)
     book_parser = sub.add_parser("book", help="the book's programs and printed figures")
     book_sub = book_parser.add_subparsers(dest="action", required=True)
@@ -36,7 +81,9 @@ def main(argv=None) -> int:
     diff = book_sub.add_parser("diff", help="compare a reproduction with a printed figure")
     diff.add_argument("figure", help="figure number, e.g. 4, or 'all'")
     for p in (run, diff):
-        p.add_argument("--mode", choices=modes.MODES, default="as-printed")
+        p.add_argument("--mode", choices=modes.MODES, default="as-printed",
+                       help="as-printed (default): the book's arithmetic and errors; "
+                            "corrected: every error fixed")
     args = parser.parse_args(argv)
 
     if args.action == "list":
@@ -46,11 +93,16 @@ def main(argv=None) -> int:
             print(f"{listing:8s} {prog.TITLE} ({figs})")
         return 0
     if args.action == "run":
+        if args.program.upper().replace("П", "II") not in book.PROGRAMS:
+            raise UsageError(f"no book program {args.program!r}; known: "
+                             f"{', '.join(book.PROGRAMS)}")
         prog = book.program(args.program)
         with modes.mode(args.mode):
             print(prog.render())
         return 0
     numbers = list(book.FIGURES) if args.figure == "all" else [args.figure]
+    for number in numbers:
+        _figure_program(number)
     total_match = total = 0
     for number in numbers:
         text, matching, compared = _diff(number, args.mode)

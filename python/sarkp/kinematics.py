@@ -28,13 +28,9 @@ angular velocity) when the inputs are analogues.
 
 from __future__ import annotations
 
-import numpy as np
 
-from . import _sarkp
 from .library import book_routine
 
-_f = _sarkp.kinematics
-_s = _sarkp.sweeps_kinematics
 
 __all__ = ["DPRM1", "DPRM2", "DPRM3", "DPRM4", "DPRM5",
            "DSKOR1", "DSKOR2", "DSKOR3", "DSKOR4", "DSKOR5",
@@ -64,24 +60,6 @@ def _raises(assembly=None, singular=None, warns=True):
     return text + "\n"
 
 
-def _analog_sweep(sweep, n_in, acc_from):
-    """Adapt a DKNMA sweep, whose ANALOG is a scalar, to the broadcast array ANALOG.
-
-    ``n_in`` array inputs precede ANALOG; outputs from index ``acc_from`` on are the
-    accelerations, which ANALOG = 1 leaves at 0 (not computed)."""
-    def call(*args):
-        arrays, analog = args[:n_in], np.asarray(args[n_in])
-        values = np.unique(analog)
-        if values.size <= 1:
-            return sweep(*arrays, float(values[0]) if values.size else 0.0)
-        out = [np.array(o) for o in sweep(*arrays, 0.0)]   # mixed: compute all, then blank
-        skip = analog == 1.0
-        for o in out[acc_from:-1]:
-            o[skip] = 0.0
-        return tuple(out)
-    return call
-
-
 _ANALOG_DOC = """    ANALOG : float or array_like
         1.0: stop after the velocities (the book's way of skipping the acceleration
         work, e.g. for velocity analogues); the acceleration outputs are then 0.
@@ -95,7 +73,7 @@ DPRM1 = book_routine(
     "DPRM1", listing="IV.1", lines="L1479-1505",
     inputs=("XA", "YA", "XC", "YC", "RZ2", "RZ3", "P", "AAA"),
     outputs=("FI2", "FI3", "XB", "YB"),
-    scalar=_f.dprm1, sweep=_s.dprm1_sweep, lengths=("RZ2", "RZ3"), integers=_P,
+    chapter="kinematics", lengths=("RZ2", "RZ3"), integers=_P,
     doc="""Positions of a kind-1 group (RRR): the internal joint B of links AB and CB.
 
     Listing IV.1 (L1479-1505), operator function PRM1 (Table 7, Fig. 14).
@@ -128,7 +106,7 @@ DPRM2 = book_routine(
     "DPRM2", listing="IV.2", lines="L1531-1558",
     inputs=("XA", "YA", "XK", "YK", "FIM", "RZ2", "RZ3", "T", "AAA"),
     outputs=("XB", "YB", "FI2"),
-    scalar=_f.dprm2, sweep=_s.dprm2_sweep, lengths=("RZ2",), nonnegative=("RZ3",),
+    chapter="kinematics", lengths=("RZ2",), nonnegative=("RZ3",),
     doc="""Positions of a kind-2 group (RRP): link AB with a slider B on a guide.
 
     Listing IV.2 (L1531-1558), operator function PRM2 (Table 8, Fig. 15).  The guide
@@ -166,7 +144,7 @@ DPRM3 = book_routine(
     "DPRM3", listing="IV.3", lines="L1577-1598",
     inputs=("XA", "YA", "XC", "YC", "RZ2", "T", "P", "AAA"),
     outputs=("RZAC", "FI3", "FICA"),
-    scalar=_f.dprm3, sweep=_s.dprm3_sweep, nonnegative=("RZ2",), integers=_P,
+    chapter="kinematics", nonnegative=("RZ2",), integers=_P,
     doc="""Positions of a kind-3 group (RPR, slotted lever): direction of link 3.
 
     Listing IV.3 (L1577-1598), operator function PRM3 (Table 9, Fig. 16).  The slider 2
@@ -201,7 +179,7 @@ DPRM4 = book_routine(
     inputs=("XVM", "YVM", "XA", "YA", "FIM", "XVN", "YVN", "XC", "YC", "FIN",
             "RZ2", "T2", "RZ3", "T3", "AAA"),
     outputs=("XB", "YB", "RVBM", "FIVBM", "RVBN", "FIVBN"),
-    scalar=_f.dprm4, sweep=_s.dprm4_sweep, nonnegative=("RZ2", "RZ3"),
+    chapter="kinematics", nonnegative=("RZ2", "RZ3"),
     doc="""Positions of a kind-4 group (PRP): the joint B of two sliders on two guides.
 
     Listing IV.4 (L1622-1657), operator function PRM4 (Table 10, Fig. 17).  Corrected:
@@ -237,8 +215,7 @@ DPRM5 = book_routine(
     "DPRM5", listing="extension (none in the book, L1659)", lines="L1659",
     inputs=("XA", "YA", "FIM", "XC", "YC", "T2", "AAA"),
     outputs=("XK", "YK", "S2", "S3"),
-    scalar=_f.dprm5, sweep=_s.dprm5_sweep,
-    doc="""Positions of a kind-5 group (RPP) -- an extension, not a book routine.
+    chapter="kinematics", doc="""Positions of a kind-5 group (RPP) -- an extension, not a book routine.
 
     The book prints no position routine for kind 5: "the coordinates of the joint centre
     C and of the guide fully determine the linear and angular coordinates of the links"
@@ -274,7 +251,7 @@ DSKOR1 = book_routine(
     "DSKOR1", listing="IV.5", lines="L1692-1719",
     inputs=("RZ2", "FI2", "RZ3", "FI3", "VA", "ALA", "VC", "ALC", "AAA"),
     outputs=("VBA", "ALBA", "VBC", "ALBC", "VB", "ALB", "W2", "W3"),
-    scalar=_f.dskor1, sweep=_s.dskor1_sweep, lengths=("RZ2", "RZ3"),
+    chapter="kinematics", lengths=("RZ2", "RZ3"),
     doc="""Velocities of a kind-1 group (RRR): ``v_A + v_BA = v_C + v_BC``.
 
     Listing IV.5 (L1692-1719), operator function SKOR1 (Table 11, Fig. 19).
@@ -304,7 +281,7 @@ DSKOR2 = book_routine(
     "DSKOR2", listing="IV.6", lines="L1740-1774",
     inputs=("VA", "ALA", "VBM", "ALBM", "RZ2", "FI2", "FIM", "AAA"),
     outputs=("VBA", "ALBA", "VBBM", "ALBBM", "VB", "ALB", "W2"),
-    scalar=_f.dskor2, sweep=_s.dskor2_sweep, lengths=("RZ2",),
+    chapter="kinematics", lengths=("RZ2",),
     doc="""Velocities of a kind-2 group (RRP): ``v_A + v_BA = v_BM + v_BBM``.
 
     Listing IV.6 (L1740-1774), operator function SKOR2 (Table 12, Fig. 20).  The printed
@@ -334,8 +311,7 @@ DSKOR3 = book_routine(
     "DSKOR3", listing="IV.7", lines="L1805-1854",
     inputs=("XA", "YA", "XC", "YC", "VA", "ALA", "VC", "ALC", "FI3", "AAA"),
     outputs=("VA3A", "ALA3A", "VA3C", "ALA3C", "VA3", "ALA3", "W3"),
-    scalar=_f.dskor3, sweep=_s.dskor3_sweep,
-    doc="""Velocities of a kind-3 group (RPR): ``v_A3 = v_A + v_A3A = v_C + v_A3C``.
+    chapter="kinematics", doc="""Velocities of a kind-3 group (RPR): ``v_A3 = v_A + v_A3A = v_C + v_A3C``.
 
     Listing IV.7 (L1805-1854), operator function SKOR3 (Table 13, Fig. 21).  A3 is the
     point of link 3 that coincides with A.
@@ -365,7 +341,7 @@ DSKOR4 = book_routine(
     "DSKOR4", listing="IV.8", lines="L1879-1918",
     inputs=("RVBM", "FIVBM", "FIM", "RVBN", "FIVBN", "FIN", "WM", "WN", "AAA"),
     outputs=("VBBM", "ALBBM", "VBBN", "ALBBN", "VB", "ALB"),
-    scalar=_f.dskor4, sweep=_s.dskor4_sweep, nonnegative=("RVBM", "RVBN"),
+    chapter="kinematics", nonnegative=("RVBM", "RVBN"),
     doc="""Velocities of a kind-4 group (PRP): ``v_BM + v_BBM = v_BN + v_BBN``.
 
     Listing IV.8 (L1879-1918), operator function SKOR4 (Table 14, Fig. 22).  Corrected:
@@ -395,8 +371,7 @@ DSKOR5 = book_routine(
     "DSKOR5", listing="IV.9", lines="L1947-1978",
     inputs=("XC3", "YC3", "XVM", "YVM", "FIM", "T2", "WM", "VC3", "ALC3", "AAA"),
     outputs=("VC2C3", "ALC2C3", "VC2CM", "ALC2CM", "VC2", "ALC2"),
-    scalar=_f.dskor5, sweep=_s.dskor5_sweep,
-    doc="""Velocities of a kind-5 group (RPP): ``v_C2 = v_C3 + v_C2C3 = v_CM + v_C2CM``.
+    chapter="kinematics", doc="""Velocities of a kind-5 group (RPP): ``v_C2 = v_C3 + v_C2C3 = v_CM + v_C2CM``.
 
     Listing IV.9 (L1947-1978), operator function SKOR5 (Table 15, Fig. 23).  C2 is the
     point of link 2 at C; links M, 2 and 3 all turn with WM.
@@ -433,7 +408,7 @@ DUSKR1 = book_routine(
     "DUSKR1", listing="IV.10", lines="L2017-2051",
     inputs=("AA", "BA", "AC", "BC", "RZ2", "FI2", "RZ3", "FI3", "W2", "W3", "AAA"),
     outputs=("ABAT", "BBAT", "ABCT", "BBCT", "AB", "BB", "E2", "E3"),
-    scalar=_f.duskr1, sweep=_s.duskr1_sweep, lengths=("RZ2", "RZ3"),
+    chapter="kinematics", lengths=("RZ2", "RZ3"),
     doc="""Accelerations of a kind-1 group (RRR).
 
     Listing IV.10 (L2017-2051), operator function USKR1 (Table 16, Fig. 24):
@@ -467,7 +442,7 @@ DUSKR2 = book_routine(
     "DUSKR2", listing="IV.11", lines="L2077-2119",
     inputs=("AA", "BA", "ABM", "BVM", "ABK", "BVK", "RZ2", "FI2", "W2", "FIM", "AAA"),
     outputs=("ABAT", "VBAT", "ABVM", "BVBM", "E2", "AB", "BB"),
-    scalar=_f.duskr2, sweep=_s.duskr2_sweep, lengths=("RZ2",),
+    chapter="kinematics", lengths=("RZ2",),
     doc="""Accelerations of a kind-2 group (RRP).
 
     Listing IV.11 (L2077-2119), operator function USKR2 (Table 17, Fig. 25):
@@ -504,7 +479,7 @@ DUSKR3 = book_routine(
     "DUSKR3", listing="IV.12", lines="L2150-2184",
     inputs=("AA", "BA", "AC", "BC", "FI3", "W3", "RZAC", "FICA", "AA3AK", "BA3AK", "AAA"),
     outputs=("AA3AR", "BA3AR", "AA3CT", "BA3CT", "E3", "AA3", "BA3"),
-    scalar=_f.duskr3, sweep=_s.duskr3_sweep, lengths=("RZAC",),
+    chapter="kinematics", lengths=("RZAC",),
     doc="""Accelerations of a kind-3 group (RPR).
 
     Listing IV.12 (L2150-2184), operator function USKR3 (Table 18, Fig. 26):
@@ -537,7 +512,7 @@ DUSKR4 = book_routine(
     inputs=("RVBM", "FIVBM", "FIM", "RVBN", "FIVBN", "FIN", "WM", "EM", "WN", "EN",
             "ABBMK", "BBBMK", "ABBNK", "BBBNK", "AAA"),
     outputs=("ABBMR", "BBBMR", "ABBNR", "BBBNR", "AB", "BB"),
-    scalar=_f.duskr4, sweep=_s.duskr4_sweep, nonnegative=("RVBM", "RVBN"),
+    chapter="kinematics", nonnegative=("RVBM", "RVBN"),
     doc="""Accelerations of a kind-4 group (PRP).
 
     Listing IV.13 (L2221-2275), operator function USKR4 (Table 19, Fig. 27):
@@ -574,8 +549,7 @@ DUSKR5 = book_routine(
     inputs=("XC3", "YC3", "XVM", "YVM", "FIM", "WM", "EM", "T2", "AC3", "BC3",
             "AC2MK", "BC2MK", "AC23K", "BC23K", "AAA"),
     outputs=("AC2C3R", "BC2C3R", "AC2CMR", "BC2CMR", "AC2", "BC2"),
-    scalar=_f.duskr5, sweep=_s.duskr5_sweep,
-    doc="""Accelerations of a kind-5 group (RPP).
+    chapter="kinematics", doc="""Accelerations of a kind-5 group (RPP).
 
     Listing IV.14 (L2308-2378), operator function USKR5 (Table 20, Fig. 28):
     ``a_C2 = a_C3 + a^k_23 + a^r_23 = a_CM + a^k_2M + a^r_2M``.  Corrected: the stray
@@ -623,8 +597,7 @@ _K1_OUT = ("XB", "YB", "FI2", "FI3", "VBA", "ALBA", "VBC", "ALBC", "VB", "ALB", 
 DKNMA1 = book_routine(
     "DKNMA1", listing="IV.16", lines="L2553-2658",
     inputs=_K1_IN, outputs=_K1_OUT,
-    scalar=_f.dknma1, sweep=_analog_sweep(_s.dknma1_sweep, 15, _K1_OUT.index("ABCN")),
-    lengths=("RZ2", "RZ3"), integers=_P, defaults={"ANALOG": 0.0},
+    chapter="kinematics", lengths=("RZ2", "RZ3"), integers=_P, defaults={"ANALOG": 0.0},
     doc="""Kind-1 group (RRR): positions, velocities and accelerations in one call.
 
     Listing IV.16 (L2553-2658), operator function KNMA1 of textbook [1] (L2551).  The
@@ -662,8 +635,7 @@ _K2_OUT = ("XB", "YB", "FI2", "VBA", "ALBA", "VBBM", "ALBBM", "VB", "ALB", "W2",
 DKNMA2 = book_routine(
     "DKNMA2", listing="IV.17", lines="L2660-2747",
     inputs=_K2_IN, outputs=_K2_OUT,
-    scalar=_f.dknma2, sweep=_analog_sweep(_s.dknma2_sweep, 18, _K2_OUT.index("ABAN")),
-    lengths=("RZ2",), nonnegative=("RZ3",), integers=_P, defaults={"ANALOG": 0.0},
+    chapter="kinematics", lengths=("RZ2",), nonnegative=("RZ3",), integers=_P, defaults={"ANALOG": 0.0},
     doc="""Kind-2 group (RRP): positions, velocities and accelerations in one call.
 
     Listing IV.17 (L2660-2747), operator function KNMA2 of textbook [1].  Corrected: the
@@ -712,8 +684,7 @@ _K3_OUT = ("XB", "YB", "RZBC", "FI3", "VAR", "ALAR", "VAC", "ALAC", "W3", "VA3",
 DKNMA3 = book_routine(
     "DKNMA3", listing="IV.18", lines="L2749-2829",
     inputs=_K3_IN, outputs=_K3_OUT,
-    scalar=_f.dknma3, sweep=_analog_sweep(_s.dknma3_sweep, 15, _K3_OUT.index("AAK")),
-    nonnegative=("RZ2",), integers=_P, defaults={"ANALOG": 0.0},
+    chapter="kinematics", nonnegative=("RZ2",), integers=_P, defaults={"ANALOG": 0.0},
     doc="""Kind-3 group (RPR, slotted lever): positions, velocities, accelerations.
 
     Listing IV.18 (L2749-2829), operator function KNMA3 of textbook [1].  The printed
@@ -753,8 +724,7 @@ _K4_OUT = ("XB", "YB", "VB2R", "ALB2R", "VB3R", "ALB3R", "VB", "ALB", "AB2K", "B
 DKNMA4 = book_routine(
     "DKNMA4", listing="IV.19", lines="L2831-2929",
     inputs=_K4_IN, outputs=_K4_OUT,
-    scalar=_f.dknma4, sweep=_analog_sweep(_s.dknma4_sweep, 14, _K4_OUT.index("AB2K")),
-    nonnegative=("RZ2", "RZ3"), defaults={"ANALOG": 0.0},
+    chapter="kinematics", nonnegative=("RZ2", "RZ3"), defaults={"ANALOG": 0.0},
     doc="""Kind-4 group (PRP): positions, velocities and accelerations in one call.
 
     Listing IV.19 (L2831-2929), operator function KNMA4 of textbook [1].  The guide links
@@ -790,8 +760,7 @@ _K5_OUT = ("VC2C3", "ALC2C3", "VC2CM", "ALC2CM", "VC", "ALC", "AC2C3K", "BC2C3K"
 DKNMA5 = book_routine(
     "DKNMA5", listing="IV.20", lines="L2931-3002",
     inputs=_K5_IN, outputs=_K5_OUT,
-    scalar=_f.dknma5, sweep=_analog_sweep(_s.dknma5_sweep, 16, _K5_OUT.index("AC2C3K")),
-    defaults={"ANALOG": 0.0},
+    chapter="kinematics", defaults={"ANALOG": 0.0},
     doc="""Kind-5 group (RPP): velocities and accelerations in one call (no positions).
 
     Listing IV.20 (L2931-3002), operator function KNMA5 of textbook [1].  Corrected: the

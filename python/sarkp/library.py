@@ -1,23 +1,38 @@
 """The thin layer between Python and the Fortran routines.
 
-Each book routine is declared once, with :func:`book_routine`: its book name, its inputs
-in the book's order, its outputs in the book's order, the Fortran routine for one
-position and the Fortran sweep for many.  The declaration makes a Python function that
+Each book routine is declared once, with :func:`book_routine`: its book name, chapter,
+listing, inputs and outputs in the book's order, which inputs are tables (and which count
+argument gives their length), which are lengths, integers or otherwise bounded, and the
+conditions the Fortran does not report itself.  The Fortran side needs nothing more: the
+drivers ``NAME_1`` (one call) and ``NAME_n`` (a loop over positions) are generated at build
+time from the chapter module's argument list (fortran/gen_drivers.py), and the declaration
+is checked against the signature f2py reports when the module is imported.
+
+The declared function
 
 * takes the book's inputs in the book's order (``AAA`` last, defaulting to 1.0, "silent");
-* checks them: NaN or inf, a non-positive length, an integer out of range raise
-  ``ValueError`` naming the argument;
-* with scalars, calls the scalar routine and returns a named tuple of floats;
-* with arrays (any broadcastable shapes), calls the sweep, one Fortran loop over all
-  positions, and returns a named tuple of arrays of the broadcast shape;
-* turns the Fortran status into an exception (see :mod:`sarkp.errors`), or with
-  ``on_error="nan"`` into NaN at the failing positions plus a ``status`` field;
+  a count (the book's ``N`` or ``M``) stays where the book has it and must equal the length
+  of its tables;
+* rejects bad input with ``TypeError`` (strings, None, complex, masked arrays, objects) or
+  ``ValueError`` (NaN, inf, a non-positive length, an integer out of range, a wrong shape),
+  naming the argument;
+* with scalars returns a named tuple of floats (a book FUNCTION returns a float);
+* with arrays of any broadcastable shapes computes every position in one Fortran loop and
+  returns arrays of the broadcast shape (an input that is the same everywhere is passed to
+  Fortran once, not broadcast into a full array);
+* passes the caller's mode (:mod:`sarkp.modes`) into the same Fortran call;
+* turns the Fortran status into an exception (:mod:`sarkp.errors`), or with
+  ``on_error="nan"`` into NaN at the failing positions plus a ``status`` field
+  (:class:`sarkp.Status`);
 * with ``AAA = 0`` prints the book's report for the call, where the book prints one.
 """
 
 from __future__ import annotations
 
 import math
+import os
+import re
+import sys
 import warnings
 from collections import namedtuple
 from typing import Callable, Mapping, Sequence
@@ -25,45 +40,61 @@ from typing import Callable, Mapping, Sequence
 import numpy as np
 
 from . import _sarkp
-from .errors import (AssemblyError, RequirementError, SignificanceWarning,
-                     SingularError)
+from .errors import (AssemblyError, RangeError, RequirementError, SignificanceWarning,
+                     SingularError, Status)
+from .modes import MODE_CODE
 
-_prmtr = _sarkp.prmtr
-ST_OK = int(_prmtr.st_ok)
-ST_ASSEMBLY = int(_prmtr.st_assembly)
-ST_SINGULAR = int(_prmtr.st_singular)
-ST_SIGNIFICANCE = int(_prmtr.st_significance)
-ST_REQUIREMENT = int(_prmtr.st_requirement)
+ST_OK = int(Status.OK)
+ST_ASSEMBLY = int(Status.ASSEMBLY)
+ST_SINGULAR = int(Status.SINGULAR)
+ST_SIGNIFICANCE = int(Status.SIGNIFICANCE)
+ST_REQUIREMENT = int(Status.REQUIREMENT)
+ST_MISSING = int(Status.MISSING)
+ST_RANGE = int(Status.RANGE)
+#: Fortran's 100 + d: kept, with about d significant digits left (prmtr's st_digits).
+ST_DIGITS = int(_sarkp.prmtr.st_digits)
 
-#: Python-side status: an input was NaN, i.e. an earlier step of a chain failed and
-#: returned NaN under ``on_error="nan"``; the outputs there are NaN as well.
-ST_MISSING = 5
+assert (int(_sarkp.prmtr.st_ok), int(_sarkp.prmtr.st_assembly),
+        int(_sarkp.prmtr.st_singular), int(_sarkp.prmtr.st_significance),
+        int(_sarkp.prmtr.st_requirement), int(_sarkp.prmtr.st_range)) == \
+    (ST_OK, ST_ASSEMBLY, ST_SINGULAR, ST_SIGNIFICANCE, ST_REQUIREMENT, ST_RANGE)
 
-STATUS_NAMES = {ST_OK: "ok", ST_ASSEMBLY: "assembly", ST_SINGULAR: "singular",
-                ST_SIGNIFICANCE: "significance", ST_REQUIREMENT: "requirement",
-                ST_MISSING: "missing input"}
+STATUS_NAMES = {s.value: s.name.lower() for s in Status}
 
 _ERRORS = {ST_ASSEMBLY: AssemblyError, ST_SINGULAR: SingularError,
-           ST_REQUIREMENT: RequirementError}
+           ST_REQUIREMENT: RequirementError, ST_RANGE: RangeError}
 
 _DEFAULT_MESSAGES = {
     ST_ASSEMBLY: "the group cannot be assembled: the links do not reach",
     ST_SINGULAR: "singular position (dead centre): the book's formulas have no finite answer",
     ST_SIGNIFICANCE: "GELG reported a loss of significance (IER > 0); the result was kept",
     ST_REQUIREMENT: "the requirement cannot be met by any mechanism",
+    ST_RANGE: "the result overflows double precision",
 }
 
-_SCALAR_TYPES = (float, int, np.floating, np.integer)
+ON_ERROR_DOC = """
+    Other Parameters
+    ----------------
+    on_error : {"raise", "nan"}, keyword-only
+        ``"raise"`` (default): a failure raises its error (for arrays, naming the first
+        failing index).  ``"nan"``: failing positions give NaN and the result gets a last
+        field ``status`` (an int, or an int32 array of the broadcast shape) holding a
+        :class:`sarkp.Status` code per position: 0 OK, 1 ASSEMBLY, 2 SINGULAR,
+        3 SIGNIFICANCE (kept, digits lost), 4 REQUIREMENT, 5 MISSING (a NaN input, e.g.
+        from a failed earlier step, passes through), 6 RANGE (overflow).
+"""
 
-ON_ERROR = ("raise", "nan")
+_SCALAR_TYPES = (float, np.floating)
+_PACKAGE_DIR = os.path.dirname(os.path.abspath(__file__))
+_INT_MAX = 2**31 - 1
 
 
 class Check:
     """A condition on the inputs that the Fortran routine does not report itself.
 
-    ``bad`` receives the inputs by book name (floats, or broadcast arrays) and returns a
-    boolean (or boolean array) that is true where the condition holds; ``status`` is the
-    status it gives there and ``message`` what the error says.
+    ``bad`` receives the inputs by book name (floats, or arrays that broadcast) and
+    returns a boolean (or boolean array) that is true where the condition holds;
+    ``status`` is the status it gives there and ``message`` what the error says.
     """
 
     def __init__(self, bad: Callable[..., object], status: int, message: str):
@@ -72,119 +103,225 @@ class Check:
         self.message = message
 
 
+def f2py_signature(wrapper):
+    """(required arguments, optional arguments, returned names) of an f2py wrapper."""
+    first = wrapper.__doc__.strip().splitlines()[0]
+    m = re.match(r"(?:(.*?)\s*=\s*)?\w+\((.*)\)$", first)
+    rets = [r.strip() for r in (m.group(1) or "").split(",") if r.strip()]
+    args = m.group(2)
+    optional = []
+    if "[" in args:
+        args, opt = args.split("[", 1)
+        optional = [a.strip() for a in opt.rstrip("]").split(",") if a.strip()]
+    required = [a.strip() for a in args.split(",") if a.strip()]
+    return required, optional, rets
+
+
+def _caller_stacklevel():
+    """stacklevel for warnings.warn that points at the first frame outside sarkp."""
+    frame, level = sys._getframe(1), 1
+    while frame is not None and (frame.f_code.co_filename.startswith(_PACKAGE_DIR)
+                                 or frame.f_code.co_filename == "<sarkp>"):
+        frame, level = frame.f_back, level + 1
+    return level
+
+
+def _first_index(mask, shape):
+    flat = int(np.flatnonzero(np.asarray(mask).ravel())[0])
+    return tuple(int(i) for i in np.unravel_index(flat, shape)) if shape else ()
+
+
+def _type_error(name, arg, value):
+    return TypeError(f"{name}: {arg} must be a real number or an array of real numbers, "
+                     f"not {type(value).__name__} {value!r:.60}")
+
+
+def as_real_array(name, arg, value):
+    """``value`` as a float ndarray, or TypeError/ValueError naming ``arg``."""
+    if value is None or isinstance(value, (str, bytes, np.ma.MaskedArray)):
+        raise _type_error(name, arg, value)
+    try:
+        a = np.asarray(value)
+    except (ValueError, TypeError) as exc:          # ragged lists and the like
+        raise ValueError(f"{name}: {arg} is not a regular array of numbers ({exc})") from None
+    kind = a.dtype.kind
+    if kind == "O":
+        try:
+            a = a.astype(float)
+        except OverflowError:
+            raise ValueError(f"{name}: {arg} holds an integer too large for a double") from None
+        except (TypeError, ValueError):
+            raise _type_error(name, arg, value) from None
+    elif kind not in "biuf":
+        raise _type_error(name, arg, value)
+    return np.asarray(a, dtype=float)
+
+
 class Routine:
     """The declaration of one book routine (see :func:`book_routine`)."""
 
-    def __init__(self, name, listing, lines, inputs, outputs, scalar, sweep, *,
-                 lengths=(), integers=None, nonnegative=(), checks=(),
-                 messages=None, has_status=True, function=False, report=None,
-                 sweep_inputs=None):
+    def __init__(self, name, *, listing, lines, chapter, inputs, outputs, tables=None,
+                 lengths=(), nonnegative=(), nonzero=(), integers=None, checks=(),
+                 messages=None, function=False, report=None):
         self.name = name
         self.listing = listing
         self.lines = lines
+        self.chapter = chapter
         self.inputs = tuple(inputs)
         self.outputs = tuple(outputs)
-        self.scalar = scalar
-        self.sweep = sweep
+        self.tables = {}
+        for arg, dims in (tables or {}).items():
+            self.tables[arg] = dims if isinstance(dims, tuple) else (dims,)
+        self.counts = {d for dims in self.tables.values() for d in dims if isinstance(d, str)}
         self.lengths = frozenset(lengths)
         self.nonnegative = frozenset(nonnegative)
+        self.nonzero = frozenset(nonzero)
         self.integers = dict(integers or {})
+        for c in self.counts:
+            self.integers.setdefault(c, range(1, _INT_MAX))
         self.checks = tuple(checks)
         self.messages = dict(_DEFAULT_MESSAGES)
         self.messages.update(messages or {})
-        self.has_status = has_status
         self.function = function
         self.report = report
-        # which inputs the sweep takes (default: all but the print flag AAA, in order)
-        self.sweep_inputs = (tuple(sweep_inputs) if sweep_inputs
-                             else tuple(a for a in self.inputs if a != "AAA"))
-        self._strict = bool(self.lengths or self.nonnegative or self.integers)
-        self._positive_at = tuple(i for i, a in enumerate(self.inputs) if a in self.lengths)
-        self._nonnegative_at = tuple(i for i, a in enumerate(self.inputs)
-                                     if a in self.nonnegative)
-        self._integer_at = tuple(i for i, a in enumerate(self.inputs) if a in self.integers)
+        for group in (self.lengths, self.nonnegative, self.nonzero, self.integers,
+                      self.tables):
+            unknown = set(group) - set(self.inputs)
+            if unknown:
+                raise TypeError(f"{name}: declared {sorted(unknown)} are not inputs")
+        driver = getattr(_sarkp, "drv_" + chapter)
+        self.one = getattr(driver, name.lower() + "_1")
+        self.many = getattr(driver, name.lower() + "_n", None)
+        self._bind_fortran()
+        self.sweeps_tables = bool(self.counts)       # tables counted by an argument
+        self._fixed = {a: d[0] for a, d in self.tables.items() if not self.counts & set(d)}
+        self._strict = bool(self.lengths or self.nonnegative or self.nonzero or self.integers)
+        self._positive_at = [i for i, a in enumerate(self.inputs) if a in self.lengths]
+        self._nonnegative_at = [i for i, a in enumerate(self.inputs) if a in self.nonnegative]
+        self._nonzero_at = [i for i, a in enumerate(self.inputs) if a in self.nonzero]
+        self._integer_at = [i for i, a in enumerate(self.inputs) if a in self.integers]
         self._aaa_index = self.inputs.index("AAA") if "AAA" in self.inputs else None
         if self.report is not None and self._aaa_index is None:
-            raise ValueError(f"{name}: a report needs the print flag AAA among the inputs")
+            raise TypeError(f"{name}: a report needs the print flag AAA among the inputs")
         self.result = namedtuple(name, self.outputs)
         self.result_with_status = namedtuple(name + "_status", self.outputs + ("status",))
 
-    # -- validation -------------------------------------------------------------------
-    def _check_scalar(self, values):
-        for arg, v in zip(self.inputs, values):
-            if arg in self.integers:
-                allowed = self.integers[arg]
-                if v != int(v) or int(v) not in allowed:
-                    raise ValueError(f"{self.name}: {arg} = {v!r} is not one of "
-                                     f"{sorted(allowed)}")
-                continue
-            if not math.isfinite(v):
-                raise ValueError(f"{self.name}: {arg} = {v!r} is not a finite number")
-            if arg in self.lengths and not v > 0.0:
-                raise ValueError(f"{self.name}: {arg} = {v!r} is a length and must be > 0")
-            if arg in self.nonnegative and v < 0.0:
-                raise ValueError(f"{self.name}: {arg} = {v!r} must be >= 0")
+    # -- the declaration against the Fortran signature ----------------------------------
+    def _bind_fortran(self):
+        required, optional, rets = f2py_signature(self.one)
+        fortran_in = [a for a in required + optional if not a.startswith("sarkp_")]
+        declared = [a.lower() for a in self.inputs]
+        if sorted(fortran_in) != sorted(declared):
+            raise TypeError(f"{self.name}: declared inputs {declared} do not match the "
+                            f"Fortran arguments {fortran_in}")
+        positional = [a for a in required if not a.startswith("sarkp_")]
+        if positional != [a for a in declared if a in positional]:
+            raise TypeError(f"{self.name}: the inputs are not in the Fortran order {positional}")
+        self._positional = not optional             # every input in the book's order
+        results = rets[:-1]                          # the last is the status
+        if self.function:
+            if len(self.outputs) != 1 or results != ["fres"]:
+                raise TypeError(f"{self.name}: a FUNCTION has one output")
+            self._pick = [0]
+        else:
+            missing = [o for o in self.outputs if o.lower() not in results]
+            if missing:
+                raise TypeError(f"{self.name}: declared outputs {missing} are not among the "
+                                f"Fortran results {results}")
+            extra = [r for r in results if r.upper() not in self.outputs
+                     and r not in declared]          # destroyed inout inputs may be left out
+            if extra:
+                raise TypeError(f"{self.name}: Fortran results {extra} are not declared")
+            self._pick = [results.index(o.lower()) for o in self.outputs]
+        self._identity = self._pick == list(range(len(results)))
+        self.fortran_inputs = fortran_in
+        self.fortran_results = rets
+
+    # -- validation ----------------------------------------------------------------------
+    def _check_value(self, arg, v):
+        """Raise ValueError for a bad scalar input value ``v`` (a float) of ``arg``."""
+        if arg in self.integers:
+            allowed = self.integers[arg]
+            if not math.isfinite(v) or v != int(v) or int(v) not in allowed:
+                raise ValueError(f"{self.name}: {arg} = {v:g} is not one of "
+                                 f"{_describe(allowed)}")
+            return
+        if not math.isfinite(v):
+            raise ValueError(f"{self.name}: {arg} = {v!r} is not a finite number")
+        if arg in self.lengths and not v > 0.0:
+            raise ValueError(f"{self.name}: {arg} = {v!r} is a length and must be > 0")
+        if arg in self.nonnegative and v < 0.0:
+            raise ValueError(f"{self.name}: {arg} = {v!r} must be >= 0")
+        if arg in self.nonzero and v == 0.0:
+            raise ValueError(f"{self.name}: {arg} = {v!r} must not be 0")
 
     def _out_of_range(self, args):
         """True if a length is not positive, a bound is broken or an integer is wrong."""
         return (any(not args[i] > 0.0 for i in self._positive_at)
                 or any(args[i] < 0.0 for i in self._nonnegative_at)
+                or any(args[i] == 0.0 for i in self._nonzero_at)
                 or any(args[i] != int(args[i]) or int(args[i]) not in
                        self.integers[self.inputs[i]] for i in self._integer_at))
 
-    def _check_arrays(self, arrays, shape, allow_nan):
-        """Raise ValueError for a bad input; return where an input is NaN (if allowed)."""
-        missing = np.zeros(shape, dtype=bool)
-        for arg, a in zip(self.inputs, arrays):
-            nan = np.isnan(a) if allow_nan else missing
-            if arg in self.integers:
-                allowed = np.array(sorted(self.integers[arg]))
-                bad = ~np.isin(a, allowed) & ~nan
-                what = f"is not one of {allowed.tolist()}"
+    def _check_array(self, arg, a, allow_nan):
+        """Raise ValueError for a bad element of input array ``a``; return its NaN mask
+        (when NaN is allowed) or None."""
+        nan = np.isnan(a) if allow_nan else None
+        if arg in self.integers:
+            allowed = self.integers[arg]
+            finite = np.isfinite(a)
+            v = np.where(finite, a, 0.0)
+            if isinstance(allowed, range):
+                ok = (v == np.round(v)) & (v >= allowed.start) & (v < allowed.stop)
             else:
-                bad = ~np.isfinite(a) & ~nan
-                what = "is not a finite number"
-                if not bad.any():
-                    if arg in self.lengths:
-                        bad = ~(a > 0.0) & ~nan
-                        what = "is a length and must be > 0"
-                    elif arg in self.nonnegative:
-                        bad = (a < 0.0) & ~nan
-                        what = "must be >= 0"
-            if bad.any():
-                idx = _first_index(bad, shape)
-                raise ValueError(f"{self.name}: {arg}{list(idx)} = {a[idx]!r} {what}")
-            if allow_nan:
-                missing |= nan
-        return missing
+                ok = np.isin(v, sorted(allowed))
+            bad = ~(finite & ok)
+            what = f"is not one of {_describe(allowed)}"
+        else:
+            bad = ~np.isfinite(a)
+            what = "is not a finite number"
+            if not bad.any():
+                if arg in self.lengths:
+                    bad, what = ~(a > 0.0), "is a length and must be > 0"
+                elif arg in self.nonnegative:
+                    bad, what = a < 0.0, "must be >= 0"
+                elif arg in self.nonzero:
+                    bad, what = a == 0.0, "must not be 0"
+        if nan is not None:
+            bad &= ~nan
+        if bad.any():
+            idx = _first_index(bad, a.shape)
+            raise ValueError(f"{self.name}: {arg}{list(idx) if idx else ''} = {a[idx]!r} "
+                             f"{what}")
+        return nan if nan is not None and nan.any() else None
 
-    # -- the call -----------------------------------------------------------------------
+    # -- the call ------------------------------------------------------------------------
     def __call__(self, args, on_error="raise"):
         if on_error != "raise" and on_error != "nan":
             raise ValueError(f"{self.name}: on_error must be 'raise' or 'nan', "
                              f"not {on_error!r}")
-        # Scalars add up to a Python or NumPy scalar; any array (or list) does not.
-        try:
-            total = sum(args)
-        except TypeError:
-            return self._call_arrays(args, on_error)
-        if isinstance(total, np.ndarray) or not isinstance(total, _SCALAR_TYPES):
-            return self._call_arrays(args, on_error)
-        return self._call_scalar(args, total, on_error)
+        if self.sweeps_tables:
+            return self._call_tables(args, on_error)
+        if not self._fixed:
+            # Python or NumPy floats add up to a float; anything else goes the long way.
+            try:
+                total = sum(args)
+            except (TypeError, OverflowError, ValueError):   # (ValueError: shapes)
+                total = None
+            if isinstance(total, _SCALAR_TYPES):
+                return self._call_scalar(args, total, on_error)
+        return self._call_arrays(args, on_error)
 
     def _call_scalar(self, args, total, on_error):
         # The sum of the inputs is finite when every input is, except when it overflows:
         # only then, or when some input has a range to respect, look at each one.
         if not math.isfinite(total) or (self._strict and self._out_of_range(args)):
-            if on_error == "nan" and math.isnan(total):   # a failed earlier step
-                return self.result_with_status(*(math.nan,) * len(self.outputs), ST_MISSING)
-            values = [float(a) for a in args]
-            self._check_scalar(values)
-        if self._integer_at:
-            args = list(args)
-            for i in self._integer_at:
-                args[i] = int(args[i])
-        status, failed_check = ST_OK, None
+            if on_error == "nan" and math.isnan(total) and \
+                    all(math.isnan(a) or math.isfinite(a) for a in args):
+                return self._missing_scalar()
+            for arg, v in zip(self.inputs, args):
+                self._check_value(arg, float(v))
+        status, failed_check, out = ST_OK, None, [math.nan] * len(self.outputs)
         if self.checks:
             named = dict(zip(self.inputs, args))
             for check in self.checks:
@@ -192,78 +329,231 @@ class Routine:
                     status, failed_check = check.status, check
                     break
         if status == ST_OK:
-            out = self.scalar(*args)
-            if self.function:
-                out = (out,)
-            elif self.has_status:
-                status = out[-1]
-                out = out[:-1]
+            out = self.one(MODE_CODE.get(), *args)
+            status = out[-1]
+            out = out[:-1] if self._identity else [out[i] for i in self._pick]
         if status != ST_OK:
-            if status != ST_SIGNIFICANCE:
-                if on_error == "raise":
-                    raise self._error(status, None, failed_check)
-                out = (math.nan,) * len(self.outputs)
-            else:
-                warnings.warn(f"{self.name}: {self.messages[ST_SIGNIFICANCE]}",
-                              SignificanceWarning, stacklevel=4)
-        if self.report is not None and args[self._aaa_index] == 0.0:
-            print(self.report(dict(zip(self.inputs, args)), out))
-        if on_error == "nan":
-            return self.result_with_status(*out, int(status))
-        return self.result(*out)
+            out = self._settle_scalar(status, out, failed_check, on_error)
+            status = _status_code(status)
+        if self.report is not None and args[self._aaa_index] == 0.0 and \
+                not math.isnan(out[0]):
+            print(self.report(dict(zip(self.inputs, args)), tuple(out)))
+        return self._result(out, Status(status) if on_error == "nan" else None)
+
+    def _missing_scalar(self):
+        return self._result([math.nan] * len(self.outputs), Status.MISSING)
+
+    def _result(self, out, status):
+        if self.function:
+            return out[0] if status is None else \
+                self.result_with_status(out[0], status)
+        if status is None:
+            return self.result(*out)
+        return self.result_with_status(*out, status)
+
+    def _settle_scalar(self, status, out, check, on_error):
+        if status == ST_SIGNIFICANCE or status > ST_DIGITS:
+            warnings.warn(f"{self.name}: {_significance_message(self.messages, status)}",
+                          SignificanceWarning, stacklevel=_caller_stacklevel())
+            return out
+        if on_error == "raise":
+            message = check.message if check is not None else None
+            if status == ST_RANGE:
+                message = self._range_message(out)
+            raise status_error(self.name, status, None, self.messages, message)
+        return [_nan_like(o) for o in out]
+
+    def _range_message(self, out, index=None):
+        names = [n for n, o in zip(self.outputs, out)
+                 if not np.all(np.isfinite(o if index is None else o[index]))]
+        return (f"{', '.join(names) or 'a result'} would not be a finite double "
+                f"(overflow); the inputs are too far apart in magnitude")
 
     def _call_arrays(self, args, on_error):
-        given = [np.asarray(a, dtype=float) for a in args]
-        arrays = np.broadcast_arrays(*given)
-        shape = arrays[0].shape
-        status = None                                        # None: all positions ok
-        if self._strict or not all(np.isfinite(a.sum()) for a in given):
-            # under on_error="nan" a NaN input (an earlier failure in a chain) passes through
-            missing = self._check_arrays(arrays, shape, allow_nan=on_error == "nan")
-            if missing.any():
-                status = np.where(missing, ST_MISSING, ST_OK).astype(np.int32)
-        # (otherwise every input is finite: a finite sum cannot hide an inf or a NaN)
+        arrays = [as_real_array(self.name, arg, a) for arg, a in zip(self.inputs, args)]
+        # positions: the broadcast shape of the inputs (of their leading axes for tables
+        # of fixed size, like DSNTZR's three positions)
+        lead = []
+        for arg, a in zip(self.inputs, arrays):
+            if arg in self._fixed:
+                k = self._fixed[arg]
+                if a.ndim < 1 or a.shape[-1] != k:
+                    raise ValueError(f"{self.name}: {arg} must hold {k} values (last axis "
+                                     f"of length {k}), not shape {a.shape}")
+                lead.append(a.shape[:-1])
+            else:
+                lead.append(a.shape)
+        try:
+            shape = np.broadcast_shapes(*lead)
+        except ValueError:
+            raise ValueError(f"{self.name}: the shapes of the inputs do not broadcast: "
+                             + ", ".join(f"{a} {s}" for a, s in zip(self.inputs, lead))) \
+                from None
+        n = math.prod(shape)
+        allow_nan = on_error == "nan"
+        missing = None
+        for arg, a in zip(self.inputs, arrays):
+            if self._strict and (arg in self.integers or arg in self.lengths
+                                 or arg in self.nonnegative or arg in self.nonzero) \
+                    or not np.isfinite(a.sum()):
+                nan = self._check_array(arg, a, allow_nan)
+                if nan is not None:
+                    if arg in self._fixed:
+                        nan = nan.any(axis=-1)
+                    nan = np.broadcast_to(nan, shape)
+                    missing = nan if missing is None else missing | nan
+        if n == 0:
+            empty = [np.zeros(shape) for _ in self.outputs]
+            return self._result(empty, np.zeros(shape, np.int32) if allow_nan else None)
         named = dict(zip(self.inputs, arrays))
-        failed_check = None                                  # which check failed where
+        status = None                                   # None: every position so far ok
+        if missing is not None:
+            status = np.where(missing, ST_MISSING, ST_OK).astype(np.int32)
+        failed_check = None                             # which check failed where
         for k, check in enumerate(self.checks):
-            bad = np.broadcast_to(np.asarray(check.bad(**named), dtype=bool), shape)
+            with np.errstate(all="ignore"):
+                bad = np.broadcast_to(np.asarray(check.bad(**named), dtype=bool), shape)
             if status is not None:
                 bad = bad & (status == ST_OK)
             if bad.any():
                 if status is None:
                     status = np.zeros(shape, dtype=np.int32)
-                    failed_check = np.full(shape, -1, dtype=np.int8)
-                elif failed_check is None:
+                if failed_check is None:
                     failed_check = np.full(shape, -1, dtype=np.int8)
                 status[bad] = check.status
                 failed_check[bad] = k
-        flat = [np.ascontiguousarray(named[n]).ravel() for n in self.sweep_inputs]
-        out = self.sweep(*flat)
-        if not isinstance(out, tuple):
-            out = (out,)
-        if self.has_status:
-            computed = np.asarray(out[-1]).reshape(shape)
-            # a failed check (or a missing input) outranks whatever the routine computed
-            status = computed if status is None else np.where(status != ST_OK, status,
-                                                              computed)
-            out = out[:-1]
-        out = [np.asarray(o, dtype=float).reshape(shape) for o in out]
-        if status is None:
-            status = np.zeros(shape, dtype=np.int32) if on_error == "nan" else None
-        else:
+        flat, incs = [], []
+        for arg, a in zip(self.inputs, arrays):
+            if arg in self._fixed:
+                k = self._fixed[arg]
+                if math.prod(a.shape[:-1]) == 1:
+                    flat.append(a.reshape(k, 1))
+                    incs.append(0)
+                else:
+                    flat.append(np.broadcast_to(a, shape + (k,)).reshape(n, k).T)
+                    incs.append(1)
+            elif a.size == 1:
+                flat.append(a.reshape(1))
+                incs.append(0)
+            elif a.shape == shape:
+                flat.append(a.reshape(n))
+                incs.append(1)
+            else:
+                flat.append(np.broadcast_to(a, shape).reshape(n))
+                incs.append(1)
+        if missing is not None:                          # keep NaN away from Fortran
+            flat = [np.nan_to_num(f, nan=0.0) for f in flat]
+        out = self.many(MODE_CODE.get(), n, np.array(incs, dtype=np.int32), *flat)
+        computed = out[-1].reshape(shape)
+        out = [out[i] for i in self._pick]
+        out = [o.reshape(shape) if o.ndim == 1 else o.T.reshape(shape + o.shape[:-1])
+               for o in out]
+        status = computed if status is None else np.where(status != ST_OK, status, computed)
+        if status.any():
             def message(code, index):
+                if code == ST_RANGE:
+                    return self._range_message(out, index)
                 k = -1 if failed_check is None else int(failed_check[index])
                 return self.checks[k].message if k >= 0 else None
 
-            out = settle_arrays(self.name, out, status, on_error, self.messages, message)
-        if on_error == "nan":
-            return self.result_with_status(*out, status)
-        return self.result(*out)
+            out, status = settle_arrays(self.name, out, status, on_error, self.messages,
+                                        message)
+        if shape == ():
+            out = [float(o) if o.ndim == 0 else o for o in out]
+            if self.report is not None and float(arrays[self._aaa_index]) == 0.0 and \
+                    int(status) in (ST_OK, ST_SIGNIFICANCE):
+                print(self.report(dict(zip(self.inputs, arrays)), tuple(out)))
+            return self._result(out, Status(int(status)) if allow_nan else None)
+        return self._result(out, status if allow_nan else None)
 
-    def _error(self, status, index, check=None):
-        """The exception for ``status``: the failed check's words, else the routine's."""
-        return status_error(self.name, status, index, self.messages,
-                            None if check is None else check.message)
+    def _call_tables(self, args, on_error):
+        """A routine with tables counted by an argument: one Fortran call, no sweep."""
+        named, kw = {}, {}
+        for arg, value in zip(self.inputs, args):
+            if arg in self.tables:
+                a = as_real_array(self.name, arg, value)
+                dims = self.tables[arg]
+                if a.ndim == 1 and len(dims) == 2:       # a single column (GELG's R)
+                    a = a.reshape(-1, 1)
+                if a.ndim != len(dims):
+                    raise ValueError(f"{self.name}: {arg} must be "
+                                     f"{('one', 'two')[len(dims) - 1]}-dimensional, not of "
+                                     f"shape {a.shape}")
+                self._check_array(arg, a, allow_nan=False)
+                named[arg] = a
+                kw[arg.lower()] = np.array(a, order="F", copy=True)
+            else:
+                if isinstance(value, (bool, np.bool_)) or not isinstance(
+                        value, (int, float, np.integer, np.floating)):
+                    if np.ndim(value) == 0 and not isinstance(value, (str, bytes)):
+                        value = as_real_array(self.name, arg, value)[()]
+                    else:
+                        raise _type_error(self.name, arg, value)
+                try:
+                    v = float(value)
+                except OverflowError:
+                    raise ValueError(f"{self.name}: {arg} = {value} is too large for a "
+                                     f"double") from None
+                self._check_value(arg, v)
+                named[arg] = int(v) if arg in self.integers else v
+                kw[arg.lower()] = named[arg]
+        for arg, dims in self.tables.items():
+            for axis, d in enumerate(dims):
+                want = named[d] if isinstance(d, str) else d
+                if named[arg].shape[axis] != want:
+                    count = f"{d} = {want}" if isinstance(d, str) else f"{want}"
+                    raise ValueError(f"{self.name}: {arg} has shape {named[arg].shape}: "
+                                     f"{named[arg].shape[axis]} along axis {axis}, but "
+                                     f"{count}")
+        for check in self.checks:
+            if check.bad(**named):
+                if on_error == "raise":
+                    raise status_error(self.name, check.status, None, self.messages,
+                                       check.message)
+                return self._result([math.nan] * len(self.outputs), Status(check.status))
+        out = self.one(MODE_CODE.get(), **kw)
+        status = int(out[-1])
+        out = [out[i] for i in self._pick]
+        for k, o in enumerate(out):
+            name = self.outputs[k]
+            if name in self.tables:                     # an inout table: the input's shape
+                out[k] = np.asarray(o).reshape(np.shape(args[self.inputs.index(name)]))
+            elif np.ndim(o) == 0:
+                out[k] = o.item() if isinstance(o, np.ndarray) else o
+        if status != ST_OK:
+            out = self._settle_scalar(status, out, None, on_error)
+            status = _status_code(status)
+        if self.report is not None and args[self._aaa_index] == 0.0:
+            print(self.report(named, tuple(out)))
+        return self._result(out, Status(status) if on_error == "nan" else None)
+
+
+def _describe(allowed):
+    if isinstance(allowed, range):
+        return f"the integers >= {allowed.start}"
+    return str(sorted(allowed))
+
+
+def _nan_like(o):
+    if isinstance(o, np.ndarray):
+        return np.full(o.shape, np.nan)
+    if isinstance(o, (int, np.integer)):
+        return o
+    return math.nan
+
+
+def _status_code(status):
+    """The public code of a Fortran status (100 + d is a loss of significance)."""
+    return ST_SIGNIFICANCE if status > ST_DIGITS else int(status)
+
+
+def _significance_message(messages, status):
+    if status > ST_DIGITS:
+        d = int(status) - ST_DIGITS
+        return (f"near a singular position only about {d} significant digit"
+                f"{'s' if d != 1 else ''} of the result can be trusted "
+                f"(estimated relative error 1e-{d}); the result was kept")
+    return messages.get(ST_SIGNIFICANCE, _DEFAULT_MESSAGES[ST_SIGNIFICANCE])
 
 
 def status_error(name, status, index, messages, message=None):
@@ -279,11 +569,11 @@ def settle_arrays(name, out, status, on_error, messages, message_at=None):
 
     Raises the error of the first failed position (``on_error="raise"``) or puts NaN
     there (``"nan"``); warns once for a loss of significance.  ``message_at(status,
-    index)`` may give a more precise message for a failed position.
+    index)`` may give a more precise message for a failed position.  Returns ``(out,
+    status)`` with Fortran's 100 + d codes mapped to SIGNIFICANCE.
     """
-    if not status.any():                                 # the common case: all ok
-        return out
-    failed = (status != ST_OK) & (status != ST_SIGNIFICANCE)
+    lost = (status == ST_SIGNIFICANCE) | (status > ST_DIGITS)
+    failed = (status != ST_OK) & ~lost
     if failed.any():
         if on_error == "raise":
             idx = _first_index(failed, status.shape)
@@ -292,20 +582,18 @@ def settle_arrays(name, out, status, on_error, messages, message_at=None):
                                message_at(code, idx) if message_at else None)
         for o in out:
             o[failed] = np.nan
-    if (status == ST_SIGNIFICANCE).any():
-        idx = _first_index(status == ST_SIGNIFICANCE, status.shape)
-        warnings.warn(f"{name}: {messages.get(ST_SIGNIFICANCE, _DEFAULT_MESSAGES[ST_SIGNIFICANCE])}"
-                      f" (first at index {list(idx)})", SignificanceWarning, stacklevel=4)
-    return out
+    if lost.any():
+        idx = _first_index(lost, status.shape)
+        digits = status[status > ST_DIGITS]
+        worst = int(digits.min()) if digits.size else ST_SIGNIFICANCE
+        warnings.warn(f"{name}: {_significance_message(messages, worst)} (first at index "
+                      f"{list(idx)})", SignificanceWarning, stacklevel=_caller_stacklevel())
+        status = np.where(status > ST_DIGITS, ST_SIGNIFICANCE, status).astype(np.int32)
+    return out, status
 
 
-def _first_index(mask, shape):
-    flat = int(np.flatnonzero(np.asarray(mask).ravel())[0])
-    return tuple(int(i) for i in np.unravel_index(flat, shape)) if shape else ()
-
-
-def book_routine(name: str, *, listing: str, lines: str, inputs: Sequence[str],
-                 outputs: Sequence[str], scalar, sweep, doc: str,
+def book_routine(name: str, *, listing: str, lines: str, chapter: str,
+                 inputs: Sequence[str], outputs: Sequence[str], doc: str,
                  defaults: Mapping[str, float] | None = None, **options):
     """Declare a book routine and return its Python function.
 
@@ -313,35 +601,82 @@ def book_routine(name: str, *, listing: str, lines: str, inputs: Sequence[str],
     ----------
     name, listing, lines
         The book's name (``"DVKT"``), listing number (``"II.11"``) and book lines.
+    chapter
+        The Fortran module that holds the routine (``"kinematics"``); the generated
+        drivers ``drv_<chapter>.<name>_1`` and ``_n`` are called.
     inputs, outputs
-        The book's input and output names, in the book's order.
-    scalar, sweep
-        The f2py routine for one position (book argument order, trailing IER if
-        ``has_status``) and the sweep routine over 1-D arrays.
+        The book's input and output names, in the book's order; COMMON results (and
+        sarkp's marked extensions) follow the book's outputs.
     doc
-        The numpydoc docstring.
+        The numpydoc docstring; the description of ``on_error`` is appended.
     defaults
         Default values of trailing inputs (``AAA`` gets 1.0, "do not print", if present).
     options
-        ``lengths`` (must be > 0), ``nonnegative``, ``integers`` ({name: allowed}),
-        ``checks`` (:class:`Check`), ``messages`` ({status: text}), ``has_status``,
-        ``function`` (the book routine is a FUNCTION), ``report`` (callable(inputs, outputs) -> text, printed for AAA = 0),
-        ``sweep_inputs`` (the inputs the sweep takes, if not all).
+        ``tables`` ({input: count name, a fixed size, or a tuple of them}), ``lengths``
+        (> 0), ``nonnegative``, ``nonzero``, ``integers`` ({name: allowed values or a
+        range}; counts default to the integers >= 1), ``checks`` (:class:`Check`),
+        ``messages`` ({status: text}), ``function`` (a book FUNCTION: returns a number),
+        ``report`` (callable(inputs, outputs) -> text, printed for AAA = 0).
     """
-    spec = Routine(name, listing, lines, inputs, outputs, scalar, sweep, **options)
+    spec = Routine(name, listing=listing, lines=lines, chapter=chapter, inputs=inputs,
+                   outputs=outputs, **options)
     defaults = dict(defaults or {})
     if "AAA" in spec.inputs:
         defaults.setdefault("AAA", 1.0)
-    params = []
-    for arg in spec.inputs:
-        params.append(f"{arg}={defaults[arg]!r}" if arg in defaults else arg)
+    params = [f"{arg}={defaults[arg]!r}" if arg in defaults else arg for arg in spec.inputs]
     arglist = ", ".join(spec.inputs)
-    source = (f"def {name}({', '.join(params)}, *, on_error='raise'):\n"
-              f"    return _spec(({arglist},), on_error)\n")
+    source = [f"def {name}({', '.join(params)}, *, on_error='raise'):"]
     namespace = {"_spec": spec}
-    exec(source, namespace)  # a real signature: help() and inspect show the book's names
+    if not spec.sweeps_tables and not spec._fixed:
+        source += _fast_path(spec, namespace)
+    source.append(f"    return _spec(({arglist},), on_error)")
+    # a real signature, so that help() and inspect show the book's names
+    exec(compile("\n".join(source) + "\n", "<sarkp>", "exec"), namespace)
     function = namespace[name]
-    function.__doc__ = doc
+    function.__doc__ = doc.rstrip() + "\n" + ON_ERROR_DOC
     function.__module__ = "sarkp"
     function.spec = spec
     return function
+
+
+def _fast_path(spec, namespace):
+    """Source lines of the common case, Python floats in range with ``on_error="raise"``
+    and a computed result: one Fortran call and a tuple, nothing else.  Every other case
+    (arrays, NaN, a failure, a warning) falls through to ``Routine.__call__``."""
+    args = ", ".join(spec.inputs)
+    cond = ["on_error == 'raise'", "type(_t) is float", "_t - _t == 0.0"]
+    cond += [f"{a} > 0.0" for a in spec.inputs if a in spec.lengths]
+    cond += [f"{a} >= 0.0" for a in spec.inputs if a in spec.nonnegative]
+    cond += [f"{a} != 0.0" for a in spec.inputs if a in spec.nonzero]
+    for a in spec.inputs:
+        if a in spec.integers:
+            namespace[f"_allowed_{a}"] = frozenset(float(v) for v in spec.integers[a])
+            cond.append(f"{a} in _allowed_{a}")
+    for k, check in enumerate(spec.checks):
+        namespace[f"_bad{k}"] = check.bad
+        cond.append(f"not _bad{k}({', '.join(f'{a}={a}' for a in spec.inputs)})")
+    if spec.report is not None:
+        cond.append("AAA != 0.0")
+    namespace.update(_one=spec.one, _mode=MODE_CODE.get, _new=tuple.__new__,
+                     _cls=spec.result)
+    if spec.function:
+        result = "_o[0]"
+    elif spec._identity:
+        result = "_new(_cls, _o[:-1])"
+    else:
+        result = f"_new(_cls, ({', '.join(f'_o[{i}]' for i in spec._pick)},))"
+    return ["    try:",
+            f"        _t = {' + '.join(spec.inputs)}",
+            "    except Exception:",
+            "        _t = None",
+            f"    if {' and '.join(cond)}:",
+            f"        _o = _one(_mode(), {args})",
+            "        if _o[-1] == 0:",
+            f"            return {result}"]
+
+
+def declared_routines():
+    """Every routine declared with :func:`book_routine`, by name (for the tests)."""
+    import sarkp
+    return {n: getattr(sarkp, n) for n in sarkp.__all__
+            if hasattr(getattr(sarkp, n, None), "spec")}

@@ -5,44 +5,53 @@
   errors that a printed figure depends on switched back on, so that the book's printed
   tables come back digit for digit.  Each such switch cites its row of docs/ERRATA.md.
 
-The mode lives in the Fortran module ``prmtr`` (the book's COMMON /PRMTR/), so it is
-one setting for the whole process, as COMMON was for the book's programs.
+The mode belongs to the caller: it is a context variable (:mod:`contextvars`), so every
+thread and every asyncio task has its own, starting from ``corrected``.  Every call of a
+book routine reads it and hands it to Fortran, where the generated driver sets the book's
+COMMON /PRMTR/ inside the same call (fortran/gen_drivers.py): no other thread can change
+it in between.  A generator should set the mode around its computations, not around a
+``yield`` (while it is suspended its ``with`` block would still be in force for the code
+that consumes it).
 """
 
 from __future__ import annotations
 
 import contextlib
-
-from . import _sarkp
+import contextvars
+import math
 
 MODES = ("corrected", "as-printed")
 
-_current = "corrected"
+#: The caller's mode as the Fortran code number: 0 corrected, 1 as-printed.
+MODE_CODE: contextvars.ContextVar[int] = contextvars.ContextVar("sarkp_mode", default=0)
+
+_PI_BOOK = 3.14159          # L559: PI = 3.14159
+
+
+def _code(name: str) -> int:
+    if name not in MODES:
+        raise ValueError(f"mode must be one of {MODES}, not {name!r}")
+    return MODES.index(name)
 
 
 def set_mode(mode: str) -> None:
-    """Set the mode: ``"corrected"`` or ``"as-printed"``."""
-    global _current
-    if mode not in MODES:
-        raise ValueError(f"mode must be one of {MODES}, not {mode!r}")
-    _sarkp.prmtr.set_mode(1 if mode == "as-printed" else 0)
-    _current = mode
+    """Set the mode of the calling thread (or task): ``"corrected"`` or ``"as-printed"``."""
+    MODE_CODE.set(_code(mode))
 
 
 def get_mode() -> str:
-    """The current mode, ``"corrected"`` or ``"as-printed"``."""
-    return _current
+    """The mode of the calling thread (or task), ``"corrected"`` or ``"as-printed"``."""
+    return MODES[MODE_CODE.get()]
 
 
 @contextlib.contextmanager
 def mode(name: str):
     """Run a block in the given mode and restore the previous one afterwards."""
-    previous = get_mode()
-    set_mode(name)
+    token = MODE_CODE.set(_code(name))
     try:
         yield
     finally:
-        set_mode(previous)
+        MODE_CODE.reset(token)
 
 
 def as_printed():
@@ -51,5 +60,5 @@ def as_printed():
 
 
 def book_pi() -> float:
-    """The PI in force: 3.14159 as printed, pi to double precision when corrected."""
-    return float(_sarkp.prmtr.pi)
+    """The PI of the caller's mode: 3.14159 as printed, pi to double precision corrected."""
+    return _PI_BOOK if MODE_CODE.get() else math.pi

@@ -6,15 +6,7 @@ listing of the book, and pi to double precision in corrected mode.
 
 from __future__ import annotations
 
-from collections import namedtuple
-
-import numpy as np
-
-from . import _sarkp
 from .library import ST_SINGULAR, Check, book_routine
-
-_f = _sarkp.operators
-_s = _sarkp.sweeps
 
 __all__ = ["DINTGR", "DFRNCL", "DUGL1", "DUGL2", "DUGL3", "DUGL4", "DUGL5", "DUGOL",
            "DMOMNT", "DOMEGA", "DVKT", "DSMVKT", "NOMER_METHODS"]
@@ -22,32 +14,12 @@ __all__ = ["DINTGR", "DFRNCL", "DUGL1", "DUGL2", "DUGL3", "DUGL4", "DUGL5", "DUG
 #: DINTGR's methods, as the listing's code and comments number them (L443-447).
 NOMER_METHODS = {1: "Simpson", 2: "trapezoids", 3: "rectangles"}
 
-_DINTGR_RESULT = namedtuple("DINTGR", ["FINT"])
-_DFRNCL_RESULT = namedtuple("DFRNCL", ["FDIF"])
-
-
-def _table(name, arg, values):
-    y = np.asarray(values, dtype=float)
-    if y.ndim != 1:
-        raise ValueError(f"{name}: {arg} must be one-dimensional, not of shape {y.shape}")
-    if y.size < 2:
-        raise ValueError(f"{name}: {arg} needs at least 2 points, has {y.size}")
-    bad = ~np.isfinite(y)
-    if bad.any():
-        i = int(np.flatnonzero(bad)[0])
-        raise ValueError(f"{name}: {arg}[{i}] = {y[i]!r} is not a finite number")
-    return y
-
-
-def _step(name, h):
-    h = float(h)
-    if not np.isfinite(h) or h == 0.0:
-        raise ValueError(f"{name}: H = {h!r} must be a finite, non-zero step")
-    return h
-
-
-def DINTGR(M, H, NOMER, Y):
-    """Running integral of a tabulated function (listing II.1, L435-480).
+DINTGR = book_routine(
+    "DINTGR", listing="II.1", lines="L435-480", chapter="operators",
+    inputs=("M", "H", "NOMER", "Y"), outputs=("FINT",),
+    tables={"Y": "M"}, integers={"M": range(2, 2**31 - 1), "NOMER": tuple(NOMER_METHODS)},
+    nonzero=("H",),
+    doc="""Running integral of a tabulated function (listing II.1, L435-480).
 
     The book's call is ``CALL DINTGR(M, H, NOMER, Y, FINT)``.
 
@@ -56,12 +28,13 @@ def DINTGR(M, H, NOMER, Y):
     M : int
         Number of points; must equal ``len(Y)`` (at least 2).
     H : float
-        Step of the table (the printed header names it ``N``: ERRATA E-DINTGR-1).
-    NOMER : int
+        Step of the table, non-zero (the printed header names it ``N``: ERRATA
+        E-DINTGR-1).
+    NOMER : {1, 2, 3}
         Method, numbered as the listing's code does (L443-447): 1 Simpson,
         2 trapezoids, 3 rectangles.  The prose at L431 numbers them the other way
         round (1 rectangles, 3 Simpson); the code is followed (ERRATA E-DINTGR-2).
-    Y : array_like
+    Y : array_like, shape (M,)
         The values of the integrand at the M points.
 
     Returns
@@ -71,19 +44,13 @@ def DINTGR(M, H, NOMER, Y):
         Rectangles use the right end of each step; Simpson integrates the odd points
         from the first and the even points from a trapezoid over the first step, as
         printed (so it is exact for cubics at the odd points only).
-    """
-    y = _table("DINTGR", "Y", Y)
-    if int(M) != M or int(M) != y.size:
-        raise ValueError(f"DINTGR: M = {M!r} must equal the number of points in Y ({y.size})")
-    if NOMER not in NOMER_METHODS:
-        raise ValueError(f"DINTGR: NOMER = {NOMER!r} is not one of {sorted(NOMER_METHODS)} "
-                         f"({NOMER_METHODS})")
-    fint = _f.dintgr(_step("DINTGR", H), int(NOMER), y)
-    return _DINTGR_RESULT(fint)
+    """)
 
-
-def DFRNCL(M, H, Y):
-    """Numerical derivative of a tabulated function (listing II.2, L490-509).
+DFRNCL = book_routine(
+    "DFRNCL", listing="II.2", lines="L490-509", chapter="operators",
+    inputs=("M", "H", "Y"), outputs=("FDIF",),
+    tables={"Y": "M"}, integers={"M": range(2, 2**31 - 1)}, nonzero=("H",),
+    doc="""Numerical derivative of a tabulated function (listing II.2, L490-509).
 
     The book's call is ``CALL DFRNCL(M, H, FDIF, Y)``: the output comes before the input
     (confirmed by the call at L5988); in Python the output is the result.
@@ -94,7 +61,7 @@ def DFRNCL(M, H, Y):
         Number of points; must equal ``len(Y)`` (at least 2).
     H : float
         Step of the table, non-zero.
-    Y : array_like
+    Y : array_like, shape (M,)
         The function values.
 
     Returns
@@ -102,11 +69,7 @@ def DFRNCL(M, H, Y):
     DFRNCL(FDIF)
         Backward differences assigned to the right-hand point:
         ``FDIF[k] = (Y[k] - Y[k-1]) / H``, and ``FDIF[0] = 0``.
-    """
-    y = _table("DFRNCL", "Y", Y)
-    if int(M) != M or int(M) != y.size:
-        raise ValueError(f"DFRNCL: M = {M!r} must equal the number of points in Y ({y.size})")
-    return _DFRNCL_RESULT(_f.dfrncl(_step("DFRNCL", H), y))
+    """)
 
 
 def _coincident(X1, Y1, X2, Y2):
@@ -119,7 +82,7 @@ _NO_DIRECTION = Check(_coincident, ST_SINGULAR,
 DUGL1 = book_routine(
     "DUGL1", listing="II.3", lines="L551-569",
     inputs=("X1", "Y1", "X2", "Y2"), outputs=("DUGL1",),
-    scalar=_f.dugl1, sweep=_s.dugl1_sweep, function=True, has_status=False,
+    chapter="operators", function=True,
     checks=(_NO_DIRECTION,),
     doc="""Direction angle of the segment from (X1, Y1) to (X2, Y2), in [0, 2*PI).
 
@@ -147,7 +110,7 @@ DUGL1 = book_routine(
 DUGL2 = book_routine(
     "DUGL2", listing="II.4", lines="L572-588",
     inputs=("X1", "Y1", "X2", "Y2"), outputs=("DUGL2",),
-    scalar=_f.dugl2, sweep=_s.dugl2_sweep, function=True, has_status=False,
+    chapter="operators", function=True,
     checks=(_NO_DIRECTION,),
     doc="""Signed direction angle of the segment from (X1, Y1) to (X2, Y2), in [-pi, pi].
 
@@ -173,7 +136,7 @@ DUGL2 = book_routine(
 DUGL3 = book_routine(
     "DUGL3", listing="II.5", lines="L590-599",
     inputs=("UGOL1", "UGOLD", "VEL"), outputs=("DUGL3",),
-    scalar=_f.dugl3, sweep=_s.dugl3_sweep, function=True, has_status=False,
+    chapter="operators", function=True,
     doc="""Direction set by the sign of a parameter: ``UGOL1 + sign(VEL)*|UGOLD|``.
 
     Listing II.5 (L590-599), operator function UGL3 of Table 2.  Typical use: the
@@ -199,7 +162,7 @@ DUGL3 = book_routine(
 DUGL4 = book_routine(
     "DUGL4", listing="II.6", lines="L601-612",
     inputs=("UGOL1", "UGOLD", "VEL"), outputs=("DUGL4",),
-    scalar=_f.dugl4, sweep=_s.dugl4_sweep, function=True, has_status=False,
+    chapter="operators", function=True,
     doc="""Direction of a vector on its line of action: UGOL1, reversed if VEL < 0.
 
     Listing II.6 (L601-612), operator function UGL4 of Table 2.  Returns
@@ -227,7 +190,7 @@ DUGL4 = book_routine(
 DUGL5 = book_routine(
     "DUGL5", listing="II.7", lines="L614-628",
     inputs=("PRX", "PRY"), outputs=("DUGL5",),
-    scalar=_f.dugl5, sweep=_s.dugl5_sweep, function=True, has_status=False,
+    chapter="operators", function=True,
     doc="""Direction angle of a vector from its projections, in (-pi/2, 3*pi/2).
 
     Listing II.7 (L614-628), eq. (2.2) at L383: ``atan(PRY/PRX)`` for PRX > 0,
@@ -248,7 +211,7 @@ DUGL5 = book_routine(
 DUGOL = book_routine(
     "DUGOL", listing="II.8", lines="L630-639",
     inputs=("FI",), outputs=("DUGOL",),
-    scalar=_f.dugol, sweep=_s.dugol_sweep, function=True, has_status=False,
+    chapter="operators", function=True,
     doc="""An angle made non-negative: FI if FI >= 0, else FI + 2*PI.
 
     Listing II.8 (L630-639), operator function UGOL.  One wrap only, as printed, so an
@@ -268,7 +231,7 @@ DUGOL = book_routine(
 DMOMNT = book_routine(
     "DMOMNT", listing="II.9", lines="L641-644",
     inputs=("R", "FI", "F", "G"), outputs=("DMOMNT",),
-    scalar=_f.dmomnt, sweep=_s.dmomnt_sweep, function=True, has_status=False,
+    chapter="operators", function=True,
     doc="""Moment of a force about the origin: the z-component of r x F.
 
     Listing II.9 (L641-644), operator function MOMNT of Table 2:
@@ -290,7 +253,7 @@ DMOMNT = book_routine(
 DOMEGA = book_routine(
     "DOMEGA", listing="II.10", lines="L648-660",
     inputs=("RAZMER", "VEKTOR", "UGOL"), outputs=("DOMEGA",),
-    scalar=_f.domega, sweep=_s.domega_sweep, function=True, has_status=False,
+    chapter="operators", function=True,
     lengths=("RAZMER",),
     doc="""Angular velocity (or acceleration) of a link from a relative velocity.
 
@@ -316,7 +279,7 @@ DOMEGA = book_routine(
 DVKT = book_routine(
     "DVKT", listing="II.11", lines="L664-680",
     inputs=("X1", "Y1", "X2", "Y2"), outputs=("RZ", "FI"),
-    scalar=_f.dvkt, sweep=_s.dvkt_sweep, has_status=False,
+    chapter="operators",
     doc="""Length and signed direction of the segment from (X1, Y1) to (X2, Y2).
 
     Listing II.11 (L664-680), operator function VKT of Table 2, eq. (2.10).
@@ -338,7 +301,7 @@ DVKT = book_routine(
 DSMVKT = book_routine(
     "DSMVKT", listing="II.12", lines="L684-700",
     inputs=("L1", "FI1", "L2", "FI2"), outputs=("L", "FI"),
-    scalar=_f.dsmvkt, sweep=_s.dsmvkt_sweep, has_status=False,
+    chapter="operators",
     doc="""Sum of two vectors given by magnitudes and directions.
 
     Listing II.12 (L684-700), operator function SMVKT, eq. (2.3).

@@ -15,22 +15,12 @@ same lines in normal form (ERRATA E-SYN-1), so a symmetric swing such as the boo
 
 from __future__ import annotations
 
-import math
-import warnings
-from collections import namedtuple
-
 import numpy as np
 
-from . import _sarkp
-from .errors import SignificanceWarning
-from .library import (ST_OK, ST_REQUIREMENT, ST_SIGNIFICANCE, ST_SINGULAR, Check,
-                      _first_index, book_routine, settle_arrays, status_error)
+from .library import ST_REQUIREMENT, ST_SINGULAR, Check, book_routine
 from .report import fortran_write
 
-_f = _sarkp.synthesis
-_s = _sarkp.sweeps_synthesis
-
-__all__ = ["DSNTZR", "DSNTZ1", "DSNTZ2", "DSNTZ3", "DSNTZK", "dsntz2_pivot"]
+__all__ = ["DSNTZR", "DSNTZ1", "DSNTZ2", "DSNTZ3", "DSNTZK"]
 
 
 # Requirements that the inputs alone decide, checked before the Fortran runs so that the
@@ -45,8 +35,6 @@ _DISTINCT_EXTREMES = Check(
 
 # ---- III.1 DSNTZR -------------------------------------------------------------------
 
-_DSNTZR_RESULT = namedtuple("DSNTZR", ["L1", "L2", "FI11"])
-_DSNTZR_STATUS = namedtuple("DSNTZR_status", ["L1", "L2", "FI11", "status"])
 _DSNTZR_MESSAGES = {
     ST_REQUIREMENT: "two of the three positions of C coincide in the crank's frame, or "
                     "the circle through them is centred on the crank pivot: no crank",
@@ -73,23 +61,16 @@ def dsntzr_report(LO, L3, FI1, FI3, L1, L2) -> str:
     return "\n".join(out)
 
 
-def _vectors(name, **arrays):
-    out = {}
-    for arg, value in arrays.items():
-        a = np.asarray(value, dtype=float)
-        if a.ndim < 1 or a.shape[-1] != 3:
-            raise ValueError(f"{name}: {arg} must hold three values (last axis of length "
-                             f"3), not shape {a.shape}")
-        bad = ~np.isfinite(a)
-        if bad.any():
-            idx = _first_index(bad, a.shape)
-            raise ValueError(f"{name}: {arg}{list(idx)} = {a[idx]!r} is not a finite number")
-        out[arg] = a
-    return out
+def _dsntzr_report(i, o):
+    return dsntzr_report(i["LO"], i["L3"], i["FI1"], i["FI3"], o[0], o[1])
 
 
-def DSNTZR(LO, L3, FI1, FI3, AAA=1.0, *, on_error="raise"):
-    """Three-position synthesis of a four-bar or a crank-slider (listing III.1,
+DSNTZR = book_routine(
+    "DSNTZR", listing="III.1", lines="L887-1019", chapter="synthesis",
+    inputs=("LO", "L3", "FI1", "FI3", "AAA"), outputs=("L1", "L2", "FI11"),
+    tables={"LO": 3, "FI1": 3, "FI3": 3}, messages=_DSNTZR_MESSAGES,
+    report=_dsntzr_report,
+    doc="""Three-position synthesis of a four-bar or a crank-slider (listing III.1,
     L887-1019; Table 3, L897-917).
 
     The book's call is ``CALL DSNTZR(LO, L3, FI1, FI3, AAA, L1, L2)`` (III.1, printed
@@ -116,8 +97,6 @@ def DSNTZR(LO, L3, FI1, FI3, AAA=1.0, *, on_error="raise"):
         direction of the offset (1.570 in the book's example, L1366).
     AAA : float, optional
         0 prints the book's report (L1006-1017); anything else is silent (default).
-    on_error : {"raise", "nan"}
-        "nan" returns NaN where the synthesis fails, plus a ``status`` field.
 
     Returns
     -------
@@ -138,46 +117,7 @@ def DSNTZR(LO, L3, FI1, FI3, AAA=1.0, *, on_error="raise"):
     -----
     Three positions of the same assembly branch are not guaranteed (the classical
     branch defect of three-position synthesis); nothing checks it, as in the book.
-    """
-    if on_error not in ("raise", "nan"):
-        raise ValueError(f"DSNTZR: on_error must be 'raise' or 'nan', not {on_error!r}")
-    v = _vectors("DSNTZR", LO=LO, FI1=FI1, FI3=FI3)
-    l3 = np.asarray(L3, dtype=float)
-    if not np.all(np.isfinite(l3)):
-        idx = _first_index(~np.isfinite(l3), l3.shape)
-        raise ValueError(f"DSNTZR: L3{list(idx)} = {l3[idx]!r} is not a finite number")
-    aaa = float(AAA)
-    shape = np.broadcast_shapes(v["LO"].shape[:-1], v["FI1"].shape[:-1],
-                                v["FI3"].shape[:-1], l3.shape)
-    if shape == ():
-        lo, fi1, fi3 = v["LO"], v["FI1"], v["FI3"]
-        l1, l2, fi11, status = _f.dsntzr(lo, float(l3), fi1, fi3, aaa)
-        status = int(status)
-        if status not in (ST_OK, ST_SIGNIFICANCE):
-            if on_error == "raise":
-                raise status_error("DSNTZR", status, None, _DSNTZR_MESSAGES)
-            l1 = l2 = fi11 = math.nan
-        elif status == ST_SIGNIFICANCE:
-            warnings.warn("DSNTZR: GELG reported a loss of significance (IER > 0); the "
-                          "result was kept", SignificanceWarning, stacklevel=2)
-        if aaa == 0.0 and status in (ST_OK, ST_SIGNIFICANCE):
-            print(dsntzr_report(lo, float(l3), fi1, fi3, l1, l2))
-        if on_error == "nan":
-            return _DSNTZR_STATUS(float(l1), float(l2), float(fi11), status)
-        return _DSNTZR_RESULT(float(l1), float(l2), float(fi11))
-    n = int(np.prod(shape))
-
-    def cols(a):
-        return np.asfortranarray(np.broadcast_to(a, shape + (3,)).reshape(n, 3).T)
-
-    l1, l2, fi11, status = _s.dsntzr_sweep(cols(v["LO"]), np.broadcast_to(l3, shape).ravel(),
-                                           cols(v["FI1"]), cols(v["FI3"]))
-    out = [np.asarray(o, dtype=float).reshape(shape) for o in (l1, l2, fi11)]
-    status = np.asarray(status).reshape(shape)
-    out = settle_arrays("DSNTZR", out, status, on_error, _DSNTZR_MESSAGES)
-    if on_error == "nan":
-        return _DSNTZR_STATUS(*out, status)
-    return _DSNTZR_RESULT(*out)
+    """)
 
 
 # ---- III.2 DSNTZ1 -------------------------------------------------------------------
@@ -197,7 +137,7 @@ def _dsntz1_report(i, o):
 DSNTZ1 = book_routine(
     "DSNTZ1", listing="III.2", lines="L1023-1105",
     inputs=["KW3", "FI31", "FI32", "L3", "XD", "Q", "AAA"], outputs=["L1", "L2", "LO"],
-    scalar=_f.dsntz1, sweep=_s.dsntz1_sweep, lengths=["L3"],
+    chapter="synthesis", lengths=["L3"],
     checks=(_KW3_ABOVE_ONE, _DISTINCT_EXTREMES),
     report=_dsntz1_report,
     messages={
@@ -289,23 +229,17 @@ _DSNTZ2_FORMATS = (
 )
 
 
-def dsntz2_pivot():
-    """The crank pivot (XA, YA) found by the last scalar DSNTZ2 call (the book prints
-    it in DSNTZ2's report, L1174-1179, but does not return it)."""
-    return float(_f.dsntz2_xa), float(_f.dsntz2_ya)
-
-
 def _dsntz2_report(i, o):
     return "\n".join([fortran_write(_DSNTZ2_FORMATS[0]),
                       fortran_write(_DSNTZ2_FORMATS[1], [i["KW3"], i["FI3"], i["L3"], i["XD"],
-                                                  i["GMIN"], i["GMAX"], *o,
-                                                  *dsntz2_pivot()])])
+                                                  i["GMIN"], i["GMAX"], *o])])
 
 
 DSNTZ2 = book_routine(
     "DSNTZ2", listing="III.3", lines="L1109-1181",
-    inputs=["KW3", "FI3", "L3", "XD", "GMIN", "GMAX", "AAA"], outputs=["L1", "L2", "LO"],
-    scalar=_f.dsntz2, sweep=_s.dsntz2_sweep, lengths=["L3"],
+    inputs=["KW3", "FI3", "L3", "XD", "GMIN", "GMAX", "AAA"],
+    outputs=["L1", "L2", "LO", "XA", "YA"],
+    chapter="synthesis", lengths=["L3"],
     checks=(_KW3_ABOVE_ONE,), report=_dsntz2_report,
     messages={
         ST_REQUIREMENT: "no crank-rocker meets the requirement: the swing "
@@ -344,9 +278,9 @@ DSNTZ2 = book_routine(
 
     Returns
     -------
-    DSNTZ2(L1, L2, LO)
-        Crank AB, coupler BC, frame AD.  The crank pivot of the last scalar call is
-        :func:`dsntz2_pivot`.
+    DSNTZ2(L1, L2, LO, XA, YA)
+        Crank AB, coupler BC, frame AD, and the crank pivot A = (XA, YA), which the
+        book prints in the report (L1173) but has no argument for.
 
     Raises
     ------
@@ -375,8 +309,7 @@ def _dsntz3_report(i, o):
 DSNTZ3 = book_routine(
     "DSNTZ3", listing="III.4", lines="L1185-1264",
     inputs=["XB1", "YB1", "XB2", "YB2", "XC1", "YC1", "XC2", "YC2", "FI1", "ALC1", "AAA"],
-    outputs=["L1", "L3", "LO"], scalar=_f.dsntz3, sweep=_s.dsntz3_sweep,
-    report=_dsntz3_report,
+    outputs=["L1", "L3", "LO"], chapter="synthesis", report=_dsntz3_report,
     messages={
         ST_REQUIREMENT: "the two positions of B (or of C) coincide, or a length comes out "
                         "zero",
@@ -446,7 +379,7 @@ def _dsntzk_report(i, o):
 DSNTZK = book_routine(
     "DSNTZK", listing="III.6", lines="L1397-1437",
     inputs=["KW3", "S", "H", "Q", "AAA"], outputs=["L1", "LO", "L3"],
-    scalar=_f.dsntzk, sweep=_s.dsntzk_sweep, lengths=["S"], nonnegative=["H"],
+    chapter="synthesis", lengths=["S"], nonnegative=["H"],
     checks=(_KW3_ABOVE_ONE,), report=_dsntzk_report,
     messages={ST_REQUIREMENT: "the reserve H is not smaller than the slotted link "
                               "L3 = S/(2 sin BETA) (oscillating) or S/2 (rotating): "

@@ -82,11 +82,11 @@ def compute(card=None, positions: int = 18, angles=None) -> dict:
         raise AssemblyError(f"II.13: the four-bar cannot be assembled at FI = {fi1[k]:.4f}")
     fi2 = fiac + np.arccos(cos_delta)          # L852: the "+ delta" branch, fixed
     xb, yb = xa + L2 * np.cos(fi2), ya + L2 * np.sin(fi2)
-    fi3 = DUGL1(LO, 0.0, xb, yb).DUGL1
+    fi3 = DUGL1(LO, 0.0, xb, yb)
     xd, yd = xb + LBD * np.cos(fi2 + (pi - NU)), yb + LBD * np.sin(fi2 + (pi - NU))
 
     va = abs(W1 * L1)
-    ala = DUGL3(fi1, pi / 2.0, W1).DUGL3       # E-II13-1: the listing calls DUGL1 here
+    ala = DUGL3(fi1, pi / 2.0, W1)       # E-II13-1: the listing calls DUGL1 here
     vbc, vba = np.empty_like(fi1), np.empty_like(fi1)
     for k in range(fi1.size):                  # eq. (2.17)-(2.19), one GELG per position
         a = [[math.cos(fi3[k] + pi / 2.0), -math.cos(fi2[k] + pi / 2.0)],
@@ -95,14 +95,14 @@ def compute(card=None, positions: int = 18, angles=None) -> dict:
         if ier < 0:
             raise SingularError(f"II.13: dead centre at FI = {fi1[k]:.4f}")
         vbc[k], vba[k] = r
-    alba = DUGL3(fi2, pi / 2.0, vba).DUGL3
-    albc = DUGL3(fi3, pi / 2.0, vbc).DUGL3
-    w2 = DOMEGA(L2, vba, alba - fi2).DOMEGA    # E-II13-3: the listing passes 4 arguments
-    w3 = DOMEGA(L3, vbc, albc - fi3).DOMEGA
+    alba = DUGL3(fi2, pi / 2.0, vba)
+    albc = DUGL3(fi3, pi / 2.0, vbc)
+    w2 = DOMEGA(L2, vba, alba - fi2)    # E-II13-3: the listing passes 4 arguments
+    w3 = DOMEGA(L3, vbc, albc - fi3)
     # E-II13-4: v_B has magnitude |VBC| in the direction ALBC; the listing passes the
     # signed VBC with ALBC, reversing v_B whenever VBC < 0.  Fig. 4's ALD depends on it.
     vb = vbc if printed else np.abs(vbc)
-    vd, ald = DSMVKT(vb, albc, np.abs(w2) * LBD, DUGL3(fi2 + pi - NU, pi / 2.0, w2).DUGL3)
+    vd, ald = DSMVKT(vb, albc, np.abs(w2) * LBD, DUGL3(fi2 + pi - NU, pi / 2.0, w2))
     return dict(zip(COLUMNS, (fi1, fi2, fi3, xb, yb, xd, yd, vd, ald, w2, w3)))
 
 

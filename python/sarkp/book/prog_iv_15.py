@@ -133,7 +133,10 @@ def compute(card=None, positions: int | None = None, angles=None,
 
     def call(routine, *args):
         # under "nan" a position where an earlier group failed (NaN inputs) is NaN here too
-        return tuple(routine(*args, on_error=on_error))[:len(routine.spec.outputs)]
+        out = routine(*args, on_error=on_error)
+        if routine.spec.function:                   # a number, or (number, status)
+            return (out[0] if on_error == "nan" else out,)
+        return tuple(out)[:len(routine.spec.outputs)]
 
     # positions (L2495-2507)
     YA = ROA * np.sin(FI)

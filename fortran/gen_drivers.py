@@ -1,0 +1,374 @@
+"""Generate the Python-facing drivers of one chapter module (run by meson at build time).
+
+    python gen_drivers.py CHAPTER.f90 OUT.f90 [ROUTINE ...]
+
+Reads the public procedures of the Fortran module in CHAPTER.f90 (or only the ROUTINEs
+named) and writes module ``drv_<module>`` with, for each book routine NAME:
+
+* ``NAME_1(sarkp_mode, <the book's arguments>, <COMMON results>, sarkp_status)``: one call
+  in the caller's mode;
+* ``NAME_n(sarkp_mode, sarkp_n, sarkp_inc, <inputs as arrays>, <outputs as arrays>,
+  sarkp_status)``: a loop over ``sarkp_n`` positions, for routines whose arguments are
+  scalars or fixed-size arrays.  Input k of position i is element ``1 + (i-1)*sarkp_inc(k)``,
+  so an input that is the same at every position is passed once (``sarkp_inc(k) = 0``).
+
+Every driver sets the mode (prmtr's ``set_mode``) inside the same Fortran call, so no other
+Python thread can change it in between.  ``sarkp_status`` is the routine's trailing IER when
+it has one (a prmtr status code), else ``st_ok``; a result that is not a finite number while
+the routine reported success becomes ``st_range``.  A book FUNCTION's value is ``fres``.
+
+The chapter modules must follow the conventions of fortran/README (one declaration line per
+group of dummy arguments: ``real(dp), intent(in) :: a, b(n)``; ``!sarkp common: x, y`` as the
+first line after a subroutine statement names the module variables returned with it;
+``!sarkp ier-is-output`` keeps a trailing IER as an ordinary output).
+"""
+
+from __future__ import annotations
+
+import re
+import sys
+from dataclasses import dataclass, field
+from pathlib import Path
+
+TYPES = {"real(dp)": "real(dp)", "integer": "integer"}
+
+
+@dataclass
+class Arg:
+    name: str
+    type: str
+    intent: str = ""            # in, out, inout ('' for a module variable)
+    dims: tuple = ()            # bounds as written, e.g. ("m", "n") or ("3",)
+
+    @property
+    def fixed(self) -> bool:
+        """Scalar or an array whose bounds are literal numbers."""
+        return all(d.isdigit() for d in self.dims)
+
+    def decl(self, intent=None, dims=None) -> str:
+        intent = self.intent if intent is None else intent
+        dims = self.dims if dims is None else dims
+        shape = f"({', '.join(dims)})" if dims else ""
+        text = f"{self.type}"
+        if intent:
+            text += f", intent({intent})"
+        return f"{text} :: {self.name}{shape}"
+
+
+@dataclass
+class Procedure:
+    name: str
+    kind: str                   # subroutine | function
+    argnames: list
+    args: dict = field(default_factory=dict)
+    commons: list = field(default_factory=list)
+    ier_is_output: bool = False
+
+    @property
+    def status_arg(self):
+        last = self.argnames[-1] if self.argnames else None
+        if (last == "ier" and not self.ier_is_output and self.args[last].type == "integer"
+                and self.args[last].intent == "out"):
+            return last
+        return None
+
+    @property
+    def sweepable(self) -> bool:
+        return all(a.fixed and a.intent != "inout" for a in self.args.values())
+
+
+def logical_lines(text: str):
+    """Statements with continuations joined and comments dropped; ``!sarkp`` kept."""
+    out, pending = [], ""
+    for raw in text.splitlines():
+        stripped = raw.strip()
+        if stripped.lower().startswith("!sarkp"):
+            out.append(stripped)
+            continue
+        line = _strip_comment(raw).rstrip()
+        if not line.strip():
+            continue
+        if pending:
+            line = pending + " " + line.strip().lstrip("&").strip()
+        if line.endswith("&"):
+            pending = line[:-1].rstrip()
+            continue
+        pending = ""
+        out.append(line.strip())
+    return out
+
+
+def _strip_comment(line: str) -> str:
+    quote = None
+    for i, ch in enumerate(line):
+        if quote:
+            if ch == quote:
+                quote = None
+        elif ch in "'\"":
+            quote = ch
+        elif ch == "!":
+            return line[:i]
+    return line
+
+
+def split_top(text: str):
+    """Split on commas outside parentheses."""
+    parts, depth, cur = [], 0, ""
+    for ch in text:
+        if ch == "(":
+            depth += 1
+        elif ch == ")":
+            depth -= 1
+        if ch == "," and depth == 0:
+            parts.append(cur.strip())
+            cur = ""
+        else:
+            cur += ch
+    if cur.strip():
+        parts.append(cur.strip())
+    return parts
+
+
+DECL = re.compile(r"^(real\(dp\)|integer)\s*((?:,[^:]*)?)::\s*(.*)$", re.I)
+HEAD = re.compile(r"^(?:(?:pure|elemental|recursive|impure)\s+)*(?:(real\(dp\)|integer)\s+)?"
+                  r"(subroutine|function)\s+(\w+)\s*\(([^)]*)\)", re.I)
+END = re.compile(r"^end\s*(subroutine|function)\b", re.I)
+
+
+def parse_entities(rest: str):
+    for ent in split_top(rest):
+        ent = ent.split("=")[0].strip()
+        m = re.match(r"(\w+)\s*(?:\((.*)\))?$", ent)
+        if not m:
+            raise SystemExit(f"gen_drivers: cannot read the declaration {ent!r}")
+        dims = tuple(d.strip().lower() for d in split_top(m.group(2))) if m.group(2) else ()
+        yield m.group(1).lower(), dims
+
+
+def parse(path: Path):
+    lines = logical_lines(path.read_text(encoding="utf-8"))
+    module, public, variables, procs = None, set(), {}, []
+    in_contains, current = False, None
+    for line in lines:
+        low = line.lower()
+        if module is None:
+            m = re.match(r"module\s+(\w+)$", low)
+            if m:
+                module = m.group(1)
+            continue
+        if current is not None:
+            if low.startswith("!sarkp"):
+                directive = low[len("!sarkp"):].strip()
+                if directive.startswith("common:"):
+                    current.commons += [c.strip() for c in directive[7:].split(",") if c.strip()]
+                elif directive == "ier-is-output":
+                    current.ier_is_output = True
+                continue
+            if END.match(low):
+                procs.append(current)
+                current = None
+                continue
+            m = DECL.match(line)
+            if m:
+                attrs = m.group(2).lower()
+                im = re.search(r"intent\s*\(\s*(in\s*out|inout|in|out)\s*\)", attrs)
+                dm = re.search(r"dimension\s*\((.*)\)", attrs)
+                for name, dims in parse_entities(m.group(3)):
+                    if name in current.argnames:
+                        if dm and not dims:
+                            dims = tuple(d.strip() for d in split_top(dm.group(1)))
+                        current.args[name] = Arg(name, m.group(1).lower(),
+                                                 im.group(1).replace(" ", "") if im else "",
+                                                 dims)
+            continue
+        if low == "contains":
+            in_contains = True
+            continue
+        if not in_contains:
+            m = re.match(r"public\s*::\s*(.*)$", low)
+            if m:
+                public |= {p.strip() for p in m.group(1).split(",")}
+                continue
+            m = DECL.match(line)
+            if m and "public" in m.group(2).lower():
+                for name, dims in parse_entities(m.group(3)):
+                    variables[name] = Arg(name, m.group(1).lower(), "", dims)
+                    public.add(name)
+            continue
+        m = HEAD.match(line)
+        if m:
+            argnames = [a.strip().lower() for a in m.group(4).split(",") if a.strip()]
+            current = Procedure(m.group(3).lower(), m.group(2).lower(), argnames)
+            current.result_type = (m.group(1) or "").lower()
+    procs = [p for p in procs if p.name in public]
+    for p in procs:
+        missing = [a for a in p.argnames if a not in p.args or not p.args[a].intent]
+        if missing:
+            raise SystemExit(f"gen_drivers: {path.name}: {p.name}: no intent declared for "
+                             f"{', '.join(missing)}")
+        for c in p.commons:
+            if c not in variables:
+                raise SystemExit(f"gen_drivers: {path.name}: {p.name}: COMMON result {c} is "
+                                 f"not a public module variable")
+    return module, procs, variables
+
+
+def finite_test(items):
+    """The test that every (expression, is_array) in ``items`` is a finite number."""
+    tests = [f"all(abs({e}) <= huge(1.0_dp))" if array else f"abs({e}) <= huge(1.0_dp)"
+             for e, array in items]
+    return " .and. &\n          ".join(tests)
+
+
+def wrap_list(names, indent="      "):
+    """Names separated by commas, in lines of at most about 90 characters."""
+    lines, cur = [], ""
+    for n in names:
+        piece = n if not cur else cur + ", " + n
+        if len(piece) > 80 and cur:
+            lines.append(cur + ",")
+            cur = n
+        else:
+            cur = piece
+    lines.append(cur)
+    return (" &\n" + indent).join(lines)
+
+
+def scalar_driver(mod, p, variables):
+    w = []
+    commons = [variables[c] for c in p.commons]
+    names = ["sarkp_mode"] + p.argnames + [c.name for c in commons]
+    if p.kind == "function":
+        names.append("fres")
+    if p.status_arg is None:
+        names.append("sarkp_status")
+    w.append(f"  subroutine {p.name}_1({wrap_list(names)})")
+    w.append("    integer, intent(in) :: sarkp_mode")
+    for a in p.argnames:
+        arg = p.args[a]
+        w.append("    " + arg.decl())
+        if arg.intent == "inout":
+            w.append(f"    !f2py intent(in,out) :: {a}")
+    for c in commons:
+        w.append("    " + Arg(c.name, c.type, "out", c.dims).decl())
+    if p.kind == "function":
+        w.append(f"    {p.result_type or 'real(dp)'}, intent(out) :: fres")
+    if p.status_arg is None:
+        w.append("    integer, intent(out) :: sarkp_status")
+    status = p.status_arg or "sarkp_status"
+    w.append("    call set_mode(sarkp_mode)")
+    if p.kind == "function":
+        w.append(f"    fres = {p.name}({wrap_list(p.argnames)})")
+    else:
+        w.append(f"    call {p.name}({wrap_list(p.argnames)})")
+    if p.status_arg is None:
+        w.append("    sarkp_status = st_ok")
+    for c in commons:
+        w.append(f"    {c.name} = {mod}_{c.name}")
+    real_out = [(a, bool(p.args[a].dims)) for a in p.argnames
+                if p.args[a].intent in ("out", "inout") and p.args[a].type == "real(dp)"]
+    real_out += [(c.name, bool(c.dims)) for c in commons if c.type == "real(dp)"]
+    if p.kind == "function" and (p.result_type or "real(dp)") == "real(dp)":
+        real_out.append(("fres", False))
+    if real_out:
+        w.append(f"    if (succeeded({status})) then")
+        w.append(f"      if (.not. ({finite_test(real_out)})) {status} = st_range")
+        w.append("    end if")
+    w.append(f"  end subroutine {p.name}_1")
+    return w
+
+
+def sweep_driver(mod, p, variables):
+    commons = [variables[c] for c in p.commons]
+    ins = [a for a in p.argnames if p.args[a].intent == "in"]
+    outs = [a for a in p.argnames if p.args[a].intent == "out" and a != p.status_arg]
+    extra = [c.name for c in commons]
+    result = ["fres"] if p.kind == "function" else []
+    names = (["sarkp_mode", "sarkp_n", "sarkp_inc"] + ins + outs + extra + result
+             + ["sarkp_status"])
+    w = [f"  subroutine {p.name}_n({wrap_list(names)})",
+         "    integer, intent(in) :: sarkp_mode, sarkp_n",
+         f"    integer, intent(in) :: sarkp_inc({len(ins)})"]
+    for a in ins:
+        arg = p.args[a]
+        w.append("    " + arg.decl(dims=arg.dims + ("*",)))
+    for a in outs:
+        arg = p.args[a]
+        w.append("    " + arg.decl(dims=arg.dims + ("sarkp_n",)))
+    for c in commons:
+        w.append("    " + Arg(c.name, c.type, "out", c.dims + ("sarkp_n",)).decl())
+    if result:
+        w.append(f"    {p.result_type or 'real(dp)'}, intent(out) :: fres(sarkp_n)")
+    w.append("    integer, intent(out) :: sarkp_status(sarkp_n)")
+    w.append("    integer :: i")
+    w.append("    call set_mode(sarkp_mode)")
+    w.append("    do i = 1, sarkp_n")
+
+    def ref(a):
+        arg = p.args[a]
+        if arg.intent == "in":
+            index = f"1 + (i - 1)*sarkp_inc({ins.index(a) + 1})"
+        else:
+            index = "i"
+        return f"{a}({':, ' * len(arg.dims)}{index})"
+
+    actual = [("sarkp_status(i)" if a == p.status_arg else ref(a)) for a in p.argnames]
+    call = wrap_list(actual, indent="          ")
+    if p.kind == "function":
+        w.append(f"      fres(i) = {p.name}({call})")
+    else:
+        w.append(f"      call {p.name}({call})")
+    if p.status_arg is None:
+        w.append("      sarkp_status(i) = st_ok")
+    for c in commons:
+        w.append(f"      {c.name}({':, ' * len(c.dims)}i) = {mod}_{c.name}")
+    real_out = [(f"{a}({':, ' * len(p.args[a].dims)}i)", bool(p.args[a].dims)) for a in outs
+                if p.args[a].type == "real(dp)"]
+    real_out += [(f"{c.name}({':, ' * len(c.dims)}i)", bool(c.dims)) for c in commons
+                 if c.type == "real(dp)"]
+    if p.kind == "function" and (p.result_type or "real(dp)") == "real(dp)":
+        real_out.append(("fres(i)", False))
+    if real_out:
+        w.append("      if (succeeded(sarkp_status(i))) then")
+        w.append(f"        if (.not. ({finite_test(real_out)})) sarkp_status(i) = st_range")
+        w.append("      end if")
+    w.append("    end do")
+    w.append(f"  end subroutine {p.name}_n")
+    return w
+
+
+def generate(source: Path, only):
+    module, procs, variables = parse(source)
+    if only:
+        procs = [p for p in procs if p.name in only]
+        if {p.name for p in procs} != set(only):
+            raise SystemExit(f"gen_drivers: {source.name} has no public "
+                             f"{set(only) - {p.name for p in procs}}")
+    renames = [f"{module}_{c} => {c}" for p in procs for c in p.commons]
+    uses = sorted({p.name for p in procs}) + sorted(set(renames))
+    w = [f"! drv_{module}.f90 -- generated at build time by fortran/gen_drivers.py from",
+         f"! {source.name}: do not edit.  The Python drivers of the book routines of module",
+         f"! {module}: NAME_1 (one call) and NAME_n (a loop over positions), each in the mode",
+         "! the caller passes.",
+         f"module drv_{module}",
+         "  use prmtr, only: dp, set_mode, succeeded, st_ok, st_range"]
+    w.append(f"  use {module}, only: " + wrap_list(uses))
+    w += ["  implicit none", "  private",
+          "  public :: " + wrap_list(
+              [f"{p.name}_1" for p in procs] + [f"{p.name}_n" for p in procs if p.sweepable]),
+          "", "contains", ""]
+    for p in procs:
+        w += scalar_driver(module, p, variables) + [""]
+        if p.sweepable:
+            w += sweep_driver(module, p, variables) + [""]
+    w.append(f"end module drv_{module}")
+    return "\n".join(w) + "\n"
+
+
+def main(argv):
+    source, out, *only = argv
+    Path(out).write_text(generate(Path(source), only), encoding="utf-8")
+
+
+if __name__ == "__main__":
+    main(sys.argv[1:])
