@@ -15,8 +15,9 @@
 ! the tool's profile angle alpha = 20 deg = PI/9 (h_a* = 1, c* = 0.25) throughout.
 !
 ! COMMON results are public module variables named <block>_<book name> (the blocks share
-! names such as A, AW, D1), listed on each routine's `!sarkp common:` line.  /ZUB/ also holds
-! the book's COMMON inputs ZKRN, ZKRW, DZ (set by the main program, L3815-3817).
+! names such as A, AW, D1), returned under the book's names (`!sarkp common: a => zpc_a`).
+! /ZUB/ also holds the book's COMMON inputs ZKRN, ZKRW, DZ (set by the main program,
+! L3815-3817).
 !
 ! Additions to the book (it reports nothing: ARCOS failed or nonsense was printed): a
 ! trailing IER, a prmtr status code --
@@ -214,7 +215,7 @@ contains
   ! restored: truncating integer division, IABS(Z2), no neighbourhood test.
   ! No admissible set: st_requirement (the book prints its message 10, L3789).
   subroutine dzbpl(ks, p, q, l2, l3, z1min, z1max, shema, ier)
-    !sarkp common: zub_z1, zub_z2, zub_z3, zub_z4
+    !sarkp common: z1 => zub_z1, z2 => zub_z2, z3 => zub_z3, z4 => zub_z4
     integer, intent(in) :: ks, p, q, l2, l3, z1min, z1max, shema
     integer, intent(out) :: ier
     logical :: found
@@ -524,7 +525,8 @@ contains
   ! as-printed: DUGINV's iteration (E-DUGINV-1), the spur tip formulas m z + 2(1+x-dy) m
   ! and arccos(m z cos(alpha)/DA) for every beta (Fig. 47b, beta = 16 deg, depends on them).
   subroutine dgmzpc(m, z1, z2, beta, x1, x2, bw, aaa, ier)
-    !sarkp common: zpc_a, zpc_xs, zpc_alfaw, zpc_aw, zpc_xy, zpc_xur, zpc_e
+    !sarkp common: a => zpc_a, xs => zpc_xs, alfaw => zpc_alfaw, aw => zpc_aw
+    !sarkp common: xy => zpc_xy, xur => zpc_xur, e => zpc_e
     real(dp), intent(in) :: m, z1, z2, beta, x1, x2, bw, aaa
     integer, intent(out) :: ier
     real(dp) :: alfa, alfat, invalw, alfaw, aw, xy, xur, da1, da2, db1, db2, ala1, ala2, &
@@ -604,7 +606,11 @@ contains
   ! Refused (st_requirement): z2 <= z1, z2 <= ZO2, a negative involute, a tip circle inside
   ! its base circle, pointed teeth (SA1 or SA2 <= 0), and (corrected) an undercut pinion.
   subroutine dgmzvn(m, z1, z2, x1, x2, zo2, do, xo, dao, aaa, ier)
-    !sarkp common: zvn_a, zvn_xd, zvn_alfaw, zvn_aw, zvn_d1, zvn_d2, zvn_dw1, zvn_dw2, zvn_xy, zvn_xur, zvn_da1, zvn_da2, zvn_df1, zvn_df2, zvn_h1, zvn_h2, zvn_sa1, zvn_sa2, zvn_ealfa
+    !sarkp common: a => zvn_a, xd => zvn_xd, alfaw => zvn_alfaw, aw => zvn_aw
+    !sarkp common: d1 => zvn_d1, d2 => zvn_d2, dw1 => zvn_dw1, dw2 => zvn_dw2
+    !sarkp common: xy => zvn_xy, xur => zvn_xur, da1 => zvn_da1, da2 => zvn_da2
+    !sarkp common: df1 => zvn_df1, df2 => zvn_df2, h1 => zvn_h1, h2 => zvn_h2
+    !sarkp common: sa1 => zvn_sa1, sa2 => zvn_sa2, ealfa => zvn_ealfa
     real(dp), intent(in) :: m, z1, z2, x1, x2, zo2, do, xo, dao, aaa
     integer, intent(out) :: ier
     real(dp) :: alfa, a, xd, invalw, alfaw, aw, d1, d2, u, dw1, dw2, xy, xur, invo2, alfao2, &
@@ -703,7 +709,10 @@ contains
   ! threaded length, B2 wheel face width, R throat radius.  The same in both modes.
   ! Refused (st_requirement): DW1 <= 0 (x <= -q/2), a wheel tip diameter <= 0.
   subroutine dchrvc(m, q, z1, z2, aw, aaa, ier)
-    !sarkp common: chrvc_x, chrvc_d1, chrvc_d2, chrvc_dw1, chrvc_g, chrvc_gw, chrvc_h1, chrvc_ha1, chrvc_da1, chrvc_da2, chrvc_dam2, chrvc_b1, chrvc_b2, chrvc_r
+    !sarkp common: x => chrvc_x, d1 => chrvc_d1, d2 => chrvc_d2, dw1 => chrvc_dw1
+    !sarkp common: g => chrvc_g, gw => chrvc_gw, h1 => chrvc_h1, ha1 => chrvc_ha1
+    !sarkp common: da1 => chrvc_da1, da2 => chrvc_da2, dam2 => chrvc_dam2, b1 => chrvc_b1
+    !sarkp common: b2 => chrvc_b2, r => chrvc_r
     real(dp), intent(in) :: m, q, z1, z2, aw, aaa
     integer, intent(out) :: ier
     real(dp) :: x, dw1, da2

@@ -19,7 +19,9 @@ the routine reported success becomes ``st_range``.  A book FUNCTION's value is `
 
 The chapter modules must follow the conventions of fortran/README (one declaration line per
 group of dummy arguments: ``real(dp), intent(in) :: a, b(n)``; ``!sarkp common: x, y`` as the
-first line after a subroutine statement names the module variables returned with it;
+first line after a subroutine statement names the module variables returned with it, and
+``!sarkp common: a => zpc_a`` returns module variable ``zpc_a`` as the result ``a`` (several
+such lines may follow one another);
 ``!sarkp ier-is-output`` keeps a trailing IER as an ordinary output).
 """
 
@@ -62,6 +64,9 @@ class Procedure:
     argnames: list
     args: dict = field(default_factory=dict)
     commons: list = field(default_factory=list)
+    # result name of each COMMON variable (``!sarkp common: a => zpc_a`` names the result
+    # ``a``: two COMMON blocks may share a book name, module variables cannot)
+    common_names: dict = field(default_factory=dict)
     ier_is_output: bool = False
 
     @property
@@ -160,7 +165,12 @@ def parse(path: Path):
             if low.startswith("!sarkp"):
                 directive = low[len("!sarkp"):].strip()
                 if directive.startswith("common:"):
-                    current.commons += [c.strip() for c in directive[7:].split(",") if c.strip()]
+                    for c in (c.strip() for c in directive[7:].split(",")):
+                        if c:
+                            result, _, var = c.rpartition("=>")
+                            var = var.strip()
+                            current.commons.append(var)
+                            current.common_names[var] = result.strip() or var
                 elif directive == "ier-is-output":
                     current.ier_is_output = True
                 continue
@@ -234,14 +244,23 @@ def wrap_list(names, indent="      "):
     return (" &\n" + indent).join(lines)
 
 
+def _commons(p, variables):
+    """The COMMON results of ``p`` as Args named by their result names, with the module
+    variables they copy."""
+    return [(Arg(p.common_names[c], variables[c].type, "", variables[c].dims), c)
+            for c in p.commons]
+
+
 def scalar_driver(mod, p, variables):
     w = []
-    commons = [variables[c] for c in p.commons]
-    names = ["sarkp_mode"] + p.argnames + [c.name for c in commons]
+    pairs = _commons(p, variables)
+    commons = [c for c, _ in pairs]
+    # the status comes last (Python reads it there), after the COMMON results
+    names = (["sarkp_mode"] + [a for a in p.argnames if a != p.status_arg]
+             + [c.name for c in commons])
     if p.kind == "function":
         names.append("fres")
-    if p.status_arg is None:
-        names.append("sarkp_status")
+    names.append(p.status_arg or "sarkp_status")
     w.append(f"  subroutine {p.name}_1({wrap_list(names)})")
     w.append("    integer, intent(in) :: sarkp_mode")
     for a in p.argnames:
@@ -263,8 +282,8 @@ def scalar_driver(mod, p, variables):
         w.append(f"    call {p.name}({wrap_list(p.argnames)})")
     if p.status_arg is None:
         w.append("    sarkp_status = st_ok")
-    for c in commons:
-        w.append(f"    {c.name} = {mod}_{c.name}")
+    for c, var in pairs:
+        w.append(f"    {c.name} = {mod}_{var}")
     real_out = [(a, bool(p.args[a].dims)) for a in p.argnames
                 if p.args[a].intent in ("out", "inout") and p.args[a].type == "real(dp)"]
     real_out += [(c.name, bool(c.dims)) for c in commons if c.type == "real(dp)"]
@@ -279,7 +298,8 @@ def scalar_driver(mod, p, variables):
 
 
 def sweep_driver(mod, p, variables):
-    commons = [variables[c] for c in p.commons]
+    pairs = _commons(p, variables)
+    commons = [c for c, _ in pairs]
     ins = [a for a in p.argnames if p.args[a].intent == "in"]
     outs = [a for a in p.argnames if p.args[a].intent == "out" and a != p.status_arg]
     extra = [c.name for c in commons]
@@ -320,8 +340,8 @@ def sweep_driver(mod, p, variables):
         w.append(f"      call {p.name}({call})")
     if p.status_arg is None:
         w.append("      sarkp_status(i) = st_ok")
-    for c in commons:
-        w.append(f"      {c.name}({':, ' * len(c.dims)}i) = {mod}_{c.name}")
+    for c, var in pairs:
+        w.append(f"      {c.name}({':, ' * len(c.dims)}i) = {mod}_{var}")
     real_out = [(f"{a}({':, ' * len(p.args[a].dims)}i)", bool(p.args[a].dims)) for a in outs
                 if p.args[a].type == "real(dp)"]
     real_out += [(f"{c.name}({':, ' * len(c.dims)}i)", bool(c.dims)) for c in commons

@@ -114,6 +114,9 @@ def f2py_signature(wrapper):
         args, opt = args.split("[", 1)
         optional = [a.strip() for a in opt.rstrip("]").split(",") if a.strip()]
     required = [a.strip() for a in args.split(",") if a.strip()]
+    # f2py appends _bn to an argument named like a C keyword (DGMZVN's cutter diameter DO)
+    required, optional, rets = ([a[:-3] if a.endswith("_bn") else a for a in names]
+                                for names in (required, optional, rets))
     return required, optional, rets
 
 
@@ -162,7 +165,7 @@ class Routine:
 
     def __init__(self, name, *, listing, lines, chapter, inputs, outputs, tables=None,
                  lengths=(), nonnegative=(), nonzero=(), integers=None, checks=(),
-                 messages=None, function=False, report=None):
+                 messages=None, function=False, report=None, example=None):
         self.name = name
         self.listing = listing
         self.lines = lines
@@ -184,6 +187,9 @@ class Routine:
         self.messages.update(messages or {})
         self.function = function
         self.report = report
+        # a valid input row (book order), for routines whose valid inputs random values
+        # rarely hit (tooth numbers, centre distances): tests/test_layer.py draws near it
+        self.example = None if example is None else tuple(float(v) for v in example)
         for group in (self.lengths, self.nonnegative, self.nonzero, self.integers,
                       self.tables):
             unknown = set(group) - set(self.inputs)
@@ -445,7 +451,9 @@ class Routine:
             flat = [np.nan_to_num(f, nan=0.0) for f in flat]
         out = self.many(MODE_CODE.get(), n, np.array(incs, dtype=np.int32), *flat)
         computed = out[-1].reshape(shape)
-        out = [out[i] for i in self._pick]
+        # (integer results, such as DZBPL's tooth numbers, come back as floats: a failed
+        # position holds NaN)
+        out = [np.asarray(out[i], dtype=float) for i in self._pick]
         out = [o.reshape(shape) if o.ndim == 1 else o.T.reshape(shape + o.shape[:-1])
                for o in out]
         status = computed if status is None else np.where(status != ST_OK, status, computed)
@@ -616,7 +624,8 @@ def book_routine(name: str, *, listing: str, lines: str, chapter: str,
         (> 0), ``nonnegative``, ``nonzero``, ``integers`` ({name: allowed values or a
         range}; counts default to the integers >= 1), ``checks`` (:class:`Check`),
         ``messages`` ({status: text}), ``function`` (a book FUNCTION: returns a number),
-        ``report`` (callable(inputs, outputs) -> text, printed for AAA = 0).
+        ``report`` (callable(inputs, outputs) -> text, printed for AAA = 0), ``example``
+        (a valid input row in the book's order, for the generic tests).
     """
     spec = Routine(name, listing=listing, lines=lines, chapter=chapter, inputs=inputs,
                    outputs=outputs, **options)
