@@ -20,12 +20,17 @@
 ! L3815-3817).
 !
 ! Additions to the book (it reports nothing: ARCOS failed or nonsense was printed): a
-! trailing IER, a prmtr status code --
-!   st_requirement  no admissible tooth numbers (DZBPL), undercut or pointed teeth, a tip
-!                   circle inside the base circle, a centre distance no mesh can have, a
-!                   negative involute (the shifts are too negative), a worm with DW1 <= 0;
-!   st_ok.
-! On st_requirement every output (and COMMON result) is 0.
+! trailing IER, a prmtr status code, st_ok or a requirement no gear can meet, with its
+! reason as 10*st_requirement + k (the Python layer raises RequirementError with the
+! reason's message):
+!   st_requirement  no admissible tooth numbers (DZBPL), a worm with DW1 <= 0 (DCHRVC);
+!   st_undercut     a shift below the undercut limit (6.15)/(6.17) (DKRKT's message 20);
+!   st_pointed      a tooth whose flanks meet below its tip circle (DKRKT's message 21);
+!   st_correction   DKRKT's message 22 (no shift system serves these tooth numbers);
+!   st_inside_base  a tip circle inside its base circle (no involute flank at all);
+!   st_no_mesh      a centre distance or shifts that no involute mesh has (a negative
+!                   involute, AW at or below the sum of the base radii).
+! On failure every output (and COMMON result) is 0.
 !
 ! as-printed mode (printed_mode /= 0) keeps what the printed figures depend on: PI =
 ! 3.14159, DUGINV's fixed-point iteration stopped at TCHNST = 0.00001 (E-DUGINV-1,
@@ -66,6 +71,11 @@ module gears
                       chrvc_h1 = 0.0_dp, chrvc_ha1 = 0.0_dp, chrvc_da1 = 0.0_dp, &
                       chrvc_da2 = 0.0_dp, chrvc_dam2 = 0.0_dp, chrvc_b1 = 0.0_dp, &
                       chrvc_b2 = 0.0_dp, chrvc_r = 0.0_dp
+
+  ! Reasons of st_requirement (see the header).
+  integer, parameter :: st_undercut = 10*st_requirement + 1, st_pointed = 10*st_requirement + 2, &
+                        st_correction = 10*st_requirement + 3, &
+                        st_inside_base = 10*st_requirement + 4, st_no_mesh = 10*st_requirement + 5
 
   ! The book's DUGINV tolerance: Figs. 44, 47, 48 were computed with 0.00001 (E-DKRKT-3).
   real(dp), parameter :: book_tchnst = 0.00001_dp
@@ -380,7 +390,10 @@ contains
     if (aw /= 0.0_dp) then
       y = (aw - a0)/m
       c = 0.5_dp*zs*cos(alfa0)/(y + 0.5_dp*zs)        ! (6.12), E-DKRKT-1
-      if (.not. (c < 1.0_dp)) return                  ! AW <= r_b1 + r_b2: no mesh
+      if (.not. (c < 1.0_dp)) then                    ! AW <= r_b1 + r_b2: no mesh
+        ier = st_no_mesh
+        return
+      end if
       alfaw = acos(c)
       xs = zs*(involute(alfaw) - involute(alfa0))/(2.0_dp*tan(alfa0))   ! (6.13)
       x1 = 0.5_dp*(xs - (z2 - z1)/zs*y)                                ! (6.14)
@@ -388,8 +401,9 @@ contains
     else
       system = sdvig
       if (system < 1 .or. system > 3) then
-        if (printed_mode == 0) return                 ! corrected: no such system
-        system = 1                                    ! GO TO (7, 8, 9) falls through
+        ! as printed, GO TO (7, 8, 9) would fall through to SDVIG = 1 (E-DKRKT-4)
+        ier = st_correction
+        return
       end if
       select case (system)
       case (1)
@@ -400,14 +414,18 @@ contains
         if (x1 - x1z > 0.0_dp .and. x2 - x2z > 0.0_dp) then
           x1 = 0.0_dp
           x2 = 0.0_dp
-          return                                      ! message 22
+          ier = st_correction                         ! message 22
+          return
         end if
       case (2)
         x1 = 0.0_dp
         if (.not. (z1 > 19.0_dp)) x1 = 1.0_dp/(1.0_dp + 0.086_dp*(z1 - 19.0_dp)**2) ! E-DKRKT-2
         x2 = -x1
       case (3)
-        if (z2 < 17.0_dp) return                      ! message 22
+        if (z2 < 17.0_dp) then
+          ier = st_correction                         ! message 22
+          return
+        end if
         if (z1 > 17.0_dp) then
           d = -0.015_dp*(z1 - 17.0_dp)
         else
@@ -421,6 +439,8 @@ contains
     end if
     ! label 2 (L4108-4112): undercut (message 20), then pointed teeth (message 21)
     if (x1 < x1p .or. x2 < x2p .or. x1 > x1z .or. x2 > x2z) then
+      ier = st_pointed
+      if (x1 < x1p .or. x2 < x2p) ier = st_undercut
       x1 = 0.0_dp
       x2 = 0.0_dp
       alfaw = 0.0_dp
@@ -481,21 +501,34 @@ contains
     if (printed_mode /= 0) then
       s = p/2.0_dp + 2.0_dp*x*m*tan(alfa)
       da = m*(z + 2.0_dp + 2.0_dp*x)
-      if (.not. (db < da)) return
+      if (.not. (db < da)) then
+        call zero7(d, s, db, sb, da, sa, df)
+        ier = st_inside_base
+        return
+      end if
       alfaa = acos(db/da)
       sa = da*(pi/(2.0_dp*z) + 2.0_dp*x*tan(alfa)/z + invt - involute(alfaa))  ! E-DGMTZK-1
       sb = db*(pi/(2.0_dp*z) + 2.0_dp*x*tan(alfa)/z + invt)
     else
-      if (x < undercut_limit(z, alfa, beta)) return
+      if (x < undercut_limit(z, alfa, beta)) then
+        call zero7(d, s, db, sb, da, sa, df)
+        ier = st_undercut
+        return
+      end if
       s = m*(pi/(2.0_dp*cos(beta)) + 2.0_dp*x*tan(alfa))
       da = d + 2.0_dp*(1.0_dp + x)*m
-      if (.not. (db < da)) return
+      if (.not. (db < da)) then
+        call zero7(d, s, db, sb, da, sa, df)
+        ier = st_inside_base
+        return
+      end if
       alfaa = acos(db/da)
       sa = da*(s/d + invt - involute(alfaa))
       sb = db*(s/d + invt)
     end if
     if (.not. (sa > 0.0_dp)) then                     ! pointed: the flanks cross below DA
       call zero7(d, s, db, sb, da, sa, df)
+      ier = st_pointed
       return
     end if
     ier = st_ok
@@ -540,7 +573,10 @@ contains
     a = (z1 + z2)*m/(2.0_dp*cos(beta))
     xs = x1 + x2
     invalw = (2.0_dp*xs*tan(alfa))/(z1 + z2) + involute(alfat)
-    if (.not. (invalw >= 0.0_dp)) return              ! x1 + x2 too negative: no mesh
+    if (.not. (invalw >= 0.0_dp)) then                ! x1 + x2 too negative: no mesh
+      ier = st_no_mesh
+      return
+    end if
     alfaw = angle_of_involute(invalw)                 ! E-DGMZPC-1
     aw = (z1 + z2)*m*cos(alfat)/(2.0_dp*cos(beta)*cos(alfaw))   ! E-DGMZPC-2
     xy = (aw - a)/m
@@ -551,8 +587,10 @@ contains
       db1 = m*z1*cos(alfa)
       db2 = m*z2*cos(alfa)
     else
-      if (x1 < undercut_limit(z1, alfat, beta) .or. x2 < undercut_limit(z2, alfat, beta)) &
+      if (x1 < undercut_limit(z1, alfat, beta) .or. x2 < undercut_limit(z2, alfat, beta)) then
+        ier = st_undercut
         return
+      end if
       d1 = m*z1/cos(beta)
       d2 = m*z2/cos(beta)
       db1 = d1*cos(alfat)
@@ -560,13 +598,19 @@ contains
     end if
     da1 = d1 + 2.0_dp*(1.0_dp + x1 - xur)*m
     da2 = d2 + 2.0_dp*(1.0_dp + x2 - xur)*m
-    if (.not. (db1 < da1 .and. db2 < da2)) return
+    if (.not. (db1 < da1 .and. db2 < da2)) then
+      ier = st_inside_base
+      return
+    end if
     ala1 = acos(db1/da1)
     ala2 = acos(db2/da2)
     ! tooth thickness on the (shortened) tip circles: pointed teeth are refused
     s1 = da1*((pi/2.0_dp + 2.0_dp*x1*tan(alfa))/z1 + involute(alfat) - involute(ala1))
     s2 = da2*((pi/2.0_dp + 2.0_dp*x2*tan(alfa))/z2 + involute(alfat) - involute(ala2))
-    if (.not. (s1 > 0.0_dp .and. s2 > 0.0_dp)) return
+    if (.not. (s1 > 0.0_dp .and. s2 > 0.0_dp)) then
+      ier = st_pointed
+      return
+    end if
     ealfa = (z1*tan(ala1) + z2*tan(ala2) - (z1 + z2)*tan(alfaw))/(2.0_dp*pi)
     if (printed_mode /= 0) then
       ebeta = bw*sin(beta)/(pi*m)
@@ -623,7 +667,10 @@ contains
     a = m*(z2 - z1)/2.0_dp
     xd = x2 - x1
     invalw = involute(alfa) + 2.0_dp*xd*tan(alfa)/(z2 - z1)
-    if (.not. (invalw >= 0.0_dp)) return
+    if (.not. (invalw >= 0.0_dp)) then
+      ier = st_no_mesh
+      return
+    end if
     alfaw = angle_of_involute(invalw)                 ! E-DGMZVN-1
     aw = a*cos(alfa)/cos(alfaw)
     d1 = m*z1
@@ -635,7 +682,10 @@ contains
     xur = xd - xy
     ! machine mesh of the wheel with the shaper (Table 25)
     invo2 = 2.0_dp*(x2 - xo)*tan(alfa)/(z2 - zo2) + involute(alfa)
-    if (.not. (invo2 >= 0.0_dp)) return
+    if (.not. (invo2 >= 0.0_dp)) then
+      ier = st_no_mesh
+      return
+    end if
     alfao2 = angle_of_involute(invo2)
     awo2 = (z2 - zo2)*m*cos(alfa)/(2.0_dp*cos(alfao2))
     xyo2 = awo2/m - (z2 - zo2)/2.0_dp
@@ -647,14 +697,23 @@ contains
     df2 = 2.0_dp*awo2 + dao
     h1 = (da1 - df1)/2.0_dp
     h2 = (df2 - da2)/2.0_dp
-    if (printed_mode == 0 .and. x1 < undercut_limit(z1, alfa, 0.0_dp)) return
-    if (.not. (m*z1*cos(alfa) < da1 .and. m*z2*cos(alfa) < da2)) return
+    if (printed_mode == 0 .and. x1 < undercut_limit(z1, alfa, 0.0_dp)) then
+      ier = st_undercut
+      return
+    end if
+    if (.not. (m*z1*cos(alfa) < da1 .and. m*z2*cos(alfa) < da2)) then
+      ier = st_inside_base
+      return
+    end if
     ala1 = acos(m*z1*cos(alfa)/da1)
     ala2 = acos(m*z2*cos(alfa)/da2)
     ealfa = (z1*tan(ala1) - z2*tan(ala2) + (z2 - z1)*tan(alfaw))/(2.0_dp*pi)  ! E-DGMZVN-2
     sa1 = da1*((0.5_dp*pi + 2.0_dp*x1*tan(alfa))/z1 + involute(alfa) - involute(ala1))
     sa2 = da2*((0.5_dp*pi - 2.0_dp*x2*tan(alfa))/z2 - involute(alfa) + involute(ala2)) ! E-DGMZVN-3
-    if (.not. (sa1 > 0.0_dp .and. sa2 > 0.0_dp)) return
+    if (.not. (sa1 > 0.0_dp .and. sa2 > 0.0_dp)) then
+      ier = st_pointed
+      return
+    end if
     zvn_a = a
     zvn_xd = xd
     zvn_alfaw = alfaw
@@ -723,7 +782,10 @@ contains
     x = aw/m - 0.5_dp*(z2 + q)
     dw1 = (q + 2.0_dp*x)*m
     da2 = z2*m + 2.0_dp*(1.0_dp + x)*m
-    if (.not. (dw1 > 0.0_dp .and. da2 > 0.0_dp)) return
+    if (.not. (dw1 > 0.0_dp .and. da2 > 0.0_dp)) then
+      ier = st_no_mesh
+      return
+    end if
     chrvc_x = x
     chrvc_d1 = q*m
     chrvc_d2 = z2*m

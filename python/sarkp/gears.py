@@ -22,7 +22,17 @@ from .report import fortran_write
 __all__ = ["DZBPL", "DKRKT", "DUGINV", "DGMTZK", "DGMZPC", "DGMZVN", "DCHRVC"]
 
 
-# ---- checks on the inputs (closed forms; the Fortran checks the same again) ----------
+# ---- reasons and checks ----------------------------------------------------------------
+
+# The Fortran's reasons for ST_REQUIREMENT (10 * ST_REQUIREMENT + k, fortran/gears.f90).
+ST_UNDERCUT, ST_POINTED, ST_CORRECTION, ST_INSIDE_BASE, ST_NO_MESH = (
+    10 * ST_REQUIREMENT + k for k in range(1, 6))
+
+_POINTED = ("pointed tooth: the flanks meet below the tip circle (tip thickness <= 0, the "
+            "limit (6.18), L3985)")
+_INSIDE_BASE = "a tip circle lies inside its base circle: the tooth has no involute flank"
+
+# (checks on the inputs: closed forms; the Fortran checks the same again)
 
 def _alpha():
     return book_pi() / 9.0
@@ -232,12 +242,15 @@ DKRKT = book_routine(
               "SDVIG = 3 needs z2 >= 17 ((6.22); the book prints 'ЗАДАВАЕМЫЕ ПАРАМЕТРЫ "
               "ТРЕБУЮТ КОРРЕКТИРОВКИ', L4096)"),
     ),
-    messages={ST_REQUIREMENT:
-              "the shift coefficients leave the range X1P <= x <= X1Z of (6.20): the "
-              "teeth would be undercut (x < 1 - 0.5 z sin^2(alpha), the book's message 20 "
-              "'... С ПОДРЕЗАННЫМИ ЗУБЬЯМИ') or pointed (x > 0.15 z^0.7, message 21 "
-              "'... С ЗАОСТРЕННЫМИ ЗУБЬЯМИ'), or SDVIG = 1 puts both above X1Z (message "
-              "22 'ЗАДАВАЕМЫЕ ПАРАМЕТРЫ ТРЕБУЮТ КОРРЕКТИРОВКИ')"},
+    messages={
+        ST_UNDERCUT: "undercut: x1 < X1P or x2 < X2P = 1 - 0.5 z sin^2(alpha) (6.15) (the "
+                     "book's message 20, '... С ПОДРЕЗАННЫМИ ЗУБЬЯМИ')",
+        ST_POINTED: "pointed teeth: x1 > X1Z or x2 > X2Z = 0.15 z^0.7 (6.19) (the book's "
+                    "message 21, '... С ЗАОСТРЕННЫМИ ЗУБЬЯМИ')",
+        ST_CORRECTION: "no system of shifts serves these tooth numbers (the book's message "
+                       "22, 'ЗАДАВАЕМЫЕ ПАРАМЕТРЫ ТРЕБУЮТ КОРРЕКТИРОВКИ')",
+        ST_NO_MESH: "AW is not above r_b1 + r_b2 = m (z1 + z2) cos(alpha)/2: no involute "
+                    "mesh has this centre distance"},
     report=lambda i, o: dkrkt_report(i, o),
     doc="""Profile-shift coefficients of a pair of spur gears and their operating pressure
     angle (listing VI.3, L4019-4137; (6.12)-(6.23), L3946-4009).
@@ -365,9 +378,8 @@ DGMTZK = book_routine(
     outputs=("D", "S", "DB", "SB", "DA", "SA", "DF"),
     lengths=("M",), integers={"Z": TEETH}, example=(4.0, 20.0, 0.1745, 0.0, 1.0),
     checks=(_helix_ok(), _undercut("X", "Z", "BETA")),
-    messages={ST_REQUIREMENT:
-              "the tooth is pointed: its flanks meet below the tip circle (tip thickness "
-              "SA <= 0, the limit (6.18)), or the tip circle lies inside the base circle"},
+    messages={ST_UNDERCUT: "undercut: X is below x_min of (6.15)/(6.17)",
+              ST_POINTED: _POINTED, ST_INSIDE_BASE: _INSIDE_BASE},
     report=_dgmtzk_report,
     doc="""Dimensions of one external involute gear (listing VI.5, L4245-4308; Table 22,
     L4230-4241).
@@ -444,10 +456,10 @@ DGMZPC = book_routine(
               ST_REQUIREMENT, "no mesh: X1 + X2 is so negative that inv alpha_w = inv "
               "alpha_t + 2 (X1 + X2) tan(alpha)/(Z1 + Z2) < 0"),
     ),
-    messages={ST_REQUIREMENT:
-              "a tooth is pointed: its flanks meet below the (shortened) tip circle (tip "
-              "thickness <= 0, the limit (6.18)), or a tip circle lies inside its base "
-              "circle"},
+    messages={ST_UNDERCUT: "undercut: X1 or X2 is below x_min of (6.15)/(6.17)",
+              ST_POINTED: _POINTED + " (on the tip circle shortened by XUR)",
+              ST_INSIDE_BASE: _INSIDE_BASE,
+              ST_NO_MESH: "no mesh: inv alpha_w < 0 (X1 + X2 too negative)"},
     report=lambda i, o: fortran_write(_DGMZPC_FORMAT, [float(v) for v in o[:7]]),
     doc="""Geometry of an external involute mesh (listing VI.6, L4410-4454; Table 23,
     L4398-4408).
@@ -554,9 +566,9 @@ DGMZVN = book_routine(
               ST_REQUIREMENT, "the shaper cannot cut the wheel: inv alpha_w02 = inv alpha + "
               "2 (X2 - XO) tan(alpha)/(Z2 - ZO2) < 0"),
     ),
-    messages={ST_REQUIREMENT:
-              "a tooth is pointed (tip thickness SA1 or SA2 <= 0) or a tip circle lies "
-              "inside its base circle"},
+    messages={ST_UNDERCUT: "undercut: X1 is below x_min of (6.15)",
+              ST_POINTED: _POINTED + " (SA1 or SA2 <= 0)", ST_INSIDE_BASE: _INSIDE_BASE,
+              ST_NO_MESH: "no mesh: inv alpha_w < 0 or inv alpha_w02 < 0"},
     report=_dgmzvn_report,
     doc="""Geometry of an internal involute mesh whose wheel is cut by a shaper (listing
     VI.7, L4512-4631; Tables 24-25, L4489-4510, L4637-4646).  Spur gears.
@@ -635,8 +647,8 @@ DCHRVC = book_routine(
               ST_REQUIREMENT, "AW <= M Z2/2: the worm's operating diameter DW1 = 2 AW - "
               "M Z2 would not be positive"),
     ),
-    messages={ST_REQUIREMENT: "the wheel's tip diameter DA2 = m (z2 + 2 + 2x) would not be "
-                              "positive"},
+    messages={ST_NO_MESH: "the worm's operating diameter DW1 = (q + 2x) m or the wheel's "
+                          "tip diameter DA2 = m (z2 + 2 + 2x) would not be positive"},
     report=lambda i, o: fortran_write(_DCHRVC_FORMAT, [float(v) for v in o[:14]]),
     doc="""Geometry of a cylindrical worm gear pair (listing VI.8, L4737-4824; Table 26,
     L4687-4703).

@@ -551,8 +551,11 @@ def _nan_like(o):
 
 
 def _status_code(status):
-    """The public code of a Fortran status (100 + d is a loss of significance)."""
-    return ST_SIGNIFICANCE if status > ST_DIGITS else int(status)
+    """The public code of a Fortran status (100 + d is a loss of significance; 10 c + k,
+    k = 1..9, is code c for the k-th of a routine's reasons, each with its message)."""
+    if status > ST_DIGITS:
+        return ST_SIGNIFICANCE
+    return int(status) // 10 if 10 <= status < 100 else int(status)
 
 
 def _significance_message(messages, status):
@@ -567,9 +570,11 @@ def _significance_message(messages, status):
 def status_error(name, status, index, messages, message=None):
     """The exception for a failed ``status`` of routine ``name`` at ``index``."""
     where = "" if index is None else f" at index {list(index)}"
+    code = _status_code(status)
     if message is None:
-        message = messages.get(status, _DEFAULT_MESSAGES.get(status, f"status {status}"))
-    return _ERRORS.get(status, SingularError)(f"{name}{where}: {message}")
+        message = messages.get(status) or messages.get(code) or \
+            _DEFAULT_MESSAGES.get(code, f"status {status}")
+    return _ERRORS.get(code, SingularError)(f"{name}{where}: {message}")
 
 
 def settle_arrays(name, out, status, on_error, messages, message_at=None):
@@ -578,7 +583,8 @@ def settle_arrays(name, out, status, on_error, messages, message_at=None):
     Raises the error of the first failed position (``on_error="raise"``) or puts NaN
     there (``"nan"``); warns once for a loss of significance.  ``message_at(status,
     index)`` may give a more precise message for a failed position.  Returns ``(out,
-    status)`` with Fortran's 100 + d codes mapped to SIGNIFICANCE.
+    status)`` with Fortran's 100 + d codes mapped to SIGNIFICANCE and its reason codes
+    10 c + k to c.
     """
     lost = (status == ST_SIGNIFICANCE) | (status > ST_DIGITS)
     failed = (status != ST_OK) & ~lost
@@ -597,6 +603,9 @@ def settle_arrays(name, out, status, on_error, messages, message_at=None):
         warnings.warn(f"{name}: {_significance_message(messages, worst)} (first at index "
                       f"{list(idx)})", SignificanceWarning, stacklevel=_caller_stacklevel())
         status = np.where(status > ST_DIGITS, ST_SIGNIFICANCE, status).astype(np.int32)
+    reason = (status >= 10) & (status < 100)             # 10 c + k: code c
+    if reason.any():
+        status = np.where(reason, status // 10, status).astype(np.int32)
     return out, status
 
 
