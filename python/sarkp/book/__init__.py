@@ -18,12 +18,24 @@ PROGRAMS = {
     "II.13": "prog_ii_13",
     "III.5": "prog_iii_5",
     "IV.15": "prog_iv_15",
+    "VI.2": "prog_vi_2",
+    "VI.3": "prog_vi_3",
+    "VI.5": "prog_vi_5",
+    "VI.6": "prog_vi_6",
+    "VI.7": "prog_vi_7",
+    "VI.8": "prog_vi_8",
 }
 
 #: figure number -> listing of the program that prints it
 FIGURES = {
     "4": "II.13",
     "10": "III.5",
+    "39": "VI.2",
+    "44": "VI.3",
+    "46": "VI.5",
+    "47": "VI.6",
+    "48": "VI.7",
+    "50": "VI.8",
 }
 
 
