@@ -13,6 +13,8 @@ from hypothesis import assume, given, settings
 from hypothesis import strategies as st
 
 import sarkp
+from sarkp import book
+from sarkp.book import figures
 from sarkp import (DCHRVC, DGMTZK, DGMZPC, DGMZVN, DKRKT, DUGINV, DZBPL, RequirementError)
 
 mp.mp.dps = 30
@@ -597,3 +599,81 @@ def test_dzbpl_arrays_and_bad_input():
         DZBPL(2, 4, 1, 1, 1, 13, 35, 4)
     with pytest.raises(ValueError, match="KS"):
         DZBPL(2.5, 4, 1, 1, 1, 13, 35, 1)
+
+
+# ---- the printed figures (package data) --------------------------------------------------
+
+GEAR_FIGURES = ("39", "44", "46", "47", "48", "50")
+#: as printed, the cells whose last digit needs the ES EVM's hexadecimal REAL*4 arithmetic
+ES_EVM_CELLS = {("47", "b", "AW"): "E-FIG47-1", ("48", "a", "DA2"): "E-FIG48-1",
+                ("48", "a", "SA1"): "E-FIG48-1", ("48", "b", "SA1"): "E-FIG48-1"}
+
+
+def compared(number, mode):
+    figure = figures.load_figure(number)
+    with sarkp.mode(mode):
+        computed = book.figure_program(number).cells()
+    return figures.compare(figure, computed)
+
+
+@pytest.mark.parametrize("number", GEAR_FIGURES)
+def test_figures_as_printed_every_cell_within_half_a_unit(number):
+    """Every reproducible printed cell within half a unit of its last digit, except the
+    four that the ES EVM's arithmetic decides (within 2.5 units, each with its row)."""
+    for c in compared(number, "as-printed"):
+        if not c.cell.reproducible:
+            continue
+        key = (number, c.cell.row, c.cell.column)
+        if key in ES_EVM_CELLS:
+            assert c.cell.errata == ES_EVM_CELLS[key] and abs(c.units) <= 2.5
+        else:
+            assert c.matches, (key, c.cell.printed, c.computed)
+
+
+@pytest.mark.parametrize("number", GEAR_FIGURES)
+@pytest.mark.parametrize("mode", ["as-printed", "corrected"])
+def test_figures_every_difference_is_explained(number, mode):
+    program = book.figure_program(number)
+    text, _, _ = figures.report(figures.load_figure(number), compared(number, mode), mode,
+                                getattr(program, "CORRECTED_DIFFERENCES", None))
+    assert "unexplained" not in text
+
+
+def test_fig39_misprints_E_FIG39_1_2_3():
+    cells = {(c.cell.row, c.cell.column): c for c in compared("39", "as-printed")}
+    assert (cells[("13", "Z1")].cell.ocr, cells[("13", "Z1")].computed) == ("30", 38.0)
+    assert (cells[("19", "Z2")].cell.ocr, cells[("19", "Z2")].computed) == ("98", 90.0)
+    # with z1 = 30 the listing's Z2 would be |30 (8 - 152 + 133)/19| = 17, not the printed 22
+    assert dzbpl_listing(2, 1, 19, 7, 8, 15, 50, 2) == (38, 22, 25, 41)
+    assert abs(int(30 * (1 * 8 - 19 * 8 + 19 * 7) / (19 * (8 - 7)))) == 17
+    assert cells[("4", "found")].computed == 0.0 and cells[("15", "found")].computed == 0.0
+
+
+def test_fig44_tolerance_of_duginv_E_DKRKT_3():
+    """The listing's TCHNST = 0.000001 gives ALFAW = 0.3491 for zero shifts; Fig. 44
+    prints 0.3490, which 0.00001 (DUGINV's own comment) gives."""
+    pi = 3.14159
+    inv_alpha = math.tan(pi / 9) - pi / 9
+    assert round(book_duginv(inv_alpha, pi / 18, 0.000001), 4) == 0.3491
+    assert round(book_duginv(inv_alpha, pi / 18, 0.00001), 4) == 0.3490
+
+
+def test_fig46_beta_is_pi_over_18_E_FIG46_1():
+    """Printed BETA = 0.1745 (F6.4); only PI/18 = 0.174533 gives SB = 7.1709, SA = 3.5425."""
+    with sarkp.as_printed():
+        exact = DGMTZK(4.0, 20, 3.14159 / 18, 0.0)
+        rounded = DGMTZK(4.0, 20, 0.1745, 0.0)
+    assert (round(exact.SB, 4), round(exact.SA, 4)) == (7.1709, 3.5425)
+    assert (round(rounded.SB, 4), round(rounded.SA, 4)) == (7.1708, 3.5422)
+
+
+def test_programs_run_in_both_modes():
+    for listing in ("VI.2", "VI.3", "VI.5", "VI.6", "VI.7", "VI.8"):
+        for mode in ("as-printed", "corrected"):
+            with sarkp.mode(mode):
+                text = book.program(listing).render()
+            assert text.strip() and "Traceback" not in text
+    with sarkp.as_printed():
+        text = book.program("VI.2").render()
+    assert text.count("ПОДБОР ЧИСЕЛ ЗУБЬЕВ НЕВОЗМОЖЕН") == 6
+    assert text.count("SHEMA=") == 13 and " Z1= 38 Z2= 22 Z3= 25 Z4= 41" in text
