@@ -306,7 +306,7 @@ DUGINV = book_routine(
     "DUGINV", listing="VI.4", lines="L4153-4164, L4201-4217", chapter="gears",
     inputs=("INVX", "XNACH", "TCHNST"), outputs=("DUGINV",), function=True,
     lengths=("TCHNST",),
-    checks=(Check(lambda INVX, **_: np.asarray(INVX) < 0.0, ST_REQUIREMENT,
+    checks=(Check(lambda INVX, **_: INVX < 0.0, ST_REQUIREMENT,
                   "INVX < 0: the involute tan x - x is never negative for 0 <= x < pi/2, "
                   "no angle has this involute"),),
     doc="""The angle x (rad) whose involute ``inv x = tan x - x`` is INVX (listing VI.4,
