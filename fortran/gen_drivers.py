@@ -7,13 +7,20 @@ named) and writes module ``drv_<module>`` with, for each book routine NAME:
 
 * ``NAME_1(sarkp_mode, <the book's arguments>, <COMMON results>, sarkp_status)``: one call
   in the caller's mode;
-* ``NAME_n(sarkp_mode, sarkp_n, sarkp_inc, <inputs as arrays>, <outputs as arrays>,
-  sarkp_status)``: a loop over ``sarkp_n`` positions, for routines whose arguments are
-  scalars or fixed-size arrays.  Input k of position i is element ``1 + (i-1)*sarkp_inc(k)``,
-  so an input that is the same at every position is passed once (``sarkp_inc(k) = 0``).
+* ``NAME_n(sarkp_mode, sarkp_n, sarkp_inc, sarkp_kind, sarkp_nan, <inputs as arrays>,
+  <outputs as arrays>, sarkp_status, sarkp_bad)``: a loop over ``sarkp_n`` positions, for
+  routines whose arguments are scalars or fixed-size arrays.  Input k of position i is
+  element ``1 + (i-1)*sarkp_inc(k)``, so an input that is the same at every position is
+  passed once (``sarkp_inc(k) = 0``).  Each input is screened first, in the same loop, by
+  its kind (``screen``: finite, length, non-negative, non-zero, branch); the first bad one
+  stops the loop and comes back in ``sarkp_bad`` = (input, element), and a NaN gives the
+  position status st_missing when ``sarkp_nan`` allows it.
 
-Every driver sets the mode (prmtr's ``set_mode``) inside the same Fortran call, so no other
-Python thread can change it in between.  ``sarkp_status`` is the routine's trailing IER when
+Every driver sets the mode (prmtr's ``set_mode``) inside the same Fortran call.  The
+drivers release the GIL (f2py ``threadsafe``): the mode lives in thread-private variables
+of prmtr (``!$omp threadprivate``, thread-local storage), and no other module variable is
+written, except the COMMON results of the routines that have them, whose drivers keep the
+GIL.  ``sarkp_status`` is the routine's trailing IER when
 it has one (a prmtr status code), else ``st_ok``; a result that is not a finite number while
 the routine reported success becomes ``st_range``.  A book FUNCTION's value is ``fres``.
 
@@ -245,8 +252,7 @@ def wrap_list(names, indent="      "):
 
 
 def _commons(p, variables):
-    """The COMMON results of ``p`` as Args named by their result names, with the module
-    variables they copy."""
+    """The COMMON results of ``p`` as (Arg named by its result name, module variable)."""
     return [(Arg(p.common_names[c], variables[c].type, "", variables[c].dims), c)
             for c in p.commons]
 
@@ -255,13 +261,15 @@ def scalar_driver(mod, p, variables):
     w = []
     pairs = _commons(p, variables)
     commons = [c for c, _ in pairs]
-    # the status comes last (Python reads it there), after the COMMON results
+    # the status comes last, after the COMMON results (Python reads it as the last result)
     names = (["sarkp_mode"] + [a for a in p.argnames if a != p.status_arg]
              + [c.name for c in commons])
     if p.kind == "function":
         names.append("fres")
     names.append(p.status_arg or "sarkp_status")
     w.append(f"  subroutine {p.name}_1({wrap_list(names)})")
+    if not p.commons:
+        w.append("    !f2py threadsafe")
     w.append("    integer, intent(in) :: sarkp_mode")
     for a in p.argnames:
         arg = p.args[a]
@@ -304,11 +312,13 @@ def sweep_driver(mod, p, variables):
     outs = [a for a in p.argnames if p.args[a].intent == "out" and a != p.status_arg]
     extra = [c.name for c in commons]
     result = ["fres"] if p.kind == "function" else []
-    names = (["sarkp_mode", "sarkp_n", "sarkp_inc"] + ins + outs + extra + result
-             + ["sarkp_status"])
-    w = [f"  subroutine {p.name}_n({wrap_list(names)})",
-         "    integer, intent(in) :: sarkp_mode, sarkp_n",
-         f"    integer, intent(in) :: sarkp_inc({len(ins)})"]
+    names = (["sarkp_mode", "sarkp_n", "sarkp_inc", "sarkp_kind", "sarkp_nan"] + ins + outs
+             + extra + result + ["sarkp_status", "sarkp_bad"])
+    w = [f"  subroutine {p.name}_n({wrap_list(names)})"]
+    if not p.commons:
+        w.append("    !f2py threadsafe")
+    w += ["    integer, intent(in) :: sarkp_mode, sarkp_n, sarkp_nan",
+         f"    integer, intent(in) :: sarkp_inc({len(ins)}), sarkp_kind({len(ins)})"]
     for a in ins:
         arg = p.args[a]
         w.append("    " + arg.decl(dims=arg.dims + ("*",)))
@@ -319,42 +329,98 @@ def sweep_driver(mod, p, variables):
         w.append("    " + Arg(c.name, c.type, "out", c.dims + ("sarkp_n",)).decl())
     if result:
         w.append(f"    {p.result_type or 'real(dp)'}, intent(out) :: fres(sarkp_n)")
-    w.append("    integer, intent(out) :: sarkp_status(sarkp_n)")
-    w.append("    integer :: i")
-    w.append("    call set_mode(sarkp_mode)")
-    w.append("    do i = 1, sarkp_n")
+    w += ["    integer, intent(out) :: sarkp_status(sarkp_n), sarkp_bad(2)",
+          "    integer :: sarkp_i, sarkp_j, sarkp_state"
+          + (", sarkp_l" if any(p.args[a].dims for a in ins) else ""),
+          "    sarkp_bad = 0",
+          "    call set_mode(sarkp_mode)",
+          "    do sarkp_i = 1, sarkp_n",
+          "      ! the inputs of position i: a NaN is a missing input (status 5) when allowed;",
+          "      ! anything else out of its kind's range stops the loop and is reported",
+          "      sarkp_state = 0"]
+    for k, a in enumerate(ins, 1):
+        arg = p.args[a]
+        if arg.type != "real(dp)":
+            continue
+        w.append(f"      sarkp_j = 1 + (sarkp_i - 1)*sarkp_inc({k})")
+        if arg.dims:
+            w += [f"      do sarkp_l = 1, {arg.dims[0]}",
+                  f"        sarkp_state = max(sarkp_state, screen({a}(sarkp_l, sarkp_j), "
+                  f"sarkp_kind({k}), sarkp_nan, {k}, sarkp_j, sarkp_bad))",
+                  "      end do"]
+        else:
+            w.append(f"      sarkp_state = max(sarkp_state, screen({a}(sarkp_j), "
+                     f"sarkp_kind({k}), sarkp_nan, {k}, sarkp_j, sarkp_bad))")
+    w += ["      if (sarkp_state == 2) return",
+          "      if (sarkp_state == 1) then",
+          "        sarkp_status(sarkp_i) = st_missing",
+          "        cycle",
+          "      end if"]
 
     def ref(a):
         arg = p.args[a]
         if arg.intent == "in":
-            index = f"1 + (i - 1)*sarkp_inc({ins.index(a) + 1})"
+            index = f"1 + (sarkp_i - 1)*sarkp_inc({ins.index(a) + 1})"
         else:
-            index = "i"
+            index = "sarkp_i"
         return f"{a}({':, ' * len(arg.dims)}{index})"
 
-    actual = [("sarkp_status(i)" if a == p.status_arg else ref(a)) for a in p.argnames]
+    actual = [("sarkp_status(sarkp_i)" if a == p.status_arg else ref(a)) for a in p.argnames]
     call = wrap_list(actual, indent="          ")
     if p.kind == "function":
-        w.append(f"      fres(i) = {p.name}({call})")
+        w.append(f"      fres(sarkp_i) = {p.name}({call})")
     else:
         w.append(f"      call {p.name}({call})")
     if p.status_arg is None:
-        w.append("      sarkp_status(i) = st_ok")
+        w.append("      sarkp_status(sarkp_i) = st_ok")
     for c, var in pairs:
-        w.append(f"      {c.name}({':, ' * len(c.dims)}i) = {mod}_{var}")
-    real_out = [(f"{a}({':, ' * len(p.args[a].dims)}i)", bool(p.args[a].dims)) for a in outs
+        w.append(f"      {c.name}({':, ' * len(c.dims)}sarkp_i) = {mod}_{var}")
+    real_out = [(f"{a}({':, ' * len(p.args[a].dims)}sarkp_i)", bool(p.args[a].dims)) for a in outs
                 if p.args[a].type == "real(dp)"]
-    real_out += [(f"{c.name}({':, ' * len(c.dims)}i)", bool(c.dims)) for c in commons
+    real_out += [(f"{c.name}({':, ' * len(c.dims)}sarkp_i)", bool(c.dims)) for c in commons
                  if c.type == "real(dp)"]
     if p.kind == "function" and (p.result_type or "real(dp)") == "real(dp)":
-        real_out.append(("fres(i)", False))
+        real_out.append(("fres(sarkp_i)", False))
     if real_out:
-        w.append("      if (succeeded(sarkp_status(i))) then")
-        w.append(f"        if (.not. ({finite_test(real_out)})) sarkp_status(i) = st_range")
+        w.append("      if (succeeded(sarkp_status(sarkp_i))) then")
+        w.append(f"        if (.not. ({finite_test(real_out)})) sarkp_status(sarkp_i) = st_range")
         w.append("      end if")
     w.append("    end do")
     w.append(f"  end subroutine {p.name}_n")
     return w
+
+
+SCREEN = """
+  ! The state of input number k, element j, of a sweep: 0 valid; 1 NaN, a missing input
+  ! (allowed when nan /= 0); 2 out of range for its kind -- 0 a finite number, 1 a length
+  ! (> 0), 2 >= 0, 3 not 0, 4 an assembly branch (-1 or +1).  The first input in state 2
+  ! (a NaN too, when not allowed) is recorded in bad = (k, j).
+  integer function screen(x, kind, nan, k, j, bad)
+    real(dp), intent(in) :: x
+    integer, intent(in) :: kind, nan, k, j
+    integer, intent(inout) :: bad(2)
+    screen = 0
+    if (x /= x) then
+      screen = 1
+      if (nan /= 0) return
+      screen = 2
+    else if (abs(x) > huge(x)) then
+      screen = 2
+    else
+      select case (kind)
+      case (1)
+        if (.not. x > 0.0_dp) screen = 2
+      case (2)
+        if (x < 0.0_dp) screen = 2
+      case (3)
+        if (x == 0.0_dp) screen = 2
+      case (4)
+        if (x /= 1.0_dp .and. x /= -1.0_dp) screen = 2
+      end select
+    end if
+    if (screen == 2 .and. bad(1) == 0) bad = [k, j]
+  end function screen
+"""
 
 
 def generate(source: Path, only):
@@ -371,7 +437,7 @@ def generate(source: Path, only):
          f"! {module}: NAME_1 (one call) and NAME_n (a loop over positions), each in the mode",
          "! the caller passes.",
          f"module drv_{module}",
-         "  use prmtr, only: dp, set_mode, succeeded, st_ok, st_range"]
+         "  use prmtr, only: dp, set_mode, succeeded, st_ok, st_range, st_missing"]
     w.append(f"  use {module}, only: " + wrap_list(uses))
     w += ["  implicit none", "  private",
           "  public :: " + wrap_list(
@@ -381,6 +447,8 @@ def generate(source: Path, only):
         w += scalar_driver(module, p, variables) + [""]
         if p.sweepable:
             w += sweep_driver(module, p, variables) + [""]
+    if any(p.sweepable for p in procs):
+        w.append(SCREEN)
     w.append(f"end module drv_{module}")
     return "\n".join(w) + "\n"
 

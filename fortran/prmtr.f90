@@ -16,6 +16,9 @@ module prmtr
   real(dp), public :: pi = pi_exact
   real(dp), public :: pid2 = pi_exact/2
   integer, public :: printed_mode = 0                        ! 0 corrected, 1 as-printed
+  ! One copy per thread (thread-local storage): the generated drivers release the GIL and
+  ! set the caller's mode at the start of every call, so threads must not share it.
+  !$omp threadprivate(pi, pid2, printed_mode)
 
   ! Status codes returned in the trailing IER of every routine that can fail.
   ! (The book has no such argument: it let ARCOS or a division fail at run time.)
@@ -24,7 +27,7 @@ module prmtr
   integer, parameter, public :: st_singular = 2     ! dead centre / singular system (GELG IER = -1)
   integer, parameter, public :: st_significance = 3 ! GELG IER > 0: loss of significance, result kept
   integer, parameter, public :: st_requirement = 4  ! synthesis requirement no mechanism can meet
-  ! (5 is the Python layer's "missing input": a NaN passed on from a failed earlier step)
+  integer, parameter, public :: st_missing = 5      ! an input was NaN (a failed earlier step)
   integer, parameter, public :: st_range = 6        ! a result is not a finite double (overflow)
   ! 100 + d (d = 1..7): the result was kept, but only about d significant digits are left
   integer, parameter, public :: st_digits = 100

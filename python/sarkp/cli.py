@@ -1,7 +1,8 @@
 """The ``sarkp`` command line (also ``python -m sarkp``).
 
     sarkp book list                       the reproduced programs and figures
-    sarkp book run PROGRAM [--mode M]     a program's printout, in the book's layout
+    sarkp book run PROGRAM [--mode M] [--plots DIR]
+                                          a program's printout, in the book's layout
     sarkp book diff FIG|all [--mode M]    compare a reproduction with the printed figure
 
 Book programs run as printed by default (``--mode as-printed``: the book's PI = 3.14159
@@ -78,6 +79,9 @@ def _main(argv=None) -> int:
     book_sub.add_parser("list", help="list the reproduced programs and figures")
     run = book_sub.add_parser("run", help="run a book program and print its output")
     run.add_argument("program", help="listing number, e.g. II.13")
+    run.add_argument("--plots", metavar="DIR",
+                     help="also write the program's pictures as PNG files in DIR "
+                          "(needs matplotlib)")
     diff = book_sub.add_parser("diff", help="compare a reproduction with a printed figure")
     diff.add_argument("figure", help="figure number, e.g. 4, or 'all'")
     for p in (run, diff):
@@ -99,6 +103,12 @@ def _main(argv=None) -> int:
         prog = book.program(args.program)
         with modes.mode(args.mode):
             print(prog.render())
+            if args.plots:
+                if not hasattr(prog, "plots"):
+                    print(f"sarkp: program {args.program} has no pictures", file=sys.stderr)
+                    return 2
+                for path in prog.plots(args.plots):
+                    print(f"wrote {path}", file=sys.stderr)
         return 0
     numbers = list(book.FIGURES) if args.figure == "all" else [args.figure]
     for number in numbers:

@@ -85,6 +85,8 @@ ON_ERROR_DOC = """
 """
 
 _SCALAR_TYPES = (float, np.floating)
+#: what the scalar path takes (a bool is an int; complex, strings, arrays go the long way)
+_SCALARS = frozenset({float, int, bool, np.float64, np.float32, np.int64, np.int32})
 _PACKAGE_DIR = os.path.dirname(os.path.abspath(__file__))
 _INT_MAX = 2**31 - 1
 
@@ -103,8 +105,9 @@ class Check:
         self.message = message
 
 
-def f2py_signature(wrapper):
-    """(required arguments, optional arguments, returned names) of an f2py wrapper."""
+def f2py_signature(wrapper, raw=False):
+    """(required arguments, optional arguments, returned names) of an f2py wrapper, with
+    the Fortran names (f2py appends ``_bn`` to names such as ``index``; ``raw`` keeps it)."""
     first = wrapper.__doc__.strip().splitlines()[0]
     m = re.match(r"(?:(.*?)\s*=\s*)?\w+\((.*)\)$", first)
     rets = [r.strip() for r in (m.group(1) or "").split(",") if r.strip()]
@@ -114,10 +117,9 @@ def f2py_signature(wrapper):
         args, opt = args.split("[", 1)
         optional = [a.strip() for a in opt.rstrip("]").split(",") if a.strip()]
     required = [a.strip() for a in args.split(",") if a.strip()]
-    # f2py appends _bn to an argument named like a C keyword (DGMZVN's cutter diameter DO)
-    required, optional, rets = ([a[:-3] if a.endswith("_bn") else a for a in names]
-                                for names in (required, optional, rets))
-    return required, optional, rets
+    if raw:
+        return required, optional, rets
+    return ([_f2py_unbad(a) for a in names] for names in (required, optional, rets))
 
 
 def _caller_stacklevel():
@@ -207,6 +209,9 @@ class Routine:
         self._nonzero_at = [i for i, a in enumerate(self.inputs) if a in self.nonzero]
         self._integer_at = [i for i, a in enumerate(self.inputs) if a in self.integers]
         self._aaa_index = self.inputs.index("AAA") if "AAA" in self.inputs else None
+        # what the Fortran sweep screens each input for (gen_drivers.py, ``screen``)
+        self._kinds = np.array([_kind(self, a) for a in self.inputs], dtype=np.int32)
+        self._python_checked = {a for a in self.integers if _kind(self, a) == 0}
         if self.report is not None and self._aaa_index is None:
             raise TypeError(f"{name}: a report needs the print flag AAA among the inputs")
         self.result = namedtuple(name, self.outputs)
@@ -214,6 +219,9 @@ class Routine:
 
     # -- the declaration against the Fortran signature ----------------------------------
     def _bind_fortran(self):
+        # f2py renames arguments that clash with C or its own names (INDEX -> index_bn)
+        raw_required, raw_optional, _ = f2py_signature(self.one, raw=True)
+        self._f2py_name = {_f2py_unbad(a): a for a in raw_required + raw_optional}
         required, optional, rets = f2py_signature(self.one)
         fortran_in = [a for a in required + optional if not a.startswith("sarkp_")]
         declared = [a.lower() for a in self.inputs]
@@ -308,11 +316,11 @@ class Routine:
                              f"not {on_error!r}")
         if self.sweeps_tables:
             return self._call_tables(args, on_error)
-        if not self._fixed:
-            # Python or NumPy floats add up to a float; anything else goes the long way.
+        if not self._fixed and all(type(a) in _SCALARS for a in args):
+            # Python or NumPy scalars: one call; their sum tells whether all are finite
             try:
                 total = sum(args)
-            except (TypeError, OverflowError, ValueError):   # (ValueError: shapes)
+            except OverflowError:                             # an integer beyond a double
                 total = None
             if isinstance(total, _SCALAR_TYPES):
                 return self._call_scalar(args, total, on_error)
@@ -376,61 +384,45 @@ class Routine:
                 f"(overflow); the inputs are too far apart in magnitude")
 
     def _call_arrays(self, args, on_error):
-        arrays = [as_real_array(self.name, arg, a) for arg, a in zip(self.inputs, args)]
-        # positions: the broadcast shape of the inputs (of their leading axes for tables
-        # of fixed size, like DSNTZR's three positions)
-        lead = []
-        for arg, a in zip(self.inputs, arrays):
+        allow_nan = on_error == "nan"
+        values, shapes = [], []
+        for arg, a in zip(self.inputs, args):
+            if type(a) is float:                        # passed to Fortran as it is
+                values.append(a)
+                continue
+            if type(a) is int:
+                try:
+                    values.append(float(a))
+                except OverflowError:
+                    raise ValueError(f"{self.name}: {arg} = {a} is an integer too large "
+                                     f"for a double") from None
+                continue
+            a = as_real_array(self.name, arg, a)
             if arg in self._fixed:
                 k = self._fixed[arg]
                 if a.ndim < 1 or a.shape[-1] != k:
                     raise ValueError(f"{self.name}: {arg} must hold {k} values (last axis "
                                      f"of length {k}), not shape {a.shape}")
-                lead.append(a.shape[:-1])
-            else:
-                lead.append(a.shape)
+                shapes.append(a.shape[:-1])
+            elif a.ndim:
+                shapes.append(a.shape)
+            values.append(a)
         try:
-            shape = np.broadcast_shapes(*lead)
+            shape = np.broadcast_shapes(*shapes)
         except ValueError:
             raise ValueError(f"{self.name}: the shapes of the inputs do not broadcast: "
-                             + ", ".join(f"{a} {s}" for a, s in zip(self.inputs, lead))) \
-                from None
+                             + ", ".join(f"{a} {np.shape(v)}" for a, v in
+                                         zip(self.inputs, values))) from None
         n = math.prod(shape)
-        allow_nan = on_error == "nan"
-        missing = None
-        for arg, a in zip(self.inputs, arrays):
-            if self._strict and (arg in self.integers or arg in self.lengths
-                                 or arg in self.nonnegative or arg in self.nonzero) \
-                    or not np.isfinite(a.sum()):
-                nan = self._check_array(arg, a, allow_nan)
-                if nan is not None:
-                    if arg in self._fixed:
-                        nan = nan.any(axis=-1)
-                    nan = np.broadcast_to(nan, shape)
-                    missing = nan if missing is None else missing | nan
         if n == 0:
             empty = [np.zeros(shape) for _ in self.outputs]
             return self._result(empty, np.zeros(shape, np.int32) if allow_nan else None)
-        named = dict(zip(self.inputs, arrays))
-        status = None                                   # None: every position so far ok
-        if missing is not None:
-            status = np.where(missing, ST_MISSING, ST_OK).astype(np.int32)
-        failed_check = None                             # which check failed where
-        for k, check in enumerate(self.checks):
-            with np.errstate(all="ignore"):
-                bad = np.broadcast_to(np.asarray(check.bad(**named), dtype=bool), shape)
-            if status is not None:
-                bad = bad & (status == ST_OK)
-            if bad.any():
-                if status is None:
-                    status = np.zeros(shape, dtype=np.int32)
-                if failed_check is None:
-                    failed_check = np.full(shape, -1, dtype=np.int8)
-                status[bad] = check.status
-                failed_check[bad] = k
         flat, incs = [], []
-        for arg, a in zip(self.inputs, arrays):
-            if arg in self._fixed:
+        for arg, a in zip(self.inputs, values):
+            if type(a) is float:
+                flat.append(a)
+                incs.append(0)
+            elif arg in self._fixed:
                 k = self._fixed[arg]
                 if math.prod(a.shape[:-1]) == 1:
                     flat.append(a.reshape(k, 1))
@@ -441,22 +433,34 @@ class Routine:
             elif a.size == 1:
                 flat.append(a.reshape(1))
                 incs.append(0)
-            elif a.shape == shape:
-                flat.append(a.reshape(n))
-                incs.append(1)
             else:
-                flat.append(np.broadcast_to(a, shape).reshape(n))
+                flat.append((a if a.shape == shape else np.broadcast_to(a, shape)).reshape(n))
                 incs.append(1)
-        if missing is not None:                          # keep NaN away from Fortran
-            flat = [np.nan_to_num(f, nan=0.0) for f in flat]
-        out = self.many(MODE_CODE.get(), n, np.array(incs, dtype=np.int32), *flat)
-        computed = out[-1].reshape(shape)
-        # (integer results, such as DZBPL's tooth numbers, come back as floats: a failed
-        # position holds NaN)
+        out = self.many(MODE_CODE.get(), n, incs, self._kinds, allow_nan, *flat)
+        bad = out[-1]
+        if bad[0]:
+            self._raise_bad_input(int(bad[0]) - 1, int(bad[1]) - 1, flat, incs, shape)
+        status = out[-2].reshape(shape)
+        # integer results (DZBPL's tooth numbers) come back as floats: a failure holds NaN
         out = [np.asarray(out[i], dtype=float) for i in self._pick]
         out = [o.reshape(shape) if o.ndim == 1 else o.T.reshape(shape + o.shape[:-1])
                for o in out]
-        status = computed if status is None else np.where(status != ST_OK, status, computed)
+        if self._python_checked:                        # integer sets Fortran cannot screen
+            for arg, a in zip(self.inputs, values):
+                if arg in self._python_checked:
+                    self._check_array(arg, np.asarray(a), allow_nan)
+        failed_check = None                             # which check failed where
+        if self.checks:
+            named = dict(zip(self.inputs, values))
+            for k, check in enumerate(self.checks):
+                with np.errstate(all="ignore"):
+                    fails = np.broadcast_to(np.asarray(check.bad(**named), dtype=bool), shape)
+                fails = fails & (status != ST_MISSING)
+                if fails.any():
+                    if failed_check is None:
+                        failed_check = np.full(shape, -1, dtype=np.int8)
+                    status = np.where(fails, check.status, status).astype(np.int32)
+                    failed_check[fails] = k
         if status.any():
             def message(code, index):
                 if code == ST_RANGE:
@@ -468,11 +472,35 @@ class Routine:
                                         message)
         if shape == ():
             out = [float(o) if o.ndim == 0 else o for o in out]
-            if self.report is not None and float(arrays[self._aaa_index]) == 0.0 and \
+            if self.report is not None and float(values[self._aaa_index]) == 0.0 and \
                     int(status) in (ST_OK, ST_SIGNIFICANCE):
-                print(self.report(dict(zip(self.inputs, arrays)), tuple(out)))
+                print(self.report(dict(zip(self.inputs, values)), tuple(out)))
             return self._result(out, Status(int(status)) if allow_nan else None)
         return self._result(out, status if allow_nan else None)
+
+    def _raise_bad_input(self, k, j, flat, incs, shape):
+        """The ValueError for input ``k``, element ``j`` of its flat array, that the
+        Fortran screen rejected."""
+        arg = self.inputs[k]
+        a = np.asarray(flat[k])
+        value = float(a.ravel()[j]) if arg not in self._fixed else a[:, j]
+        where = ""
+        if incs[k]:
+            where = str([int(i) for i in np.unravel_index(j, shape)])
+        if arg in self._fixed:
+            bad = value[~np.isfinite(value)] if not np.all(np.isfinite(value)) else value
+            value = float(bad.ravel()[0]) if bad.size else value
+        if not math.isfinite(value):
+            what = "is not a finite number"
+        elif arg in self.lengths:
+            what = "is a length and must be > 0"
+        elif arg in self.nonnegative:
+            what = "must be >= 0"
+        elif arg in self.nonzero:
+            what = "must not be 0"
+        else:
+            what = f"is not one of {_describe(self.integers[arg])}"
+        raise ValueError(f"{self.name}: {arg}{where} = {value!r} {what}")
 
     def _call_tables(self, args, on_error):
         """A routine with tables counted by an argument: one Fortran call, no sweep."""
@@ -489,7 +517,7 @@ class Routine:
                                      f"shape {a.shape}")
                 self._check_array(arg, a, allow_nan=False)
                 named[arg] = a
-                kw[arg.lower()] = np.array(a, order="F", copy=True)
+                kw[self._f2py_name[arg.lower()]] = np.array(a, order="F", copy=True)
             else:
                 if isinstance(value, (bool, np.bool_)) or not isinstance(
                         value, (int, float, np.integer, np.floating)):
@@ -504,7 +532,7 @@ class Routine:
                                      f"double") from None
                 self._check_value(arg, v)
                 named[arg] = int(v) if arg in self.integers else v
-                kw[arg.lower()] = named[arg]
+                kw[self._f2py_name[arg.lower()]] = named[arg]
         for arg, dims in self.tables.items():
             for axis, d in enumerate(dims):
                 want = named[d] if isinstance(d, str) else d
@@ -534,6 +562,27 @@ class Routine:
         if self.report is not None and args[self._aaa_index] == 0.0:
             print(self.report(named, tuple(out)))
         return self._result(out, Status(status) if on_error == "nan" else None)
+
+
+def _kind(spec, arg):
+    """The screen of input ``arg`` in the Fortran sweep: 0 a finite number, 1 a length,
+    2 >= 0, 3 not 0, 4 an assembly branch (-1 or +1).  Other integer sets are checked in
+    Python (kind 0 in Fortran)."""
+    if arg in spec.lengths:
+        return 1
+    if arg in spec.nonnegative:
+        return 2
+    if arg in spec.nonzero:
+        return 3
+    allowed = spec.integers.get(arg)
+    if allowed is not None and not isinstance(allowed, range) and set(allowed) == {-1, 1}:
+        return 4
+    return 0
+
+
+def _f2py_unbad(name):
+    """The Fortran name of an f2py argument (f2py appends _bn to names such as index)."""
+    return name[:-3] if name.endswith("_bn") else name
 
 
 def _describe(allowed):
@@ -662,7 +711,7 @@ def _fast_path(spec, namespace):
     and a computed result: one Fortran call and a tuple, nothing else.  Every other case
     (arrays, NaN, a failure, a warning) falls through to ``Routine.__call__``."""
     args = ", ".join(spec.inputs)
-    cond = ["on_error == 'raise'", "type(_t) is float", "_t - _t == 0.0"]
+    cond = ["on_error == 'raise'", "_t - _t == 0.0"]
     cond += [f"{a} > 0.0" for a in spec.inputs if a in spec.lengths]
     cond += [f"{a} >= 0.0" for a in spec.inputs if a in spec.nonnegative]
     cond += [f"{a} != 0.0" for a in spec.inputs if a in spec.nonzero]
@@ -683,14 +732,16 @@ def _fast_path(spec, namespace):
         result = "_new(_cls, _o[:-1])"
     else:
         result = f"_new(_cls, ({', '.join(f'_o[{i}]' for i in spec._pick)},))"
-    return ["    try:",
+    # exact types first: a NumPy array among the inputs must not be summed here
+    types = [f"type({a}) is _F" if a not in spec.integers
+             else f"(type({a}) is _F or type({a}) is _I)" for a in spec.inputs]
+    namespace.update(_F=float, _I=int)
+    return [f"    if {' and '.join(types)}:",
             f"        _t = {' + '.join(spec.inputs)}",
-            "    except Exception:",
-            "        _t = None",
-            f"    if {' and '.join(cond)}:",
-            f"        _o = _one(_mode(), {args})",
-            "        if _o[-1] == 0:",
-            f"            return {result}"]
+            f"        if {' and '.join(cond)}:",
+            f"            _o = _one(_mode(), {args})",
+            "            if _o[-1] == 0:",
+            f"                return {result}"]
 
 
 def declared_routines():

@@ -18,18 +18,23 @@ PROGRAMS = {
     "II.13": "prog_ii_13",
     "III.5": "prog_iii_5",
     "IV.15": "prog_iv_15",
+    "V.5": "prog_v_5",
+    "V.5-FLAT": "prog_v_5_flat",
     "VI.2": "prog_vi_2",
     "VI.3": "prog_vi_3",
     "VI.5": "prog_vi_5",
     "VI.6": "prog_vi_6",
     "VI.7": "prog_vi_7",
     "VI.8": "prog_vi_8",
+    "VII.10": "prog_vii_10",
 }
 
 #: figure number -> listing of the program that prints it
 FIGURES = {
     "4": "II.13",
     "10": "III.5",
+    "35": "V.5",
+    "36": "V.5-FLAT",
     "39": "VI.2",
     "44": "VI.3",
     "46": "VI.5",

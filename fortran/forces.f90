@@ -1,0 +1,502 @@
+! forces.f90 -- chapter 7, force analysis of the class-II Assur groups (listings VII.1-VII.9
+! and the DNMA5 listing the book heads "VII.9" a second time, book lines L4986-5513):
+! the projection method DNMAF1-DNMAF5 and the vector method DNMA1-DNMA5 of textbook [1],
+! plus DUGL6, which DNMA1-DNMA3 call and the book never prints (an extension of sarkp).
+!
+! Group kinds and links as in chapter 4: links 2 and 3 form the group, 1 and 4 are the
+! chain links (or the frame) it is attached to.  No friction: a prismatic pair's reaction
+! is perpendicular to its guide.  Angles in radians from +x, counter-clockwise positive;
+! a force is a pair (modulus >= 0, direction); moments counter-clockwise positive.
+! F2/G2 (Q2/G2) and T2 (M2) are the resultant and the main moment of the loads on link 2
+! (inertia loads included by the caller: d'Alembert, L4863-4869), reduced to the point S2;
+! the same for link 3.
+!
+! Directions of the outputs (L4986, L6423):
+!   DNMAF*  forces exerted BY the group's links ON the chain: F21 = force of 2 on 1,
+!           F34 = force of 3 on 4; the internal F23 = force of 2 on 3 (DNMAF5: F32 = of 3 on 2);
+!   DNMA*   reactions ON the group's links: RA on 2 from 1, RC on 3 from 4; RB on 2 from 3
+!           (DNMA5: RB on 3 from 2, ERRATA E-DNMA5-2).
+! Each routine's header states where its reduction points lie and what its arms mean: the
+! printed code balances exactly under those conventions and no other (ERRATA E-DNMA1-3,
+! E-DNMA2-3, E-DNMA3-4, E-DNMA4-2, E-DNMA5-3; tests/test_forces.py checks each).
+!
+! Additions to the book (it reports no failure): a trailing IER --
+!   st_singular     a division by zero or a singular 2x2 system (no digit of the result
+!                   left): the group is at a singular position (links or guides aligned)
+!                   or two of its points coincide;
+!   st_digits + d   near a singular position only about d (1..7) digits are left: kept;
+!   st_significance the denominator (a sine or cosine of the angle between two directions,
+!                   or GELG's pivot) is below 1e-4, the book's GELG tolerance: result kept;
+!   st_ok.
+! On st_singular every output is 0 (never NaN).  An arm of a zero force is 0 (the DNMAF
+! routines' own guard, extended to DNMA2-DNMA5: E-DNMA-1).
+! No as-printed switch here: only PI (3.14159 as printed) differs between the modes; no
+! printed figure depends on the author errors corrected below.
+module forces
+  use prmtr, only: dp, pi, pid2, st_ok, st_singular, st_significance, st_digits
+  use operators, only: dugl3, dugl4, dugl5, dvkt, dsmvkt
+  use gelg_mod, only: gelg2
+  implicit none
+  private
+  public :: dnmaf1, dnmaf2, dnmaf3, dnmaf4, dnmaf5
+  public :: dnma1, dnma2, dnma3, dnma4, dnma5
+  public :: dugl6
+
+  ! The book's GELG tolerance (EPS = 0.0001, L525): a smaller denominator is reported.
+  real(dp), parameter :: eps_den = 1.0e-4_dp
+
+contains
+
+  ! ============================================================================
+  ! private helpers
+  ! ============================================================================
+
+  ! Status of a division by s, a sine or cosine (|s| <= 1) of an angle between two
+  ! directions that were computed to rounding: the result's relative error is about
+  ! epsilon/|s|, so d = log10(|s|/epsilon) digits are left.  No digit (|s| < 10 epsilon):
+  ! singular.  1 to 7 digits: st_digits + d (kept, with a warning that says how many).
+  ! Otherwise |s| <= 1e-4, the book's GELG tolerance: st_significance; else st_ok.
+  pure integer function den_status(s)
+    real(dp), intent(in) :: s
+    integer :: d
+    if (.not. abs(s) >= 10.0_dp*epsilon(1.0_dp)) then
+      den_status = st_singular
+      return
+    end if
+    d = int(log10(abs(s)/epsilon(1.0_dp)))
+    if (d < 8) then
+      den_status = st_digits + d
+    else if (abs(s) <= eps_den) then
+      den_status = st_significance
+    else
+      den_status = st_ok
+    end if
+  end function den_status
+
+  ! An arm: moment/force, 0 for a zero force (the book's guard, L5014).
+  pure real(dp) function arm(moment, force)
+    real(dp), intent(in) :: moment, force
+    if (force == 0.0_dp) then
+      arm = 0.0_dp
+    else
+      arm = moment/force
+    end if
+  end function arm
+
+  ! GELG(Y, X, 2, 1, 0.0001, IER) on a11*y1 + a12*y2 = b1, a21*y1 + a22*y2 = b2, whose
+  ! columns are unit vectors in every call of the book: the determinant is the sine of the
+  ! angle between them, judged as the DNMAF denominators are (a GELG pivot of rounding
+  ! size alone would not say that no digit is left).
+  subroutine solve2(a11, a12, a21, a22, b1, b2, y1, y2, st)
+    real(dp), intent(in) :: a11, a12, a21, a22, b1, b2
+    real(dp), intent(out) :: y1, y2
+    integer, intent(out) :: st
+    real(dp) :: x(2, 2), y(2)
+    integer :: st_gelg
+    y1 = 0.0_dp
+    y2 = 0.0_dp
+    st = den_status(a11*a22 - a12*a21)
+    if (st == st_singular) return
+    x = reshape([a11, a21, a12, a22], [2, 2])
+    y = [b1, b2]
+    call gelg2(x, y, st_gelg)
+    if (st_gelg == st_singular .or. (st == st_ok .and. st_gelg /= st_ok)) st = st_gelg
+    if (st == st_singular) return
+    y1 = y(1)
+    y2 = y(2)
+  end subroutine solve2
+
+  ! ============================================================================
+  ! DUGL6 -- not printed (ERRATA E-DUGL6-1): an extension of sarkp
+  ! ============================================================================
+
+  ! DUGL6(RN, GN, RT, GT, FI), called by DNMA1 (L5311-5312), DNMA2 (L5359), DNMA3 (L5401)
+  ! right after RA = SQRT(RAN**2 + RAT**2): the direction of the reaction whose normal
+  ! component is RN at GN and tangential component RT at GT, i.e. of the vector sum
+  ! RN e(GN) + RT e(GT), in the DUGL5 range (-pi/2, 3*pi/2) -- what DSMVKT returns for the
+  ! same sum in the DNMAF routines.  FI (the link's direction) is not needed.  That this
+  ! is the book's meaning is shown by equilibrium: with it every DNMA1-DNMA3 result
+  ! balances (tests/test_forces.py).
+  pure real(dp) function dugl6(rn, gn, rt, gt, fi)
+    real(dp), intent(in) :: rn, gn, rt, gt, fi
+    dugl6 = dugl5(rn*cos(gn) + rt*cos(gt), rn*sin(gn) + rt*sin(gt))
+  end function dugl6
+
+  ! ============================================================================
+  ! projection method (F21, F34: forces of the group ON the chain)
+  ! ============================================================================
+
+  ! VII.1 DNMAF2, L4992-5020 (Table 27, Fig. 52).  Kind 2 (RRP): revolute A (link 2 on 1),
+  ! internal revolute B, slider 3 on the guide of link 4 with direction FIM.
+  ! S2, S3 anywhere (given by coordinates).  F34 is perpendicular to the guide.  The arm:
+  ! H34*F34 = moment about B of the guide's reaction on link 3 (-F34): the line of action
+  ! crosses the guide at the distance |H34| from B.
+  ! Singular: A = B, or AB perpendicular to the guide (cos(FIM - FI) = 0).
+  ! ERRATA: none in the code.
+  subroutine dnmaf2(xa, ya, xb, yb, fim, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, aaa, &
+                    f21, g21, f23, g23, f34, g34, h34, ier)
+    real(dp), intent(in) :: xa, ya, xb, yb, fim, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
+                            aaa
+    real(dp), intent(out) :: f21, g21, f23, g23, f34, g34, h34
+    integer, intent(out) :: ier
+    real(dp) :: f12m, g12m, r, fi, rbs2, fibs2, rbs3, fibs3, f12nm, g12nm, f12, g, den
+    f21 = 0.0_dp; g21 = 0.0_dp; f23 = 0.0_dp; g23 = 0.0_dp; f34 = 0.0_dp; g34 = 0.0_dp
+    h34 = 0.0_dp
+    ! the group projected on the guide m (F43 has no component along it)
+    f12m = -(f2*cos(g2 - fim) + f3*cos(g3 - fim))
+    g12m = dugl4(fim, pi, f12m)
+    call dvkt(xb, yb, xa, ya, r, fi)
+    call dvkt(xb, yb, xs2, ys2, rbs2, fibs2)
+    den = sin(fim + pid2 - fi)
+    ier = den_status(den)
+    if (r == 0.0_dp) ier = st_singular
+    if (ier == st_singular) return
+    ! link 2, moments about B: the component of F12 normal to m
+    f12nm = -(t2 + rbs2*f2*sin(g2 - fibs2) + r*abs(f12m)*sin(g12m - fi))/(r*den)
+    g12nm = dugl3(fim, pid2, f12nm)
+    call dsmvkt(abs(f12m), g12m, abs(f12nm), g12nm, f12, g)
+    g21 = g - pi
+    f21 = f12
+    call dsmvkt(f12, g, f2, g2, f23, g23)          ! link 2: F32 = -(F12 + F2)
+    call dsmvkt(f23, g23, f3, g3, f34, g34)        ! link 3: F43 = -(F23 + F3)
+    call dvkt(xb, yb, xs3, ys3, rbs3, fibs3)
+    h34 = arm(-(rbs3*f3*sin(g3 - fibs3) + t3), f34)
+  end subroutine dnmaf2
+
+  ! VII.2 DNMAF1, L5059-5087 (Table 28, Fig. 53).  Kind 1 (RRR): revolutes A (2 on 1),
+  ! B (internal), C (3 on 4).  S2, S3 anywhere (given by coordinates).
+  ! Singular: A = B, A = C, or A, B, C collinear (sin(FI - FICA) = 0: the dyad stretched
+  ! or folded).
+  ! ERRATA: none in the code.
+  subroutine dnmaf1(xa, ya, xb, yb, xc, yc, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, aaa, &
+                    f21, g21, f23, g23, f34, g34, ier)
+    real(dp), intent(in) :: xa, ya, xb, yb, xc, yc, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, &
+                            t3, aaa
+    real(dp), intent(out) :: f21, g21, f23, g23, f34, g34
+    integer, intent(out) :: ier
+    real(dp) :: rbs2, fibs2, rcs2, fics2, rcs3, fics3, rca, fica, r, fi, f12t, g12t, f12n, &
+                g12n, g, den
+    f21 = 0.0_dp; g21 = 0.0_dp; f23 = 0.0_dp; g23 = 0.0_dp; f34 = 0.0_dp; g34 = 0.0_dp
+    call dvkt(xb, yb, xs2, ys2, rbs2, fibs2)
+    call dvkt(xc, yc, xs2, ys2, rcs2, fics2)
+    call dvkt(xc, yc, xs3, ys3, rcs3, fics3)
+    call dvkt(xc, yc, xa, ya, rca, fica)
+    call dvkt(xa, ya, xb, yb, r, fi)
+    den = sin(fi - fica)
+    ier = den_status(den)
+    if (r == 0.0_dp .or. rca == 0.0_dp) ier = st_singular
+    if (ier == st_singular) return
+    ! link 2, moments about B: the component of F12 normal to AB
+    f12t = -(rbs2*f2*sin(g2 - fibs2) + t2)/r
+    g12t = dugl4(fi - pid2, -pi, f12t)
+    f12t = abs(f12t)
+    ! the group, moments about C: the component along AB
+    f12n = -(f12t*rca*sin(g12t - fica) + f2*rcs2*sin(g2 - fics2) + f3*rcs3*sin(g3 - fics3) &
+             + t2 + t3)/(rca*den)
+    g12n = dugl4(fi, pi, f12n)
+    call dsmvkt(abs(f12t), g12t, abs(f12n), g12n, f21, g)
+    g21 = g - pi
+    call dsmvkt(f21, g, f2, g2, f23, g23)
+    call dsmvkt(f23, g23, f3, g3, f34, g34)
+  end subroutine dnmaf1
+
+  ! VII.3 DNMAF4, L5118-5149 (Table 29, Fig. 54).  Kind 4 (PRP): slider 2 on the guide of
+  ! link 1 (direction FIM), slider 3 on the guide of link 4 (FIN), joined at revolute B.
+  ! F21 is perpendicular to FIM, F34 to FIN.  Arms about B (the printed comment says C,
+  ! E-DNMAF4-3): H21*F21 = moment about B of F12 (the reaction on link 2), H34*F34 = moment
+  ! about B of F43 (the reaction on link 3).  Singular: parallel guides.
+  ! ERRATA: E-DNMAF4-1 (the division sign lost by the OCR), E-DNMAF4-2 (G21 for G12 in
+  ! the first DSMVKT: corrected in both modes, no printed figure depends on it).
+  subroutine dnmaf4(fim, fin, xb, yb, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, aaa, &
+                    f21, g21, h21, f23, g23, f34, g34, h34, ier)
+    real(dp), intent(in) :: fim, fin, xb, yb, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, aaa
+    real(dp), intent(out) :: f21, g21, h21, f23, g23, f34, g34, h34
+    integer, intent(out) :: ier
+    real(dp) :: rbs2, fibs2, rbs3, fibs3, f12, g12, den
+    f21 = 0.0_dp; g21 = 0.0_dp; h21 = 0.0_dp; f23 = 0.0_dp; g23 = 0.0_dp; f34 = 0.0_dp
+    g34 = 0.0_dp; h34 = 0.0_dp
+    call dvkt(xb, yb, xs2, ys2, rbs2, fibs2)
+    call dvkt(xb, yb, xs3, ys3, rbs3, fibs3)
+    den = cos(fim + pid2 - fin)
+    ier = den_status(den)
+    if (ier == st_singular) return
+    ! the group projected on the guide n (F43 has no component along it)
+    f12 = -(f2*cos(g2 - fin) + f3*cos(g3 - fin))/den        ! E-DNMAF4-1
+    g12 = dugl3(fim, pid2, f12)
+    g21 = g12 - pi
+    f21 = abs(f12)
+    call dsmvkt(abs(f12), g12, f2, g2, f23, g23)            ! E-DNMAF4-2: printed G21
+    call dsmvkt(f23, g23, f3, g3, f34, g34)
+    h21 = arm(-(t2 + f2*rbs2*sin(g2 - fibs2)), f21)
+    h34 = arm(-(t3 + f3*rbs3*sin(g3 - fibs3)), f34)
+  end subroutine dnmaf4
+
+  ! VII.4 DNMAF3, L5181-5210 (Table 30, Fig. 55).  Kind 3 (RPR): slider 2 pivoted at A
+  ! (on link 1) slides along link 3 (guide direction FI3), which is pivoted at C (on 4).
+  ! F23 is perpendicular to the guide; H23*F23 = moment about C of F23 (force of 2 on 3).
+  ! Singular: A = C, or CA perpendicular to the guide.
+  ! ERRATA: E-DNMAF3-1 (F/3, F13 for FI3: OCR).
+  subroutine dnmaf3(xa, ya, xc, yc, fi3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, aaa, &
+                    f21, g21, f23, g23, h23, f34, g34, ier)
+    real(dp), intent(in) :: xa, ya, xc, yc, fi3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
+                            aaa
+    real(dp), intent(out) :: f21, g21, f23, g23, h23, f34, g34
+    integer, intent(out) :: ier
+    real(dp) :: f12t3, g12t3, rca, fica, rcs2, fics2, rcs3, fics3, f12n3, g12n3, g, den
+    f21 = 0.0_dp; g21 = 0.0_dp; f23 = 0.0_dp; g23 = 0.0_dp; h23 = 0.0_dp; f34 = 0.0_dp
+    g34 = 0.0_dp
+    ! link 2 projected on the guide (F32 has no component along it)
+    f12t3 = -f2*cos(g2 - fi3)
+    g12t3 = dugl4(fi3, pi, f12t3)
+    call dvkt(xc, yc, xa, ya, rca, fica)
+    call dvkt(xc, yc, xs2, ys2, rcs2, fics2)
+    call dvkt(xc, yc, xs3, ys3, rcs3, fics3)
+    den = sin(fi3 + pid2 - fica)
+    ier = den_status(den)
+    if (rca == 0.0_dp) ier = st_singular
+    if (ier == st_singular) return
+    ! the group, moments about C: the component normal to the guide
+    f12n3 = -(rca*abs(f12t3)*sin(g12t3 - fica) + rcs2*f2*sin(g2 - fics2) &
+              + rcs3*f3*sin(g3 - fics3) + t2 + t3)/(rca*den)
+    g12n3 = dugl3(fi3, pid2, f12n3)
+    call dsmvkt(abs(f12t3), g12t3, abs(f12n3), g12n3, f21, g)
+    g21 = g - pi
+    call dsmvkt(f21, g, f2, g2, f23, g23)
+    call dsmvkt(f23, g23, f3, g3, f34, g34)
+    h23 = arm(-(t3 + rcs3*f3*sin(g3 - fics3)), f23)
+  end subroutine dnmaf3
+
+  ! VII.5 DNMAF5, L5235-5268 (Table 31, Fig. 56).  Kind 5 (RPP): link 2 pivoted at A (on 1)
+  ! slides in link 3 along the direction FIM + TT3 (TT3 relative to the guide); link 3
+  ! slides on the guide of link 4 (direction FIM).
+  ! Outputs F32, G32 (force of 3 on 2, perpendicular to FIM + TT3; the printed comment
+  ! names them F23, E-DNMAF5-1) and F34 (perpendicular to FIM).  Arms about A:
+  ! H32*F32 = moment about A of F32; H34*F34 = moment about A of F43 (the guide's reaction
+  ! on link 3).  Singular: the two guides parallel (cos(PID2 - TT3) = 0).
+  ! ERRATA: E-DNMAF5-1 (comment only).
+  subroutine dnmaf5(xa, ya, fim, tt3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, aaa, &
+                    f21, g21, f32, g32, h32, f34, g34, h34, ier)
+    real(dp), intent(in) :: xa, ya, fim, tt3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, aaa
+    real(dp), intent(out) :: f21, g21, f32, g32, h32, f34, g34, h34
+    integer, intent(out) :: ier
+    real(dp) :: ras2, fias2, ras3, fias3, f43, g43, den
+    f21 = 0.0_dp; g21 = 0.0_dp; f32 = 0.0_dp; g32 = 0.0_dp; h32 = 0.0_dp; f34 = 0.0_dp
+    g34 = 0.0_dp; h34 = 0.0_dp
+    call dvkt(xa, ya, xs2, ys2, ras2, fias2)
+    call dvkt(xa, ya, xs3, ys3, ras3, fias3)
+    den = cos(pid2 - tt3)
+    ier = den_status(den)
+    if (ier == st_singular) return
+    ! link 3 projected on the inner guide (F23 has no component along it)
+    f43 = -f3*cos(g3 - fim - tt3)/den
+    g43 = dugl3(fim, pid2, f43)
+    g34 = g43 - pi
+    f34 = abs(f43)
+    call dsmvkt(f34, g34 - pi, f3, g3, f32, g32)   ! link 3: F32 = F43 + F3
+    call dsmvkt(f32, g32, f2, g2, f21, g21)        ! link 2: F21 = F32 + F2
+    h34 = arm(-(t2 + t3 + ras3*f3*sin(g3 - fias3) + ras2*f2*sin(g2 - fias2)), f34)
+    h32 = arm(-(t2 + ras2*f2*sin(g2 - fias2)), f32)
+  end subroutine dnmaf5
+
+  ! ============================================================================
+  ! vector method (RA, RC: reactions ON the group's links)
+  ! ============================================================================
+
+  ! VII.6 DNMA1, L5274-5318.  Kind 1 (RRR).  L2 = AB, FI2 = direction A->B, L3 = CB,
+  ! FI3 = direction C->B (as DPRM1 returns them).
+  ! Reduction points (E-DNMA1-3): S2 = B + BS2 e(FI2), S3 = B + BS3 e(FI3), i.e. BS2 is
+  ! measured from B AWAY from A (the printed moment is r x F with r at FI2, though it is
+  ! written with PI + FI2); a point between A and B has a negative BS2.  The same for BS3.
+  ! RB = force on 2 from 3.  Singular: links 2 and 3 parallel (GELG IER = -1).
+  ! ERRATA: E-DNMA1-1 (F12, F13, RI2 for FI2, FI3: OCR), E-DUGL6-1.
+  subroutine dnma1(l2, fi2, l3, fi3, bs2, bs3, m2, q2, g2, m3, q3, g3, &
+                   ra, ga, rb, gb, rc, gc, ier)
+    real(dp), intent(in) :: l2, fi2, l3, fi3, bs2, bs3, m2, q2, g2, m3, q3, g3
+    real(dp), intent(out) :: ra, ga, rb, gb, rc, gc
+    integer, intent(out) :: ier
+    real(dp) :: mbq2, mbq3, rat, gat, rct, gct, y1, y2, gan, ran, gcn, rcn, rbx, rby
+    ra = 0.0_dp; ga = 0.0_dp; rb = 0.0_dp; gb = 0.0_dp; rc = 0.0_dp; gc = 0.0_dp
+    if (.not. (l2 > 0.0_dp .and. l3 > 0.0_dp)) then
+      ier = st_singular
+      return
+    end if
+    ! links 2 and 3, moments about B: the components of RA, RC normal to the links
+    mbq2 = q2*cos(g2)*bs2*sin(pi + fi2) - q2*sin(g2)*bs2*cos(pi + fi2)
+    rat = (m2 + mbq2)/l2
+    gat = dugl3(fi2, pid2, rat)
+    mbq3 = q3*cos(g3)*bs3*sin(pi + fi3) - q3*sin(g3)*bs3*cos(pi + fi3)
+    rct = (m3 + mbq3)/l3
+    gct = dugl3(fi3, pid2, rct)
+    rat = abs(rat)
+    rct = abs(rct)
+    ! the group's forces: the components along the links
+    call solve2(cos(fi2), cos(fi3), sin(fi2), sin(fi3), &
+                -(rat*cos(gat) + q2*cos(g2) + q3*cos(g3) + rct*cos(gct)), &
+                -(rat*sin(gat) + q2*sin(g2) + q3*sin(g3) + rct*sin(gct)), y1, y2, ier)
+    if (ier == st_singular) return
+    gan = dugl4(fi2, pi, y1)
+    ran = abs(y1)
+    gcn = dugl4(fi3, pi, y2)
+    rcn = abs(y2)
+    ra = sqrt(ran**2 + rat**2)
+    rc = sqrt(rcn**2 + rct**2)
+    ga = dugl6(ran, gan, rat, gat, fi2)
+    gc = dugl6(rcn, gcn, rct, gct, fi3)
+    rbx = -(ra*cos(ga) + q2*cos(g2))
+    rby = -(ra*sin(ga) + q2*sin(g2))
+    rb = sqrt(rbx**2 + rby**2)
+    gb = dugl5(rbx, rby)
+  end subroutine dnma1
+
+  ! VII.7 DNMA2, L5322-5368.  Kind 2 (RRP).  L2 = AB, FI2 = direction A->B; L3 is not used;
+  ! FIO = the guide's direction (printed F10, read FIO as in the body: E-DNMA2-1); ETA =
+  ! the angle of link 3's line through B and S3 relative to the guide.
+  ! Reduction points (E-DNMA2-3): S2 = B + BS2 e(FI2), S3 = B + BS3 e(FIO + ETA).
+  ! RB = force on 2 from 3; RC perpendicular to the guide; HC*RC = moment about B of RC.
+  ! Singular: AB perpendicular to the guide.
+  ! ERRATA: E-DNMA2-1, E-DNMA2-2 (OCR), E-DUGL6-1, E-DNMA-1 (HC for RC = 0).
+  subroutine dnma2(l2, fi2, l3, eta, fio, bs2, bs3, m2, q2, g2, m3, q3, g3, &
+                   ra, ga, rb, gb, rc, hc, gc, ier)
+    real(dp), intent(in) :: l2, fi2, l3, eta, fio, bs2, bs3, m2, q2, g2, m3, q3, g3
+    real(dp), intent(out) :: ra, ga, rb, gb, rc, hc, gc
+    integer, intent(out) :: ier
+    real(dp) :: mbq2, mbq3, rat, gat, y1, y2, gan, ran, rx, ry
+    ra = 0.0_dp; ga = 0.0_dp; rb = 0.0_dp; gb = 0.0_dp; rc = 0.0_dp; hc = 0.0_dp
+    gc = 0.0_dp
+    if (.not. (l2 > 0.0_dp)) then
+      ier = st_singular
+      return
+    end if
+    mbq2 = q2*cos(g2)*bs2*sin(pi + fi2) - q2*sin(g2)*bs2*cos(pi + fi2)
+    rat = (m2 + mbq2)/l2
+    gat = dugl3(fi2, pid2, rat)
+    rat = abs(rat)
+    call solve2(cos(fi2), cos(fio + pid2), sin(fi2), sin(fio + pid2), &
+                -(rat*cos(gat) + q2*cos(g2) + q3*cos(g3)), &
+                -(rat*sin(gat) + q2*sin(g2) + q3*sin(g3)), y1, y2, ier)
+    if (ier == st_singular) return
+    gan = dugl4(fi2, pi, y1)
+    ran = abs(y1)
+    gc = dugl3(fio, pid2, y2)
+    rc = abs(y2)
+    ra = sqrt(ran**2 + rat**2)
+    ga = dugl6(ran, gan, rat, gat, fi2)
+    mbq3 = q3*cos(g3)*bs3*sin(pi + fio + eta) - q3*sin(g3)*bs3*cos(pi + fio + eta)
+    hc = arm(-(m3 + mbq3), rc)                                 ! E-DNMA-1
+    rx = -(ra*cos(ga) + q2*cos(g2))
+    ry = -(ra*sin(ga) + q2*sin(g2))
+    rb = sqrt(rx**2 + ry**2)
+    gb = dugl5(rx, ry)
+  end subroutine dnma2
+
+  ! VII.8 DNMA3, L5376-5413.  Kind 3 (RPR).  L2, ETA2 are not used.  FI3 = the guide's
+  ! direction on link 3; (CS2, FICS2), (CS3, FICS3) = the vectors C->S2, C->S3; AC = |AC|.
+  ! FIAC must be the direction A->C (E-DNMA3-4): the printed DUGL3(FIAC, -PID2, RAT) acts
+  ! as DUGL3(FIAC, +PID2, RAT), because SIGN drops the sign of its first argument.
+  ! RB = force on 2 from 3, perpendicular to the guide; HB*RB = moment about C of the force
+  ! on 3 from 2 (-RB).  Singular: A = C, or AC perpendicular to the guide.
+  ! ERRATA: E-DNMA3-1 (Q2, G2 missing from the header), E-DNMA3-2 (X(1,2) for X(1,1)),
+  ! E-DNMA3-3 (GR for GB: OCR), E-DUGL6-1, E-DNMA-1 (HB for RB = 0).
+  subroutine dnma3(l2, eta2, fi3, cs2, fics2, cs3, fics3, ac, fiac, m2, q2, g2, m3, q3, g3, &
+                   ra, ga, rb, hb, gb, rc, gc, ier)
+    real(dp), intent(in) :: l2, eta2, fi3, cs2, fics2, cs3, fics3, ac, fiac, m2, q2, g2, m3, &
+                            q3, g3
+    real(dp), intent(out) :: ra, ga, rb, hb, gb, rc, gc
+    integer, intent(out) :: ier
+    real(dp) :: mcq2, mcq3, rat, gat, y1, y2, gan, ran, rx, ry
+    ra = 0.0_dp; ga = 0.0_dp; rb = 0.0_dp; hb = 0.0_dp; gb = 0.0_dp; rc = 0.0_dp
+    gc = 0.0_dp
+    if (.not. (ac > 0.0_dp)) then
+      ier = st_singular
+      return
+    end if
+    ! the group, moments about C: the component of RA normal to AC
+    mcq2 = q2*sin(g2)*cs2*cos(fics2) - q2*cos(g2)*cs2*sin(fics2)
+    mcq3 = q3*sin(g3)*cs3*cos(fics3) - q3*cos(g3)*cs3*sin(fics3)
+    rat = (m2 + m3 + mcq2 + mcq3)/ac
+    gat = dugl3(fiac, -pid2, rat)
+    rat = abs(rat)
+    ! link 2's forces: the component of RA along AC and RB
+    call solve2(cos(fiac), cos(fi3 + pid2), sin(fiac), sin(fi3 + pid2), &   ! E-DNMA3-2
+                -(rat*cos(gat) + q2*cos(g2)), -(rat*sin(gat) + q2*sin(g2)), y1, y2, ier)
+    if (ier == st_singular) return
+    gan = dugl4(fiac, pi, y1)
+    ran = abs(y1)
+    gb = dugl3(fi3, pid2, y2)
+    rb = abs(y2)
+    ra = sqrt(ran**2 + rat**2)
+    ga = dugl6(ran, gan, rat, gat, fiac)
+    rx = -(rb*cos(gb + pi) + q3*cos(g3))
+    ry = -(rb*sin(gb + pi) + q3*sin(g3))
+    rc = sqrt(rx**2 + ry**2)
+    gc = dugl5(rx, ry)
+    hb = arm(-(m3 + mcq3), rb)                                 ! E-DNMA-1
+  end subroutine dnma3
+
+  ! VII.9 DNMA4, L5419-5460 (no heading printed; Table 33 numbers it VII.9).  Kind 4
+  ! (PRP): guides FIM (pair A, link 2 on 1) and FIN (pair C, link 3 on 4); ETA2, ETA3 =
+  ! the directions of the lines B->S2, B->S3 relative to the guides.
+  ! Reduction points (E-DNMA4-2): S2 = B + BS2 e(FIM + ETA2), S3 = B + BS3 e(FIN + ETA3).
+  ! RA perpendicular to FIM, RC to FIN; HA*RA = moment about B of RA, HC*RC = moment
+  ! about B of RC.  RB = force on 2 from 3.  Singular: parallel guides.
+  ! ERRATA: E-DNMA4-1 (FIM for FIN in HC's moment), E-DNMA-1 (HA, HC for zero forces).
+  subroutine dnma4(fim, eta2, fin, eta3, bs2, bs3, m2, q2, g2, m3, q3, g3, &
+                   ra, ha, ga, rb, gb, rc, hc, gc, ier)
+    real(dp), intent(in) :: fim, eta2, fin, eta3, bs2, bs3, m2, q2, g2, m3, q3, g3
+    real(dp), intent(out) :: ra, ha, ga, rb, gb, rc, hc, gc
+    integer, intent(out) :: ier
+    real(dp) :: y1, y2, sm, rx, ry
+    ra = 0.0_dp; ha = 0.0_dp; ga = 0.0_dp; rb = 0.0_dp; gb = 0.0_dp; rc = 0.0_dp
+    hc = 0.0_dp; gc = 0.0_dp
+    call solve2(cos(fim + pid2), cos(fin + pid2), sin(fim + pid2), sin(fin + pid2), &
+                -(q2*cos(g2) + q3*cos(g3)), -(q2*sin(g2) + q3*sin(g3)), y1, y2, ier)
+    if (ier == st_singular) return
+    ra = abs(y1)
+    ga = dugl3(fim, pid2, y1)
+    rc = abs(y2)
+    gc = dugl3(fin, pid2, y2)
+    sm = m2 + q2*cos(g2)*bs2*sin(pi + fim + eta2) - q2*sin(g2)*bs2*cos(pi + fim + eta2)
+    ha = arm(-sm, ra)                                          ! E-DNMA-1
+    sm = m3 + q3*cos(g3)*bs3*sin(pi + fin + eta3) &
+         - q3*sin(g3)*bs3*cos(pi + fin + eta3)                 ! E-DNMA4-1: printed FIM
+    hc = arm(-sm, rc)
+    rx = -(ra*cos(ga) + q2*cos(g2))
+    ry = -(ra*sin(ga) + q2*sin(g2))
+    rb = sqrt(rx**2 + ry**2)
+    gb = dugl5(rx, ry)
+  end subroutine dnma4
+
+  ! DNMA5, L5468-5513 (printed heading "VII.9"; Table 33 numbers it VII.10: E-DNMA5-1).
+  ! Kind 5 (RPP): link 2 pivoted at A slides in link 3 along FIM + ETA3; link 3 slides on
+  ! the guide FIM of link 4.
+  ! Reduction points (E-DNMA5-3): FIAS2, FIAS3 are the directions S2->A, S3->A, i.e.
+  ! S2 = A - AS2 e(FIAS2), S3 = A - AS3 e(FIAS3).
+  ! RB = force on 3 from 2 (E-DNMA5-2: DNMA1-DNMA4 give the force on 2 from 3),
+  ! perpendicular to FIM + ETA3; HB*RB = moment about A of the force on 2 from 3 (-RB);
+  ! RC perpendicular to FIM, HC*RC = moment about A of RC.  Singular: parallel guides.
+  ! ERRATA: E-DNMA5-4 (GELG tolerance 8.00001 for 0.0001: OCR), E-DNMA-1.
+  subroutine dnma5(eta3, fim, as2, as3, fias2, fias3, m2, q2, g2, m3, q3, g3, &
+                   ra, ga, rb, hb, gb, rc, hc, gc, ier)
+    real(dp), intent(in) :: eta3, fim, as2, as3, fias2, fias3, m2, q2, g2, m3, q3, g3
+    real(dp), intent(out) :: ra, ga, rb, hb, gb, rc, hc, gc
+    integer, intent(out) :: ier
+    real(dp) :: y1, y2, sm1, sm
+    ra = 0.0_dp; ga = 0.0_dp; rb = 0.0_dp; hb = 0.0_dp; gb = 0.0_dp; rc = 0.0_dp
+    hc = 0.0_dp; gc = 0.0_dp
+    ! link 3's forces: RC and the force from 2, both normal to their guides
+    call solve2(cos(fim + pid2), cos(fim + eta3 + pid2), sin(fim + pid2), &
+                sin(fim + eta3 + pid2), -q3*cos(g3), -q3*sin(g3), y1, y2, ier)
+    if (ier == st_singular) return
+    rc = abs(y1)
+    gc = dugl3(fim, pid2, y1)
+    rb = abs(y2)
+    gb = dugl3(fim + eta3, pid2, y2)
+    call dsmvkt(rb, gb + pi, q2, g2, ra, ga)       ! link 2: RA = RB - Q2
+    ga = ga + pi
+    sm1 = m2 + q2*cos(g2)*as2*sin(fias2) - q2*sin(g2)*cos(fias2)*as2
+    hb = arm(-sm1, rb)                                         ! E-DNMA-1
+    sm = m3 + sm1 + q3*cos(g3)*as3*sin(fias3) - q3*sin(g3)*as3*cos(fias3)
+    hc = arm(-sm, rc)
+  end subroutine dnma5
+
+end module forces
