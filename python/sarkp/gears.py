@@ -140,8 +140,9 @@ DZBPL = book_routine(
     Returns
     -------
     DZBPL(Z1, Z2, Z3, Z4)
-        The tooth numbers (COMMON /ZUB/), whole numbers returned as floats: the first
-        admissible set in increasing z1.
+        The tooth numbers (COMMON /ZUB/): the first admissible set in increasing z1.
+        A scalar call returns Python ints; array inputs give float arrays (NaN where a
+        position fails under ``on_error="nan"``), as does a failed scalar call then.
 
     Raises
     ------
