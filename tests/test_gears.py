@@ -688,3 +688,24 @@ def test_plot_gear_mesh_active_length_is_the_contact_ratio():
     r = DGMZPC(5.0, 11, 26, 0.0, 0.5, 0.5, 0.0)
     assert abs(g["active"] - r.E * math.pi * 5.0 * math.cos(math.pi / 9)) < 1e-9
     assert abs(np.linalg.norm(g["N2"] - g["N1"]) - r.AW * math.sin(r.ALFAW)) < 1e-9
+
+
+def test_duginv_as_printed_is_bounded_E_DUGINV_2():
+    """INVX = 0 with a TCHNST the iteration cannot reach soon: the book's loop would run
+    about 7e9 steps; as printed it stops after 10**6 (x_n ~ sqrt(3/(2n)))."""
+    with sarkp.as_printed():
+        x = DUGINV(0.0, 3.14159 / 18, 1e-15)
+    assert 1.2e-3 < x < 1.25e-3                       # sqrt(3/(2e6)) = 1.22e-3
+
+
+def test_eight_teeth_is_the_least_standard_gear_E_GEARS_1():
+    """Below 8 teeth every shift of a standard spur gear undercuts the tooth or makes it
+    pointed (the raw Fortran, past the layer's range check); with 8 some shifts work."""
+    from sarkp import _sarkp
+    one = _sarkp.drv_gears.dgmtzk_1
+    xs = np.linspace(-1.0, 2.0, 3001)
+    for z, possible in ((5, False), (6, False), (7, False), (8, True)):
+        ok = [one(0, 4.0, float(z), 0.0, float(x), 1.0)[-1] == 0 for x in xs]
+        assert any(ok) == possible, z
+    with pytest.raises(ValueError, match="Z = 7"):
+        DGMTZK(4.0, 7, 0.0, 0.5)
