@@ -604,9 +604,6 @@ def test_dzbpl_arrays_and_bad_input():
 # ---- the printed figures (package data) --------------------------------------------------
 
 GEAR_FIGURES = ("39", "44", "46", "47", "48", "50")
-#: as printed, the cells whose last digit needs the ES EVM's hexadecimal REAL*4 arithmetic
-ES_EVM_CELLS = {("47", "b", "AW"): "E-FIG47-1", ("48", "a", "DA2"): "E-FIG48-1",
-                ("48", "a", "SA1"): "E-FIG48-1", ("48", "b", "SA1"): "E-FIG48-1"}
 
 
 def compared(number, mode):
@@ -618,16 +615,39 @@ def compared(number, mode):
 
 @pytest.mark.parametrize("number", GEAR_FIGURES)
 def test_figures_as_printed_every_cell_within_half_a_unit(number):
-    """Every reproducible printed cell within half a unit of its last digit, except the
-    four that the ES EVM's arithmetic decides (within 2.5 units, each with its row)."""
-    for c in compared(number, "as-printed"):
-        if not c.cell.reproducible:
-            continue
-        key = (number, c.cell.row, c.cell.column)
-        if key in ES_EVM_CELLS:
-            assert c.cell.errata == ES_EVM_CELLS[key] and abs(c.units) <= 2.5
-        else:
-            assert c.matches, (key, c.cell.printed, c.computed)
+    """Every reproducible printed cell within half a unit of its last digit; the cells
+    left out are the ES EVM's (E-FIG44-1, E-FIG47-1, E-FIG48-1, checked below)."""
+    comparisons = compared(number, "as-printed")
+    bad = [(c.cell.row, c.cell.column, c.cell.printed, c.computed)
+           for c in comparisons if c.cell.reproducible and not c.matches]
+    assert bad == []
+    left_out = {c.cell.errata for c in comparisons if not c.cell.reproducible}
+    assert left_out <= {"E-FIG44-1", "E-FIG47-1", "E-FIG48-1"}
+
+
+def test_fig47_48_cells_of_the_es_evm_E_FIG47_1_E_FIG48_1():
+    """AW of Fig. 47b and DA2 of Fig. 48a come back from the listing run in the ES EVM's
+    truncating hexadecimal REAL*4; SA1 of Fig. 48 sits on a rounding edge that the printed
+    DA1 decides: inside DA1's printed interval SA1 crosses the edge, on the printed side
+    for the upper (a) or lower (b) part of it, and sarkp's double DA1 falls on the other."""
+    from sarkp.book import prog_vi_6, prog_vi_7
+    assert abs(prog_vi_6.emulate()[("b", "AW")] - 283.9946) <= 0.5e-4
+    assert abs(prog_vi_7.emulate()[("a", "DA2")] - 149.8096) <= 0.5e-4
+    pi = 3.14159
+    alpha = pi / 9
+
+    def sa1(m, z1, x1, da1):                        # the rebuilt SA1 statement (E-DGMZVN-2)
+        ala1 = math.acos(m * z1 * math.cos(alpha) / da1)
+        return da1 * ((0.5 * pi + 2 * x1 * math.tan(alpha)) / z1
+                      + (math.tan(alpha) - alpha) - (math.tan(ala1) - ala1))
+    assert (round(sa1(3, 16, 0.25, 55.49045), 4), round(sa1(3, 16, 0.25, 55.49054), 4)) == \
+        (1.6446, 1.6445)
+    assert (round(sa1(3, 25, 0.17, 82.01995), 4), round(sa1(3, 25, 0.17, 82.02004), 4)) == \
+        (1.9964, 1.9963)
+    with sarkp.as_printed():
+        a, b = (DGMZVN(*c) for c in prog_vi_7.CALLS.values())
+    assert round(a.DA1, 4) == 55.4905 and round(a.SA1, 4) == 1.6446
+    assert round(b.DA1, 4) == 82.0200 and abs(b.SA1 - 1.9964) <= 0.51e-4
 
 
 @pytest.mark.parametrize("number", GEAR_FIGURES)
