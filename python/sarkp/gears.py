@@ -13,6 +13,8 @@ COMMON results come back as fields of the result, after the routine's own output
 
 from __future__ import annotations
 
+import math
+
 import numpy as np
 
 from .library import ST_REQUIREMENT, Check, book_routine
@@ -38,6 +40,16 @@ def _alpha():
     return book_pi() / 9.0
 
 
+# The checks get floats (a scalar call) or arrays; math is 20x faster on floats.  (NaN
+# never reaches them: the layer screens it first, so "a <= b" can stand for "not a > b".)
+def _either(name):
+    f_math, f_np = getattr(math, name), getattr(np, name)
+    return lambda x: f_math(x) if isinstance(x, (float, int)) else f_np(x)
+
+
+_sin, _cos, _tan, _atan = (_either(f) for f in ("sin", "cos", "tan", "atan"))
+
+
 #: Tooth numbers of a gear cut by the standard rack: below 8 teeth every shift of a spur
 #: gear either undercuts the tooth (6.15) or makes it pointed (6.18), so no such gear exists.
 #: (The upper bound only keeps the layer's sets of allowed values small.)
@@ -45,17 +57,17 @@ TEETH = range(8, 10001)
 
 
 def _helix_ok(name="BETA"):
-    return Check(lambda **kw: ~(np.abs(np.asarray(kw[name], dtype=float)) < np.pi / 2),
+    return Check(lambda **kw: abs(kw[name]) >= math.pi / 2,
                  ST_REQUIREMENT, f"{name}, the helix angle, must lie in (-pi/2, pi/2)")
 
 
 def _alpha_t(beta):
-    return np.arctan(np.tan(_alpha()) / np.cos(beta))
+    return _atan(math.tan(_alpha()) / _cos(beta))
 
 
 def _undercut_limit(z, beta):
     """(6.17) x_min = 1 - z sin^2(alpha_t) / (2 cos beta); (6.15) for beta = 0."""
-    return 1.0 - 0.5 * np.asarray(z) * np.sin(_alpha_t(beta)) ** 2 / np.cos(beta)
+    return 1.0 - 0.5 * z * _sin(_alpha_t(beta)) ** 2 / _cos(beta)
 
 
 def _undercut(xname, zname, beta=None):
@@ -63,7 +75,7 @@ def _undercut(xname, zname, beta=None):
     def bad(**kw):
         b = 0.0 if beta is None else kw[beta]
         return (get_mode() == "corrected") & (
-            np.asarray(kw[xname], dtype=float) < _undercut_limit(kw[zname], b))
+            kw[xname] < _undercut_limit(kw[zname], b))
     return Check(bad, ST_REQUIREMENT,
                  f"undercut: {xname} is below x_min = 1 - {zname} sin^2(alpha_t)/(2 cos "
                  f"beta) of (6.15)/(6.17) (L3967, L3977): the standard rack cuts away the "
@@ -71,7 +83,7 @@ def _undercut(xname, zname, beta=None):
 
 
 def _inv(x):
-    return np.tan(x) - x
+    return _tan(x) - x
 
 
 # ---- VI.1 DZBPL ------------------------------------------------------------------------
@@ -99,12 +111,11 @@ DZBPL = book_routine(
               "Z1MAX": range(1, 10001), "SHEMA": (1, 2, 3)},
     example=(2, 4, 1, 1, 1, 13, 35, 1),
     checks=(
-        Check(lambda P, **_: np.asarray(P) == 0, ST_REQUIREMENT,
+        Check(lambda P, **_: P == 0, ST_REQUIREMENT,
               "P = 0: the ratio i_1h = P/Q of the train must not be 0"),
-        Check(lambda Z1MIN, Z1MAX, **_: np.asarray(Z1MAX) < np.asarray(Z1MIN),
+        Check(lambda Z1MIN, Z1MAX, **_: Z1MAX < Z1MIN,
               ST_REQUIREMENT, "Z1MAX < Z1MIN: the range of z1 is empty"),
-        Check(lambda L2, L3, SHEMA, **_: (np.asarray(SHEMA) != 1)
-              & (np.asarray(L2) == np.asarray(L3)), ST_REQUIREMENT,
+        Check(lambda L2, L3, SHEMA, **_: (SHEMA != 1) & (L2 == L3), ST_REQUIREMENT,
               "L2 = L3 in scheme 2 or 3: Table 21 divides by L3 - L2 (equal planet wheels "
               "give these trains the ratio 0 only)"),
     ),
@@ -196,8 +207,8 @@ def dkrkt_limits(M, Z1, Z2, AW):
     alfa = _alpha()
     ao = M * (Z1 + Z2) / 2.0
     return {"AO": ao, "X1Z": 0.15 * Z1 ** 0.7, "X2Z": 0.15 * Z2 ** 0.7,
-            "X1P": 1.0 - 0.5 * Z1 * np.sin(alfa) ** 2,
-            "X2P": 1.0 - 0.5 * Z2 * np.sin(alfa) ** 2,
+            "X1P": 1.0 - 0.5 * Z1 * math.sin(alfa) ** 2,
+            "X2P": 1.0 - 0.5 * Z2 * math.sin(alfa) ** 2,
             "Y": (AW - ao) / M if AW != 0.0 else 0.0}
 
 
@@ -231,15 +242,15 @@ DKRKT = book_routine(
     integers={"Z1": TEETH, "Z2": TEETH, "SDVIG": (0, 1, 2, 3)},
     example=(4.0, 13.0, 34.0, 100.0, 0, 1.0),
     checks=(
-        Check(lambda AW, SDVIG, **_: (np.asarray(AW) == 0.0) & (np.asarray(SDVIG) == 0),
+        Check(lambda AW, SDVIG, **_: (AW == 0.0) & (SDVIG == 0),
               ST_REQUIREMENT, "AW = 0 asks for a system of shifts: SDVIG must be 1, 2 or 3 "
               "(E-DKRKT-4)"),
-        Check(lambda M, Z1, Z2, AW, **_: (np.asarray(AW) > 0.0)
-              & ~(np.asarray(AW) > 0.5 * M * (Z1 + Z2) * np.cos(_alpha())),
+        Check(lambda M, Z1, Z2, AW, **_: (AW > 0.0)
+              & (AW <= 0.5 * M * (Z1 + Z2) * math.cos(_alpha())),
               ST_REQUIREMENT, "AW is not above r_b1 + r_b2 = m (z1 + z2) cos(alpha)/2: no "
               "involute mesh has this centre distance ((6.12) has no angle)"),
-        Check(lambda Z2, AW, SDVIG, **_: (np.asarray(AW) == 0.0) & (np.asarray(SDVIG) == 3)
-              & (np.asarray(Z2) < 17.0), ST_REQUIREMENT,
+        Check(lambda Z2, AW, SDVIG, **_: (AW == 0.0) & (SDVIG == 3) & (Z2 < 17.0),
+              ST_REQUIREMENT,
               "SDVIG = 3 needs z2 >= 17 ((6.22); the book prints 'ЗАДАВАЕМЫЕ ПАРАМЕТРЫ "
               "ТРЕБУЮТ КОРРЕКТИРОВКИ', L4096)"),
     ),
@@ -439,7 +450,7 @@ _DGMZPC_FORMAT = (
 def _involute_negative(xs_of, z_sum_of, beta=None):
     def bad(**kw):
         b = 0.0 if beta is None else kw[beta]
-        return (2.0 * xs_of(kw) * np.tan(_alpha()) / z_sum_of(kw)
+        return (2.0 * xs_of(kw) * math.tan(_alpha()) / z_sum_of(kw)
                 + _inv(_alpha_t(b))) < 0.0
     return bad
 
@@ -452,8 +463,8 @@ DGMZPC = book_routine(
     example=(5.0, 11.0, 26.0, 0.0, 0.5, 0.5, 30.0, 1.0),
     checks=(
         _helix_ok(), _undercut("X1", "Z1", "BETA"), _undercut("X2", "Z2", "BETA"),
-        Check(_involute_negative(lambda k: np.asarray(k["X1"]) + k["X2"],
-                                 lambda k: np.asarray(k["Z1"]) + k["Z2"], "BETA"),
+        Check(_involute_negative(lambda k: k["X1"] + k["X2"], lambda k: k["Z1"] + k["Z2"],
+                                 "BETA"),
               ST_REQUIREMENT, "no mesh: X1 + X2 is so negative that inv alpha_w = inv "
               "alpha_t + 2 (X1 + X2) tan(alpha)/(Z1 + Z2) < 0"),
     ),
@@ -541,7 +552,7 @@ def _dgmzvn_report(i, o):
 
 def _internal_involute_negative(shift_of, z_diff_of):
     def bad(**kw):
-        return _inv(_alpha()) + 2.0 * shift_of(kw) * np.tan(_alpha()) / z_diff_of(kw) < 0.0
+        return _inv(_alpha()) + 2.0 * shift_of(kw) * math.tan(_alpha()) / z_diff_of(kw) < 0.0
     return bad
 
 
@@ -553,17 +564,17 @@ DGMZVN = book_routine(
     integers={"Z1": TEETH, "Z2": range(TEETH.start + 1, TEETH.stop), "ZO2": TEETH},
     example=(3.0, 16.0, 51.0, 0.25, 0.25, 25.0, 75.0, 0.17, 83.8, 1.0),
     checks=(
-        Check(lambda Z1, Z2, **_: ~(np.asarray(Z2) > np.asarray(Z1)), ST_REQUIREMENT,
+        Check(lambda Z1, Z2, **_: Z2 <= Z1, ST_REQUIREMENT,
               "Z2, the wheel with internal teeth, must have more teeth than the pinion Z1"),
-        Check(lambda Z2, ZO2, **_: ~(np.asarray(Z2) > np.asarray(ZO2)), ST_REQUIREMENT,
+        Check(lambda Z2, ZO2, **_: Z2 <= ZO2, ST_REQUIREMENT,
               "the shaper ZO2 must have fewer teeth than the internal wheel Z2 it cuts"),
         _undercut("X1", "Z1"),
-        Check(_internal_involute_negative(lambda k: np.asarray(k["X2"]) - k["X1"],
-                                          lambda k: np.asarray(k["Z2"]) - k["Z1"]),
+        Check(_internal_involute_negative(lambda k: k["X2"] - k["X1"],
+                                          lambda k: k["Z2"] - k["Z1"]),
               ST_REQUIREMENT, "no mesh: X2 - X1 is so negative that inv alpha_w = inv "
               "alpha + 2 (X2 - X1) tan(alpha)/(Z2 - Z1) < 0"),
-        Check(_internal_involute_negative(lambda k: np.asarray(k["X2"]) - k["XO"],
-                                          lambda k: np.asarray(k["Z2"]) - k["ZO2"]),
+        Check(_internal_involute_negative(lambda k: k["X2"] - k["XO"],
+                                          lambda k: k["Z2"] - k["ZO2"]),
               ST_REQUIREMENT, "the shaper cannot cut the wheel: inv alpha_w02 = inv alpha + "
               "2 (X2 - XO) tan(alpha)/(Z2 - ZO2) < 0"),
     ),
@@ -644,7 +655,7 @@ DCHRVC = book_routine(
     integers={"Z1": range(1, 101), "Z2": range(1, 10001)},
     example=(8.0, 10.0, 2.0, 39.0, 200.0, 1.0),
     checks=(
-        Check(lambda M, Z2, AW, **_: ~(2.0 * np.asarray(AW) > np.asarray(M) * Z2),
+        Check(lambda M, Z2, AW, **_: 2.0 * AW <= M * Z2,
               ST_REQUIREMENT, "AW <= M Z2/2: the worm's operating diameter DW1 = 2 AW - "
               "M Z2 would not be positive"),
     ),
