@@ -96,26 +96,21 @@ contains
   ! private helpers
   ! ============================================================================
 
-  ! inv x = tan x - x to full relative precision: below 0.4 rad tan x - x cancels (at
-  ! 0.01 rad it keeps 11 digits), so the Taylor series is summed there (15 terms: the
-  ! terms fall by 0.065 each at 0.4 rad).  In as-printed mode the book's TAN(X) - X.
+  ! inv x = tan x - x: in corrected mode to full relative precision (below 0.4 rad tan x - x
+  ! cancels, at 0.01 rad it keeps 11 digits, so the Taylor series is summed there,
+  ! E-DUGINV-3); in as-printed mode the book's TAN(X) - X.
   pure real(dp) function involute(x)
     real(dp), intent(in) :: x
-    real(dp) :: x2, s
-    integer :: k
-    if (printed_mode /= 0 .or. abs(x) >= 0.4_dp) then
+    if (printed_mode /= 0) then
       involute = tan(x) - x
-      return
+    else
+      involute = involute_from_tan(x, tan(x))
     end if
-    x2 = x*x
-    s = inv_series(15)
-    do k = 14, 1, -1
-      s = s*x2 + inv_series(k)
-    end do
-    involute = s*x2*x
   end function involute
 
-  ! inv x from x and t = tan x (corrected mode): the series below 0.4 rad, else t - x.
+  ! inv x from x and t = tan x: the Taylor series of tan x - x below 0.4 rad (8 terms below
+  ! 0.1 rad, where they fall by 0.004 each; 15 above, where they fall by up to 0.065),
+  ! else t - x.
   pure real(dp) function involute_from_tan(x, t)
     real(dp), intent(in) :: x, t
     real(dp) :: x2, s
@@ -125,7 +120,7 @@ contains
       return
     end if
     x2 = x*x
-    if (x2 < 0.01_dp) then       ! below 0.1 rad the terms fall by 0.004: 8 of them suffice
+    if (x2 < 0.01_dp) then
       s = inv_series(8)
       do k = 7, 1, -1
         s = s*x2 + inv_series(k)
@@ -486,8 +481,9 @@ contains
   ! as-printed: the book's fixed-point iteration x = ATAN(x + INVX) from XNACH, stopped
   ! when a step falls below TCHNST (or after 10**6 steps, E-DUGINV-2); it stops short of
   ! the root by about 6 TCHNST near 20 deg (E-DUGINV-1).
-  ! corrected: the root to full double precision for every INVX >= 0 (Newton steps on the
-  ! series-accurate involute); XNACH and TCHNST are not needed.
+  ! corrected: the root to full double precision for every INVX >= 0 (a rational start
+  ! and one Halley step on the series-accurate involute, inverse_involute above); XNACH and
+  ! TCHNST are not needed.
   ! INVX < 0 (no angle of [0, pi/2)) is refused by the Python layer.
   real(dp) function duginv(invx, xnach, tchnst)
     real(dp), intent(in) :: invx, xnach, tchnst
