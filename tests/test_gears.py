@@ -731,3 +731,18 @@ def test_eight_teeth_is_the_least_standard_gear_E_GEARS_1():
         assert any(ok) == possible, z
     with pytest.raises(ValueError, match="Z = 7"):
         DGMTZK(4.0, 7, 0.0, 0.5)
+
+
+@pytest.mark.parametrize("routine, args, label", [
+    (DKRKT, (4.0, 13, 34, 100.0, 0), "ALFAW = 0.4879"),
+    (DGMTZK, (4.0, 20, 0.0, 0.0), "DA =   88.00"),
+    (DGMZPC, (5.0, 11, 26, 0.0, 0.5, 0.5, 30.0), "ALFAW =  0.4564"),
+    (DGMZVN, (3.0, 25, 31, 0.17, 1.2, 25, 75.0, 0.17, 83.8), "EALFA =  1.4267"),
+    (DCHRVC, (8.0, 10.0, 2, 39, 200.0), "DAM2 =  348.000"),
+])
+def test_aaa_zero_prints_the_books_report(capsys, routine, args, label):
+    with sarkp.as_printed():
+        routine(*args, AAA=1.0)
+        assert capsys.readouterr().out == ""
+        routine(*args, AAA=0.0)
+    assert label in capsys.readouterr().out
