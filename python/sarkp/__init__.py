@@ -8,6 +8,7 @@ from . import cams, dynamics, forces, gears, kinematics, operators, solver, synt
 from .errors import (AssemblyError, RangeError, RequirementError, SarkpError,
                      SignificanceWarning, SingularError, Status)
 from .modes import MODES, as_printed, get_mode, mode, set_mode
+from .listings import errata, listing     # the book's code and its errata
 from .operators import *      # noqa: F401,F403  chapter 2
 from .solver import *         # noqa: F401,F403  GELG
 from .synthesis import *      # noqa: F401,F403  chapter 3
@@ -22,6 +23,7 @@ __version__ = "0.1.0"
 __all__ = [
     "SarkpError", "AssemblyError", "SingularError", "RequirementError", "RangeError",
     "SignificanceWarning", "Status", "MODES", "set_mode", "get_mode", "mode", "as_printed",
+    "listing", "errata",
     *solver.__all__, *operators.__all__, *synthesis.__all__, *kinematics.__all__,
     *cams.__all__, *gears.__all__,
     *forces.__all__, *dynamics.__all__,

@@ -4,6 +4,9 @@
     sarkp book run PROGRAM [--mode M] [--plots DIR]
                                           a program's printout, in the book's layout
     sarkp book diff FIG|all [--mode M]    compare a reproduction with the printed figure
+    sarkp listing [NAME] [--modern|--diff [side]]   the book's code; sarkp's routine; both
+    sarkp errata ID|NAME                  a row of docs/ERRATA.md, or every row of a routine
+    sarkp book run PROGRAM --printed      the program compiled as printed (says why not)
 
 Book programs run as printed by default (``--mode as-printed``: the book's PI = 3.14159
 and the author errors its printed figures depend on); ``--mode corrected`` runs them with
@@ -18,7 +21,7 @@ import os
 import sys
 from importlib import resources
 
-from . import book, modes
+from . import book, listings, modes
 from .book import figures
 
 
@@ -79,6 +82,8 @@ def _main(argv=None) -> int:
     book_sub.add_parser("list", help="list the reproduced programs and figures")
     run = book_sub.add_parser("run", help="run a book program and print its output")
     run.add_argument("program", help="listing number, e.g. II.13")
+    run.add_argument("--printed", action="store_true",
+                     help="the book's main program compiled as printed (sarkp.printed)")
     run.add_argument("--plots", metavar="DIR",
                      help="also write the program's pictures as PNG files in DIR "
                           "(needs matplotlib)")
@@ -88,14 +93,40 @@ def _main(argv=None) -> int:
         p.add_argument("--mode", choices=modes.MODES, default="as-printed",
                        help="as-printed (default): the book's arithmetic and errors; "
                             "corrected: every error fixed")
+    listing = sub.add_parser("listing", help="the book's listing of a routine or program")
+    listing.add_argument("name", nargs="?", help="e.g. DPRM1 or IV.1; none lists them all")
+    shown = listing.add_mutually_exclusive_group()
+    shown.add_argument("--modern", action="store_true", help="sarkp's Fortran 90 routine")
+    shown.add_argument("--diff", nargs="?", const="unified", choices=("unified", "side"),
+                       help="book against sarkp, each deviation with its ERRATA ids")
+    errata = sub.add_parser("errata", help="rows of docs/ERRATA.md")
+    errata.add_argument("key", help="an id (E-DUSKR1-1) or a routine (DUSKR1)")
     args = parser.parse_args(argv)
 
+    if args.command in ("listing", "errata"):
+        try:
+            if args.command == "errata":
+                text = listings.errata(args.key)
+            elif args.name is None:
+                text = listings.table()
+            else:
+                text = listings.listing(args.name, modern=args.modern, diff=args.diff)
+        except ValueError as exc:
+            raise UsageError(str(exc)) from None
+        print(text.rstrip("\n"))
+        return 0
     if args.action == "list":
         for listing, name in book.PROGRAMS.items():
             prog = book.program(listing)
             figs = ", ".join(f"Fig. {f}" for f in prog.FIGURES) or "no printed output"
             print(f"{listing:8s} {prog.TITLE} ({figs})")
         return 0
+    if args.action == "run" and args.printed:
+        from . import printed
+        try:
+            printed.program(args.program)
+        except ValueError as exc:             # PrintedCodeError, or an unknown name
+            raise UsageError(str(exc)) from None
     if args.action == "run":
         if args.program.upper().replace("П", "II") not in book.PROGRAMS:
             raise UsageError(f"no book program {args.program!r}; known: "

@@ -1,0 +1,13 @@
+C LISTING II.8 DUGOL: BELOKONEV 1990, BOOK LINES L630-639
+C AS PRINTED. OCR MISREADINGS CORRECTED, EACH MARKED "C OCR:".
+C TABLE 33 (L6267-6330) NUMBERS IT II.12.
+      FUNCTION DUGOL(FI)
+C ВЫЧИСЛЕНИЕ УГЛА В КАЧЕСТВЕ СУЩЕСТВЕННО ПОЛОЖИТЕЛЬНОЙ
+C ВЕЛИЧИНЫ.
+      PI = 3.14159
+      IF(FI.LT.0.0)GO TO 1
+      DUGOL = FI
+      RETURN
+1     DUGOL = FI + 2.0 * PI
+      RETURN
+      END

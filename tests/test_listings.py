@@ -1,0 +1,307 @@
+"""The book's listings and ERRATA.md as package data: `sarkp listing`, `sarkp errata`."""
+
+import csv
+import io
+import os
+import re
+import shutil
+import subprocess
+import sys
+from importlib import resources
+from pathlib import Path
+
+import pytest
+
+import sarkp
+from sarkp import listings as L
+
+# Table 33 (book L6267-6330), in its order.  It spells DPRFLP "DPRFLD" and DCHRVC "DCHRCV";
+# the listings' own headings (L3153, L4739) and every call use DPRFLP and DCHRVC.
+TABLE33 = """DINTGR DFRNCL DUGL1 DUGL2 DUGL3 DUGL4 DUGL5 DUGOL DVKT DSMVKT DOMEGA DMOMNT
+DSNTZR DSNTZ1 DSNTZ2 DSNTZ3 DSNTZK DPRM1 DPRM2 DPRM3 DPRM4 DSKOR1 DSKOR2 DSKOR3 DSKOR4
+DSKOR5 DUSKR1 DUSKR2 DUSKR3 DUSKR4 DUSKR5 DKNMA1 DKNMA2 DKNMA3 DKNMA4 DKNMA5 DKLCHK DPRFLP
+DPRFPL DPRFLK DZBPL DKRKT DUGINV DGMTZK DGMZPC DGMZVN DCHRVC DNMAF1 DNMAF2 DNMAF3 DNMAF4
+DNMAF5 DNMA1 DNMA2 DNMA3 DNMA4 DNMA5 DZKNDV DMHVK""".split()
+PROGRAMS = ["II.13", "III.5", "IV.15", "V.5", "VI.2", "VII.10", "X"]
+BOOK = Path(os.environ.get("SARKP_BOOK",
+                           "/work/shared/seeds/000_eb1ab766384ea773.txt"))
+OCR_MARK = re.compile(r'"([^"]*)"\s*->\s*"([^"]*)"')
+
+
+def package_file(*parts):
+    return resources.files("sarkp").joinpath(*parts)
+
+
+def index():
+    text = package_file("listings", "index.csv").read_text(encoding="utf-8")
+    return list(csv.DictReader(io.StringIO(text)))
+
+
+def code_lines(text):
+    return [l for l in text.splitlines() if l.strip() and l[:1] not in "Cc"]
+
+
+def test_table33_has_59_routines():
+    assert len(TABLE33) == len(set(TABLE33)) == 59
+
+
+def test_every_table33_routine_and_program_has_a_listing_file():
+    rows = {r["name"]: r for r in index()}
+    assert set(rows) == set(TABLE33) | set(PROGRAMS)
+    # the index's Table 33 column numbers the 59 routines 1..59 in the book's order
+    numbered = sorted((int(r["table33"].split()[0]), n) for n, r in rows.items() if r["table33"])
+    assert [n for _, n in numbered] == TABLE33
+
+
+@pytest.mark.parametrize("row", index(), ids=lambda r: r["name"])
+def test_listing_opens_from_the_installed_package(row):
+    f = package_file("listings", row["file"])
+    assert f.is_file()
+    text = f.read_text(encoding="utf-8")
+    header = text.splitlines()[0]
+    assert header.startswith(f"C LISTING {row['listing']} ")
+    assert ", ".join(row["lines"].split()) in header
+    code = code_lines(text)
+    assert code[-1].strip() == "END"
+    if row["kind"] != "program":
+        first = code[0].upper()
+        assert re.match(rf"^\s+(SUBROUTINE|FUNCTION)\s+{row['name']}\s*\(", first), first
+    # fixed form: a label in columns 1-5, a continuation mark in column 6, then the code
+    for line in code:
+        assert re.match(r"^(\d{1,5}\s*| {5})[ *]", line), line
+
+
+def test_errata_and_fortran_sources_are_package_data():
+    errata_md = package_file("ERRATA.md").read_text(encoding="utf-8")
+    assert "| E-DUSKR1-1 |" in errata_md
+    sources = [p.name for p in package_file("fortran").iterdir()]
+    assert "kinematics.f90" in sources and "prmtr.f90" in sources
+
+
+def test_listing_by_name_and_number_from_python():
+    text = sarkp.listing("DPRM1")
+    assert text == sarkp.listing("IV.1") == sarkp.listing("dprm1")
+    assert "SUBROUTINE DPRM1(XA, YA, XC, YC, RZ2, RZ3, P, AAA, FI2, FI3, XB, YB)" in text
+    # VII.10 is the program of section 7.5; DNMA5 (Table 33's VII.10) by its name
+    assert "SUBROUTINE" not in "".join(code_lines(sarkp.listing("VII.10")))
+    assert "SUBROUTINE DNMA5(" in sarkp.listing("DNMA5")
+    with pytest.raises(ValueError, match="no listing named"):
+        sarkp.listing("DPRM9")
+
+
+def test_modern_routine_is_the_fortran90_one_with_its_errata_ids():
+    text = sarkp.listing("DUSKR1", modern=True)
+    assert re.search(r"^\s*subroutine duskr1\(", text, re.M | re.I)
+    assert re.search(r"^\s*end subroutine duskr1", text, re.M | re.I)
+    assert "E-DUSKR1-1" in text
+    with pytest.raises(ValueError, match="program"):
+        sarkp.listing("II.13", modern=True)
+
+
+def test_diff_marks_the_authors_error_with_its_errata_id():
+    text = sarkp.listing("DUSKR1", diff=True)
+    hunks = text.split("@@")[1:]
+    hunk = next(h for h in hunks if "- ABCT = ABS(Y(1))" in h)
+    assert "E-DUSKR1-1" in hunk.splitlines()[0]
+    side = sarkp.listing("DUSKR1", diff="side")
+    assert "E-DUSKR1-1" in side
+    with pytest.raises(ValueError):
+        sarkp.listing("DUSKR1", diff="sideways")
+
+
+def test_errata_by_id_and_by_routine():
+    row = sarkp.errata("E-DUSKR1-1")
+    assert row.startswith("E-DUSKR1-1") and "ABS(Y(2))" in row
+    rows = sarkp.errata("DUSKR1")
+    for i in ("E-DUSKR1-1", "E-DUSKR1-2", "E-DUSKR1-3"):
+        assert i in rows
+    assert "E-DPRM1" not in rows
+    assert "E-IV15-3" in sarkp.errata("IV.15")
+    for bad in ("E-DUSKR1-99", "NOSUCH"):
+        with pytest.raises(ValueError):
+            sarkp.errata(bad)
+
+
+def _cited_ids():
+    found = {}
+    for name in sarkp.__all__:
+        doc = getattr(getattr(sarkp, name), "__doc__", None) or ""
+        for i in L.errata_ids_of(doc):
+            found.setdefault(i, f"docstring of {name}")
+    stack = [package_file()]
+    while stack:                                  # every Python file of the package
+        for p in stack.pop().iterdir():
+            if p.is_dir():
+                stack.append(p)
+            elif p.name.endswith(".py"):
+                for i in L.errata_ids_of(p.read_text(encoding="utf-8")):
+                    found.setdefault(i, p.name)
+    for folder in ("fortran", "listings"):        # Fortran headers; the listings' marks
+        for f in package_file(folder).iterdir():
+            for i in L.errata_ids_of(f.read_text(encoding="utf-8")):
+                found.setdefault(i, f"{folder}/{f.name}")
+    return found
+
+
+def test_every_cited_errata_id_is_a_row():
+    cited = _cited_ids()
+    assert cited, "no ERRATA id cited anywhere"
+    for i, where in cited.items():
+        assert sarkp.errata(i).startswith(i), where
+
+
+def _ocr_marks():
+    for row in index():
+        lines = package_file("listings", row["file"]).read_text(encoding="utf-8").splitlines()
+        for n, line in enumerate(lines):
+            if line.startswith("C OCR:"):
+                yield row, line, lines[n + 1:]
+
+
+def test_each_ocr_mark_names_what_the_ocr_read_and_its_correction():
+    marks = list(_ocr_marks())
+    assert len(marks) > 100
+    for row, line, after in marks:
+        pairs = OCR_MARK.findall(line)
+        assert pairs, f"{row['file']}: {line}"
+        # the statement(s) the mark precedes, continuation lines joined
+        code = [l for l in after if not l.startswith("C OCR:")][:6]
+        following = "".join(l[6:] if l[5:6] == "*" else l for l in code)
+        squeeze = lambda s: re.sub(r"\s+", "", s)
+        for read, fixed in pairs:
+            assert read != fixed, line
+            assert squeeze(read), line
+            # the correction is what the file now says
+            assert squeeze(fixed).lstrip("*") in squeeze(following), f"{row['file']}: {line}"
+
+
+@pytest.mark.skipif(not BOOK.is_file(), reason="the book's OCR text is not on this machine")
+def test_what_the_ocr_read_is_in_the_book_at_the_listings_lines():
+    book = BOOK.read_text(encoding="utf-8").splitlines()
+
+    def norm(s):
+        s = re.sub(r"\$\\theta\$", "θ", s)
+        s = re.sub(r"\\text\{([^}]*)\}", r"\1", s)
+        return re.sub(r"[\s$\\]", "", s)
+
+    for row, line, _ in _ocr_marks():
+        spans = [tuple(int(x) for x in part[1:].split("-")) for part in row["lines"].split()]
+        raw = norm("".join(book[a - 1] for a, b in spans for a in range(a, b + 1)))
+        for read, _fixed in OCR_MARK.findall(line):
+            assert norm(read) in raw, f"{row['file']}: {read!r} is not in the book"
+
+
+def _authors_errors(kind="author"):
+    """ERRATA rows of the kind whose printed text is code of one listing."""
+    names = {r["name"]: r for r in index()}
+    for r in L._errata_rows():
+        if r.kind.strip() != kind:
+            continue
+        routine = r.routine.split(",")[0].split()[0]
+        if routine not in names or re.search(r"\b(missing|no|never|not|lacks?)\b", r.as_printed):
+            continue                 # the row quotes what is absent
+        spans = [tuple(int(x) for x in p[1:].split("-")) for p in names[routine]["lines"].split()]
+        cited = [int(x) for x in re.findall(r"L(\d+)", r.line)]
+        if not any(a <= n <= b for n in cited for a, b in spans):
+            continue                 # the row quotes the text or a table, not the listing
+        # "`line` / `*continuation`": consecutive lines of one statement, quoted separately
+        printed = re.sub(r"`\s*/\s*`\*?", "", r.as_printed)
+        for snippet in re.findall(r"`([^`]+)`", printed):
+            statement = re.match(r"(CALL|IF|DO|SUBROUTINE|FUNCTION|REAL|DIMENSION|WRITE|"
+                                 r"PRINT|DATA|[A-Z][A-Z0-9]*(\(.*\))?\s*=)", snippet)
+            printed_values = re.search(r"=\s*-?[\d.]+\s+[A-Z]", snippet)
+            if statement and not printed_values:
+                yield r.id, names[routine], snippet
+
+
+def test_the_authors_errors_stay_as_printed():
+    checked = 0
+    for rid, row, snippet in _authors_errors():
+        text = package_file("listings", row["file"]).read_text(encoding="utf-8")
+        squeeze = lambda s: re.sub(r"\s+", "", s)
+        code = squeeze("".join(l[6:] if l[5:6] == "*" else l for l in code_lines(text)))
+        # the ERRATA quotes the OCR's text: undo the file's OCR corrections to compare
+        as_read = code
+        for mark in (l for l in text.splitlines() if l.startswith("C OCR:")):
+            for read, fixed in OCR_MARK.findall(mark):
+                as_read = as_read.replace(squeeze(fixed).lstrip("*"), squeeze(read).lstrip("*"))
+        # " / " in an ERRATA quote is a line break (" / *" before a continuation line)
+        want = squeeze(re.sub(r"\s/\s\*?", "", snippet.replace("\\*", "*")))
+        if "..." in want:
+            continue
+        assert want in code or want in as_read, f"{rid}: {snippet!r} no longer in {row['file']}"
+        checked += 1
+    assert checked >= 10
+
+
+def test_ocr_rows_are_corrected_in_the_listings():
+    checked = 0
+    for rid, row, snippet in _authors_errors(kind="OCR"):
+        text = package_file("listings", row["file"]).read_text(encoding="utf-8")
+        squeeze = lambda s: re.sub(r"\s+", "", s)
+        code = squeeze("".join(l[6:] if l[5:6] == "*" else l for l in code_lines(text)))
+        want = squeeze(re.sub(r"\s/\s\*?", "", snippet.replace("\\*", "*")))
+        if "..." in want:
+            continue
+        assert want not in code, f"{rid}: the OCR's {snippet!r} is still in {row['file']}"
+        checked += 1
+    assert checked >= 10
+
+
+def run_cli(*args):
+    return subprocess.run([sys.executable, "-m", "sarkp", *args], capture_output=True,
+                          text=True, encoding="utf-8", env={**os.environ, "PYTHONUTF8": "1"})
+
+
+def test_cli_listing_errata_and_exit_codes():
+    r = run_cli("listing", "DPRM1")
+    assert r.returncode == 0 and r.stdout.rstrip("\n") == sarkp.listing("DPRM1").rstrip("\n")
+    assert run_cli("listing", "IV.1").stdout == r.stdout
+    r = run_cli("listing")
+    assert r.returncode == 0 and len(r.stdout.splitlines()) == 1 + len(TABLE33) + len(PROGRAMS)
+    r = run_cli("listing", "DPRM1", "--modern")
+    assert r.returncode == 0 and "subroutine dprm1" in r.stdout.lower()
+    r = run_cli("listing", "DUSKR1", "--diff")
+    assert r.returncode == 0 and "E-DUSKR1-1" in r.stdout
+    r = run_cli("listing", "DUSKR1", "--diff", "side")
+    assert r.returncode == 0 and " | " in r.stdout
+    r = run_cli("errata", "E-DUSKR1-1")
+    assert r.returncode == 0 and r.stdout.startswith("E-DUSKR1-1")
+    r = run_cli("errata", "DUSKR1")
+    assert r.returncode == 0 and "E-DUSKR1-3" in r.stdout
+    for args in (("listing", "NOSUCH"), ("errata", "E-NOPE-1"), ("listing", "II.13", "--modern")):
+        r = run_cli(*args)
+        assert r.returncode == 2, args
+        assert r.stdout == "" and len(r.stderr.strip().splitlines()) == 1, r.stderr
+
+
+#: Listings gfortran rejects as printed (the ES EVM's compiler evidently did not).
+DOES_NOT_COMPILE = {
+    "III.4_DSNTZ3.f": "E-DSNTZ3-4: PI = 3.14159 before DIMENSION",
+    "III.6_DSNTZK.f": "E-DSNTZK-1: PI = 3.14159 before REAL",
+    "X_program.f": "L7605: WRITE(3, 15) names the executable statement 15 as its FORMAT",
+}
+
+
+@pytest.mark.skipif(shutil.which("gfortran") is None, reason="no gfortran")
+def test_every_listing_compiles_as_printed(tmp_path):
+    """A transcription check: the listings are FORTRAN (FORMAT texts aside, which
+    sarkp.printed's build replaces), except where the book's own code is at fault."""
+    sys.path.insert(0, str(Path(__file__).resolve().parents[1] / "fortran" / "printed"))
+    try:
+        from gen_printed import prepare
+    finally:
+        sys.path.pop(0)
+    for row in index():
+        source = tmp_path / row["file"]
+        source.write_text(prepare(package_file("listings", row["file"]).read_text(
+            encoding="utf-8")), encoding="utf-8")
+        r = subprocess.run(["gfortran", "-fsyntax-only", "-std=legacy",
+                            "-ffixed-line-length-none", "-w", str(source)],
+                           capture_output=True, text=True, cwd=tmp_path)
+        if row["file"] in DOES_NOT_COMPILE:
+            assert r.returncode != 0, f"{row['file']} compiles: drop it from the list"
+            assert sarkp.errata(DOES_NOT_COMPILE[row["file"]].split(":")[0]) \
+                if DOES_NOT_COMPILE[row["file"]].startswith("E-") else True
+        else:
+            assert r.returncode == 0, f"{row['file']}:\n{r.stderr}"
