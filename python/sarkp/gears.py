@@ -280,7 +280,7 @@ DKRKT = book_routine(
     M : float
         Module (mm), > 0.
     Z1, Z2 : float
-        Tooth numbers of pinion and wheel (whole numbers).
+        Tooth numbers of pinion and wheel (whole numbers, 8 to 10000).
     AW : float
         Required centre distance (mm), or 0 to choose the shifts by SDVIG.
     SDVIG : int
@@ -299,7 +299,9 @@ DKRKT = book_routine(
         The teeth would be undercut (x < X1P, the book's message 20) or pointed (x > X1Z
         = 0.15 z^0.7, message 21); SDVIG = 1 with both x above X1Z or SDVIG = 3 with
         z2 < 17 (message 22); AW at or below the sum of the base radii; AW = 0 with
-        SDVIG = 0; a fractional tooth number.
+        SDVIG = 0.
+    ValueError
+        M <= 0, AW < 0, a tooth number that is not a whole number from 8 to 10000.
 
     Notes
     -----
@@ -403,7 +405,7 @@ DGMTZK = book_routine(
     M : float or array_like
         Normal module (mm), > 0.
     Z : float or array_like
-        Number of teeth (a whole number).
+        Number of teeth (a whole number, 8 to 10000).
     BETA : float or array_like
         Helix angle (rad), |BETA| < pi/2; 0 for a spur gear.
     X : float or array_like
@@ -423,7 +425,10 @@ DGMTZK = book_routine(
     RequirementError
         Undercut: X below x_min = 1 - z sin^2(alpha_t)/(2 cos beta) of (6.17) (corrected
         mode; the book does not check it, and Fig. 46's x = -1 gear is undercut); a
-        pointed tooth (SA <= 0); a tip circle inside the base circle; a fractional Z.
+        pointed tooth (SA <= 0); a tip circle inside the base circle.
+    ValueError
+        M <= 0; Z not a whole number from 8 to 10000 (below 8 teeth every shift of a
+        standard spur gear undercuts or points the tooth).
 
     Notes
     -----
@@ -484,7 +489,7 @@ DGMZPC = book_routine(
     M : float or array_like
         Normal module (mm), > 0.
     Z1, Z2 : float or array_like
-        Tooth numbers (whole numbers).
+        Tooth numbers (whole numbers, 8 to 10000).
     BETA : float or array_like
         Helix angle (rad), |BETA| < pi/2.
     X1, X2 : float or array_like
@@ -508,7 +513,9 @@ DGMZPC = book_routine(
     ------
     RequirementError
         Undercut (corrected mode), X1 + X2 so negative that inv alpha_w < 0, a pointed
-        tooth or a tip circle inside its base circle, a fractional tooth number.
+        tooth or a tip circle inside its base circle.
+    ValueError
+        M <= 0, BW < 0, a tooth number that is not a whole number from 8 to 10000.
 
     Notes
     -----
@@ -620,7 +627,10 @@ DGMZVN = book_routine(
     RequirementError
         Z2 <= Z1 or Z2 <= ZO2, a negative involute (X2 - X1 or X2 - XO too negative), an
         undercut pinion (corrected mode), a pointed tooth, a tip circle inside its base
-        circle, a fractional tooth number.
+        circle.
+    ValueError
+        M, DO or DAO <= 0; a tooth number that is not a whole number (Z1, ZO2 from 8,
+        Z2 from 9, up to 10000).
 
     Notes
     -----
@@ -695,7 +705,10 @@ DCHRVC = book_routine(
     Raises
     ------
     RequirementError
-        AW <= M Z2/2 (DW1 <= 0), DA2 <= 0, a fractional Z1 or Z2.
+        AW <= M Z2/2 (DW1 <= 0), DA2 <= 0.
+    ValueError
+        M, Q or AW <= 0; Z1 not a whole number from 1 to 100, Z2 not one from 1 to
+        10000.
 
     Notes
     -----
