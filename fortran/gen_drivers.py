@@ -330,7 +330,8 @@ def sweep_driver(mod, p, variables):
     if result:
         w.append(f"    {p.result_type or 'real(dp)'}, intent(out) :: fres(sarkp_n)")
     w += ["    integer, intent(out) :: sarkp_status(sarkp_n), sarkp_bad(2)",
-          "    integer :: sarkp_i, sarkp_j, sarkp_state"
+          "    integer :: sarkp_i, sarkp_state"
+          + (", sarkp_j" if any(p.args[a].type == "real(dp)" for a in ins) else "")
           + (", sarkp_l" if any(p.args[a].dims for a in ins) else ""),
           "    sarkp_bad = 0",
           "    call set_mode(sarkp_mode)",
