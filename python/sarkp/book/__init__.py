@@ -21,6 +21,12 @@ PROGRAMS = {
     "IV.15": "prog_iv_15",
     "V.5": "prog_v_5",
     "V.5-FLAT": "prog_v_5_flat",
+    "VI.2": "prog_vi_2",
+    "VI.3": "prog_vi_3",
+    "VI.5": "prog_vi_5",
+    "VI.6": "prog_vi_6",
+    "VI.7": "prog_vi_7",
+    "VI.8": "prog_vi_8",
     "VII.10": "prog_vii_10",
     "X": "prog_x",
 }
@@ -31,6 +37,12 @@ FIGURES = {
     "10": "III.5",
     "35": "V.5",
     "36": "V.5-FLAT",
+    "39": "VI.2",
+    "44": "VI.3",
+    "46": "VI.5",
+    "47": "VI.6",
+    "48": "VI.7",
+    "50": "VI.8",
 }
 # program X (chapter 10): the figures whose stages this build can run
 FIGURES.update((f, "X") for f in importlib.import_module(".prog_x", __name__).FIGURES)
