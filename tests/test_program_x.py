@@ -253,6 +253,25 @@ def test_fig87_sa1_is_on_its_rounding_edge():
     assert lo < p[("DGMZVN", "SA1")] - 0.5e-4 < hi
 
 
+@NO_GEARS
+def test_fig87_internal_mesh_cells_are_what_the_es_evm_computed():
+    """E-FIG87-3: DGMZVN run statement by statement in the ES EVM's REAL*4
+    (prog_vi_7.emulate, independent of sarkp's Fortran) with program X's call gives the
+    printed DA1, DA2, DF2, H2 that sarkp's double precision misses."""
+    from sarkp.book import prog_vi_7
+    with sarkp.as_printed():
+        x = sarkp.DKRKT(3.0, 20.0, 51.0, 0.0, 3).X2
+    call = prog_x.GEAR_CALLS["DGMZVN"]
+    inputs = tuple(dict(call, X1=x)[n] for n in sarkp.DGMZVN.spec.inputs if n != "AAA")
+    emulated = prog_vi_7.emulate({"X": inputs})
+    _, comparisons = diff("87")
+    cells = {c.cell.column: c for c in comparisons if c.cell.row == "DGMZVN"}
+    for name in ("DA1", "DA2", "DF2", "H2"):
+        cell = cells[name]
+        assert not cell.matches
+        assert abs(emulated[("X", name)] - cell.cell.value) <= 0.5 * cell.cell.unit
+
+
 def test_fig94_ocr_fixes_from_the_printed_columns():
     """E-FIG94-5: cos(G45) = FS/F45 (the guide holds 5 vertically); E-FIG94-6:
     M1 = ROA F21 sin(G21 - FI1) with the printed M1, F21 of the row."""

@@ -38,13 +38,14 @@ def render() -> str:
 _TAN, _COS, _ACOS = _f(math.tan), _f(math.cos), _f(math.acos)
 
 
-def emulate() -> dict:
+def emulate(calls=None) -> dict:
     """DGMZVN (L4544-4601, with E-DGMZVN-1..3) statement by statement in the ES EVM's
     truncating hexadecimal REAL*4, left to right as written; library functions are the
     exact values truncated.  Independent of sarkp's Fortran: the evidence for E-FIG48-1.
-    Returns ``{(row, name): value}`` keyed as :func:`cells`."""
+    Returns ``{(row, name): value}`` keyed as :func:`cells`; ``calls`` ({row: DGMZVN's
+    inputs without AAA}) replaces the figure's calls (program X uses it for Fig. 87)."""
     out = {}
-    for row, call in CALLS.items():
+    for row, call in (CALLS if calls is None else calls).items():
         m, z1, z2, x1, x2, zo2, _, xo, dao = (_R4(v) for v in call)
         pi = _R4(3.14159)
         one, two = _R4(1.0), _R4(2.0)
