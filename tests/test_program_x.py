@@ -220,6 +220,14 @@ def test_fig86_ocr_fix_from_coaxiality():
             assert z1 - z2 == z4 - z3
             assert 1 - Fraction(z2 * z4, z1 * z3) == Fraction(call[1], call[2])
     assert ocr[("2", "Z4")] == 126 and 100 - 84 != 126 - 112
+    # E-FIG86-2: the eighth set (scheme 1) meets ratio and assembly, not coaxiality
+    z1, z2, z3, z4 = (int(p[("8", f"Z{i}")]) for i in range(1, 5))
+    assert 1 + Fraction(z4, z1) == Fraction(71, 10) and (z1 + z4) % 3 == 0
+    assert z1 + z2 != z4 - z3
+    if prog_x.available("teeth"):
+        with sarkp.mode("corrected"):
+            variants = prog_x.run(["teeth"])["teeth"]["variants"]
+        assert [r is None for _, r in variants] == [False] * 7 + [True]
 
 
 def test_fig87_identities_of_the_printed_cells():

@@ -108,6 +108,12 @@ ROUTINES = {
 CORRECTED_DIFFERENCES = {
     **{c: "E-PI-1; E-FIG89-3 (exact pi and IEEE double arithmetic, phases by the row number)"
        for c in ("FIK", "FIK_P", "AT", "VT", "ST", "X", "Y", "RK", "DLT", "ROK", "RKSH")},
+    **{c: "E-FIG86-2; E-DZBPL-4 (corrected DZBPL: variant 8's 30/76/76/183 is not "
+          "coaxial, 30 + 76 != 183 - 76, and no other set is)" for c in ("Z1", "Z2", "Z3", "Z4")},
+    **{c: "E-PI-1; E-DUGINV-1 (exact pi and the exact operating angle)"
+       for c in ("AL12", "ALFA", "AW", "XU", "XUR", "XD", "DA1", "DA2", "DF1", "DF2", "H1",
+                 "H2", "SA1", "SA2", "EALFA", "E", "S", "SB", "SA", "DB", "DA", "DF", "X",
+                 "X1", "X2")},
     "*": "E-PI-1; E-X-FICD1-1; E-X-LINKS-1; E-DUSKR1-1; E-X-W4; E-X-IPR-1; E-X-DELTA-1 "
          "(the corrected design)",
 }
@@ -208,6 +214,10 @@ def teeth() -> dict:
     for call in DZBPL_CALLS:
         try:
             result = sarkp.DZBPL(*call)
+        except sarkp.RequirementError:
+            # no admissible set: DZBPL prints its message and the program goes on
+            # (corrected mode, variant 8: 30/76/76/183 is not coaxial, E-DZBPL-4)
+            result = None
         except SarkpError as exc:
             raise StageError(f"program X, stage 'teeth' (Fig. 86): DZBPL{call}: "
                              f"{exc}") from exc
@@ -216,7 +226,8 @@ def teeth() -> dict:
 
 
 def render_teeth(t: dict) -> str:
-    return "\n".join(sarkp.gears.dzbpl_report(args["KS"], args["SHEMA"], list(result))
+    return "\n".join(sarkp.gears.dzbpl_report(args["KS"], args["SHEMA"],
+                                              None if result is None else list(result))
                      for args, result in t["variants"])
 
 
@@ -685,7 +696,8 @@ def stage_cells(stage: str, results: dict) -> dict:
             out[(str(n), "SHEMA")] = float(args["SHEMA"])
             out[(str(n), "KS")] = float(args["KS"])
             for name in ("Z1", "Z2", "Z3", "Z4"):
-                out[(str(n), name)] = float(getattr(r, name))
+                if r is not None:                   # no admissible set: nothing printed
+                    out[(str(n), name)] = float(getattr(r, name))
     elif stage == "gears":
         rename = {"ALFAW": "ALFA", "XY": "XU"}           # the printed names
         for block, (args, r) in results.items():
@@ -794,6 +806,15 @@ def corrected_report(done: dict, stages) -> str:
             "rad", "E-X-FICD1-1")
         for n in ("ROA", "RAB", "ROC"):
             row(n, f"{s[n]:.4f}", f"{b[n]:.4f}", "m", "E-X-LINKS-1")
+    if "teeth" in done:
+        found = sum(r is not None for _, r in done["teeth"]["variants"])
+        row("teeth: DZBPL variants with a set", f"{found} of 8",
+            f"{sum(r is not None for _, r in book['teeth']['variants'])} of 8", "",
+            "E-DZBPL-4, E-FIG86-2")
+    if "gears" in done:
+        for block, name in (("DKRKT", "ALFAW"), ("DGMZPC", "AW"), ("DGMZVN", "AW")):
+            row(f"gears: {block} {name}", f"{getattr(done['gears'][block][1], name):.4f}",
+                f"{getattr(book['gears'][block][1], name):.4f}", "", "E-DUGINV-1")
     if "cam" in done:
         row("cam: working angle PI - BETA", f"{done['cam']['FIU'] / 0.4:.6f}",
             f"{book['cam']['FIU'] / 0.4:.6f}", "rad", "E-PI-1")
