@@ -128,18 +128,29 @@ def report(figure: Figure, comparisons: list, mode: str,
     return "\n".join(lines), len(matching), len(compared)
 
 
-def summary(figure: Figure, comparisons: list) -> dict:
+def summary(figure: Figure, comparisons: list, corrected_differences: dict | None = None
+            ) -> dict:
     """Counts of a diff: cells compared, matching, differing with an ERRATA id of their
-    own (explained), differing without one (unexplained), left out and the ids why."""
+    own (explained), differing without one (unexplained), left out and the ids why.
+
+    ``corrected_differences`` (the program's reasons for corrected mode, as for
+    :func:`report`) also explains a differing cell, counted as "corrected mode";
+    ``own_ids`` counts the differing cells with no ERRATA id of their own either way."""
     compared = [c for c in comparisons if c.cell.reproducible]
     differ = [c for c in compared if not c.matches]
-    explained = [c for c in differ if c.cell.errata]
+    own = [c for c in differ if c.cell.errata]
+    explain = corrected_differences or {}
+    by_mode = [c for c in differ if not c.cell.errata
+               and (explain.get(c.cell.column) or explain.get("*"))]
     skipped = [c for c in comparisons if not c.cell.reproducible]
     reasons = sorted({e for c in skipped for e in c.cell.errata.split(";") if e})
-    because = sorted({e for c in explained for e in c.cell.errata.split(";") if e})
+    because = sorted({e for c in own for e in c.cell.errata.split(";") if e})
+    if by_mode:
+        because.append(f"corrected mode: {len(by_mode)}")
     return {"figure": figure.number, "compared": len(compared), "because": ", ".join(because),
-            "matching": len(compared) - len(differ), "explained": len(explained),
-            "unexplained": len(differ) - len(explained), "left_out": len(skipped),
+            "matching": len(compared) - len(differ), "explained": len(own) + len(by_mode),
+            "unexplained": len(differ) - len(own) - len(by_mode),
+            "own_ids": len(differ) - len(own), "left_out": len(skipped),
             "why": ", ".join(reasons)}
 
 
