@@ -462,22 +462,27 @@ def forces(links: dict, kin: dict) -> dict:
     xs4 = kin["XD"] + 0.3 * rde * np.cos(kin["FIDE"])
     ys4 = kin["YD"] + 0.3 * rde * np.sin(kin["FIDE"])
     try:
-        n2 = sarkp.DNMAF2(kin["XD"], kin["YD"], kin["XE"], kin["YE"], 0.0, xs4, ys4,
-                          G * m["M4"], -pid2, kin["XE"], kin["YE"], f5, g5, 0.0, 0.0)
-        f3, g3 = DSMVKT(n2[0], n2[1], G * m["M3"], -pid2)
-        t3 = DMOMNT(0.85 * rcd, kin["FICB"] + pi, n2[0], n2[1])
-        n1 = sarkp.DNMAF1(kin["XA"], kin["YA"], kin["XB"], kin["YB"], kin["XC"], kin["YC"],
-                          kin["XA"] + 0.5 * rab * np.cos(kin["FI2"]),
-                          kin["YA"] + 0.5 * rab * np.sin(kin["FI2"]), G * m["M2"], -pid2,
-                          kin["XC"] + 0.15 * rcd * np.cos(kin["FICB"] + pi),
-                          kin["YC"] + 0.15 * rcd * np.sin(kin["FICB"] + pi), f3, g3, 0.0, t3)
+        # group 4-5 (L7556-7558): DNMAF2's F21, F23, F34 are the program's F43 (4 on 3),
+        # F45 (4 on 5) and F50 (5 on the guide)
+        g45 = sarkp.DNMAF2(kin["XD"], kin["YD"], kin["XE"], kin["YE"], 0.0, xs4, ys4,
+                           G * m["M4"], -pid2, kin["XE"], kin["YE"], f5, g5, 0.0, 0.0)
+        f3, g3 = DSMVKT(g45.F21, g45.G21, G * m["M3"], -pid2)
+        t3 = DMOMNT(0.85 * rcd, kin["FICB"] + pi, g45.F21, g45.G21)   # F43 moved to S3
+        # group 2-3 (L7561-7565): DNMAF1's F21, F23, F34 are F21 (2 on 1), F23 (2 on 3)
+        # and F30 (3 on the frame)
+        g23 = sarkp.DNMAF1(kin["XA"], kin["YA"], kin["XB"], kin["YB"], kin["XC"], kin["YC"],
+                           kin["XA"] + 0.5 * rab * np.cos(kin["FI2"]),
+                           kin["YA"] + 0.5 * rab * np.sin(kin["FI2"]), G * m["M2"], -pid2,
+                           kin["XC"] + 0.15 * rcd * np.cos(kin["FICB"] + pi),
+                           kin["YC"] + 0.15 * rcd * np.sin(kin["FICB"] + pi), f3, g3, 0.0,
+                           t3)
     except SarkpError as exc:
         raise StageError(f"program X, stage 'forces' (Fig. 94): {exc}") from exc
-    m1 = DMOMNT(roa, kin["FI1"], n1[0], n1[1])
-    return {"FI1": kin["FI1"], "FS": fs, "F43": n2[0], "G43": n2[1], "F45": n2[2],
-            "G45": n2[3], "F50": n2[4], "G50": n2[5], "F21": n1[0], "G21": n1[1],
-            "F23": n1[2], "G23": n1[3], "F30": n1[4], "G30": n1[5], "M1": m1, "T3": t3,
-            **m}
+    m1 = DMOMNT(roa, kin["FI1"], g23.F21, g23.G21)                       # L7566
+    return {"FI1": kin["FI1"], "FS": fs, "F43": g45.F21, "G43": g45.G21, "F45": g45.F23,
+            "G45": g45.G23, "F50": g45.F34, "G50": g45.G34, "F21": g23.F21, "G21": g23.G21,
+            "F23": g23.F23, "G23": g23.G23, "F30": g23.F34, "G30": g23.G34, "M1": m1,
+            "T3": t3, **m}
 
 
 def render_forces(fo: dict) -> str:
