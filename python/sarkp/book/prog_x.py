@@ -44,13 +44,14 @@ Corrected mode is the design the task card asks for: exact pi, FICD1 from DSNTZR
 lengths from DSNTZ1's construction, true accelerations, the reduced inertia counted
 once, delta = 0.02; :func:`corrected_report` prints where it differs from the book, and
 :func:`checks` holds it against physics (the stroke, the coefficient of speed change,
-accelerations against numerical derivatives of the velocities).
+accelerations against numerical derivatives of the velocities, the forces against virtual
+work, the flywheel against the delta it is sized for).  Without a flywheel the corrected
+machine stalls (E-DZKNDV-2): WPR, EPR are then not printed.
 """
 
 from __future__ import annotations
 
 import math
-from dataclasses import dataclass
 
 import numpy as np
 
