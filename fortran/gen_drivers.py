@@ -26,7 +26,9 @@ the routine reported success becomes ``st_range``.  A book FUNCTION's value is `
 
 The chapter modules must follow the conventions of fortran/README (one declaration line per
 group of dummy arguments: ``real(dp), intent(in) :: a, b(n)``; ``!sarkp common: x, y`` as the
-first line after a subroutine statement names the module variables returned with it;
+first line after a subroutine statement names the module variables returned with it, and
+``!sarkp common: a => zpc_a`` returns module variable ``zpc_a`` as the result ``a`` (several
+such lines may follow one another);
 ``!sarkp ier-is-output`` keeps a trailing IER as an ordinary output).
 """
 
@@ -69,6 +71,9 @@ class Procedure:
     argnames: list
     args: dict = field(default_factory=dict)
     commons: list = field(default_factory=list)
+    # result name of each COMMON variable (``!sarkp common: a => zpc_a`` names the result
+    # ``a``: two COMMON blocks may share a book name, module variables cannot)
+    common_names: dict = field(default_factory=dict)
     ier_is_output: bool = False
 
     @property
@@ -167,7 +172,12 @@ def parse(path: Path):
             if low.startswith("!sarkp"):
                 directive = low[len("!sarkp"):].strip()
                 if directive.startswith("common:"):
-                    current.commons += [c.strip() for c in directive[7:].split(",") if c.strip()]
+                    for c in (c.strip() for c in directive[7:].split(",")):
+                        if c:
+                            result, _, var = c.rpartition("=>")
+                            var = var.strip()
+                            current.commons.append(var)
+                            current.common_names[var] = result.strip() or var
                 elif directive == "ier-is-output":
                     current.ier_is_output = True
                 continue
@@ -241,9 +251,16 @@ def wrap_list(names, indent="      "):
     return (" &\n" + indent).join(lines)
 
 
+def _commons(p, variables):
+    """The COMMON results of ``p`` as (Arg named by its result name, module variable)."""
+    return [(Arg(p.common_names[c], variables[c].type, "", variables[c].dims), c)
+            for c in p.commons]
+
+
 def scalar_driver(mod, p, variables):
     w = []
-    commons = [variables[c] for c in p.commons]
+    pairs = _commons(p, variables)
+    commons = [c for c, _ in pairs]
     # the status comes last, after the COMMON results (Python reads it as the last result)
     names = (["sarkp_mode"] + [a for a in p.argnames if a != p.status_arg]
              + [c.name for c in commons])
@@ -273,8 +290,8 @@ def scalar_driver(mod, p, variables):
         w.append(f"    call {p.name}({wrap_list(p.argnames)})")
     if p.status_arg is None:
         w.append("    sarkp_status = st_ok")
-    for c in commons:
-        w.append(f"    {c.name} = {mod}_{c.name}")
+    for c, var in pairs:
+        w.append(f"    {c.name} = {mod}_{var}")
     real_out = [(a, bool(p.args[a].dims)) for a in p.argnames
                 if p.args[a].intent in ("out", "inout") and p.args[a].type == "real(dp)"]
     real_out += [(c.name, bool(c.dims)) for c in commons if c.type == "real(dp)"]
@@ -289,7 +306,8 @@ def scalar_driver(mod, p, variables):
 
 
 def sweep_driver(mod, p, variables):
-    commons = [variables[c] for c in p.commons]
+    pairs = _commons(p, variables)
+    commons = [c for c, _ in pairs]
     ins = [a for a in p.argnames if p.args[a].intent == "in"]
     outs = [a for a in p.argnames if p.args[a].intent == "out" and a != p.status_arg]
     extra = [c.name for c in commons]
@@ -312,7 +330,8 @@ def sweep_driver(mod, p, variables):
     if result:
         w.append(f"    {p.result_type or 'real(dp)'}, intent(out) :: fres(sarkp_n)")
     w += ["    integer, intent(out) :: sarkp_status(sarkp_n), sarkp_bad(2)",
-          "    integer :: sarkp_i, sarkp_j, sarkp_state"
+          "    integer :: sarkp_i, sarkp_state"
+          + (", sarkp_j" if any(p.args[a].type == "real(dp)" for a in ins) else "")
           + (", sarkp_l" if any(p.args[a].dims for a in ins) else ""),
           "    sarkp_bad = 0",
           "    call set_mode(sarkp_mode)",
@@ -355,8 +374,8 @@ def sweep_driver(mod, p, variables):
         w.append(f"      call {p.name}({call})")
     if p.status_arg is None:
         w.append("      sarkp_status(sarkp_i) = st_ok")
-    for c in commons:
-        w.append(f"      {c.name}({':, ' * len(c.dims)}sarkp_i) = {mod}_{c.name}")
+    for c, var in pairs:
+        w.append(f"      {c.name}({':, ' * len(c.dims)}sarkp_i) = {mod}_{var}")
     real_out = [(f"{a}({':, ' * len(p.args[a].dims)}sarkp_i)", bool(p.args[a].dims)) for a in outs
                 if p.args[a].type == "real(dp)"]
     real_out += [(f"{c.name}({':, ' * len(c.dims)}sarkp_i)", bool(c.dims)) for c in commons

@@ -4,7 +4,7 @@ Every routine of the book's Table 33 is exported under its book name, with the b
 argument order: ``from sarkp import DVKT``.  See ``help(sarkp.DVKT)``.
 """
 
-from . import cams, dynamics, forces, kinematics, operators, solver, synthesis
+from . import cams, dynamics, forces, gears, kinematics, operators, solver, synthesis
 from .errors import (AssemblyError, RangeError, RequirementError, SarkpError,
                      SignificanceWarning, SingularError, Status)
 from .modes import MODES, as_printed, get_mode, mode, set_mode
@@ -14,6 +14,7 @@ from .solver import *         # noqa: F401,F403  GELG
 from .synthesis import *      # noqa: F401,F403  chapter 3
 from .kinematics import *     # noqa: F401,F403  chapter 4
 from .cams import *           # noqa: F401,F403  chapter 5
+from .gears import *          # noqa: F401,F403  chapter 6
 from .forces import *         # noqa: F401,F403  chapter 7 (DUGL6: sarkp's extension)
 from .dynamics import *       # noqa: F401,F403  chapter 8
 
@@ -24,6 +25,6 @@ __all__ = [
     "SignificanceWarning", "Status", "MODES", "set_mode", "get_mode", "mode", "as_printed",
     "listing", "errata",
     *solver.__all__, *operators.__all__, *synthesis.__all__, *kinematics.__all__,
-    *cams.__all__,
+    *cams.__all__, *gears.__all__,
     *forces.__all__, *dynamics.__all__,
 ]

@@ -1,9 +1,12 @@
 """The ``sarkp`` command line (also ``python -m sarkp``).
 
     sarkp book list                       the reproduced programs and figures
-    sarkp book run PROGRAM [--mode M] [--plots DIR]
+    sarkp book run PROGRAM [--mode M] [--plots DIR] [--stage S]
                                           a program's printout, in the book's layout
+                                          (--stage: one stage of program X alone)
     sarkp book diff FIG|all [--mode M]    compare a reproduction with the printed figure
+                                          (all: ends with a summary table; status 0 when
+                                          every difference has its ERRATA id)
     sarkp listing [NAME] [--modern|--diff [side]]   the book's code; sarkp's routine; both
     sarkp errata ID|NAME                  a row of docs/ERRATA.md, or every row of a routine
     sarkp book run PROGRAM --printed      the program compiled as printed (says why not)
@@ -22,6 +25,7 @@ import sys
 from importlib import resources
 
 from . import book, listings, modes
+from .errors import SarkpError
 from .book import figures
 
 
@@ -30,13 +34,16 @@ def _version() -> str:
     return __version__
 
 
-def _diff(number: str, mode: str) -> tuple[str, int, int]:
+def _diff(number: str, mode: str) -> tuple[str, dict]:
     program = _figure_program(number)
     figure = figures.load_figure(number)
     with modes.mode(mode):
-        computed = program.cells()
-    return figures.report(figure, figures.compare(figure, computed), mode,
-                          getattr(program, "CORRECTED_DIFFERENCES", None))
+        computed = book.figure_cells(number)
+    comparisons = figures.compare(figure, computed)
+    text, _, _ = figures.report(figure, comparisons, mode,
+                                getattr(program, "CORRECTED_DIFFERENCES", None))
+    explain = getattr(program, "CORRECTED_DIFFERENCES", None) if mode == "corrected" else None
+    return text, figures.summary(figure, comparisons, explain)
 
 
 class UsageError(Exception):
@@ -82,6 +89,9 @@ def _main(argv=None) -> int:
     book_sub.add_parser("list", help="list the reproduced programs and figures")
     run = book_sub.add_parser("run", help="run a book program and print its output")
     run.add_argument("program", help="listing number, e.g. II.13")
+    run.add_argument("--stage", metavar="STAGE",
+                     help="program X only: run one stage alone (synthesis, teeth, gears, "
+                          "cam, kinematics, forces, dynamics)")
     run.add_argument("--printed", action="store_true",
                      help="the book's main program compiled as printed (sarkp.printed)")
     run.add_argument("--plots", metavar="DIR",
@@ -132,27 +142,42 @@ def _main(argv=None) -> int:
             raise UsageError(f"no book program {args.program!r}; known: "
                              f"{', '.join(book.PROGRAMS)}")
         prog = book.program(args.program)
+        stages = getattr(prog, "STAGES", ())
+        if args.stage is not None and args.stage not in stages:
+            raise UsageError(f"--stage {args.stage!r}: " + (
+                f"program {args.program} has the stages {', '.join(stages)}" if stages
+                else f"program {args.program} has no stages"))
         with modes.mode(args.mode):
-            print(prog.render())
+            try:
+                text = prog.render(args.stage) if stages else prog.render()
+            except SarkpError as exc:       # a stage that cannot run: nothing printed
+                print(f"sarkp: error: {exc}", file=sys.stderr)
+                return 1
+            print(text)
             if args.plots:
                 if not hasattr(prog, "plots"):
                     print(f"sarkp: program {args.program} has no pictures", file=sys.stderr)
                     return 2
-                for path in prog.plots(args.plots):
+                for path in (prog.plots(args.plots, args.stage) if stages
+                             else prog.plots(args.plots)):
                     print(f"wrote {path}", file=sys.stderr)
         return 0
     numbers = list(book.FIGURES) if args.figure == "all" else [args.figure]
     for number in numbers:
         _figure_program(number)
-    total_match = total = 0
+    rows = []
     for number in numbers:
-        text, matching, compared = _diff(number, args.mode)
+        text, row = _diff(number, args.mode)
         print(text)
         print()
-        total_match, total = total_match + matching, total + compared
+        rows.append(row)
     if len(numbers) > 1:
-        print(f"all figures: {total_match} of {total} cells match")
-    return 0 if total_match == total else 1
+        print(f"Summary ({args.mode} mode):")
+        print(figures.summary_table(rows))
+        print(f"all figures: {sum(r['matching'] for r in rows)} of "
+              f"{sum(r['compared'] for r in rows)} cells match")
+    # 0: every compared cell matches or differs for the ERRATA id the figure data gives it
+    return 0 if all(r["own_ids"] == 0 for r in rows) else 1
 
 
 if __name__ == "__main__":

@@ -167,7 +167,7 @@ class Routine:
 
     def __init__(self, name, *, listing, lines, chapter, inputs, outputs, tables=None,
                  lengths=(), nonnegative=(), nonzero=(), integers=None, checks=(),
-                 messages=None, function=False, report=None):
+                 messages=None, function=False, report=None, example=None):
         self.name = name
         self.listing = listing
         self.lines = lines
@@ -189,6 +189,9 @@ class Routine:
         self.messages.update(messages or {})
         self.function = function
         self.report = report
+        # a valid input row (book order), for routines whose valid inputs random values
+        # rarely hit (tooth numbers, centre distances): tests/test_layer.py draws near it
+        self.example = None if example is None else tuple(float(v) for v in example)
         for group in (self.lengths, self.nonnegative, self.nonzero, self.integers,
                       self.tables):
             unknown = set(group) - set(self.inputs)
@@ -438,7 +441,8 @@ class Routine:
         if bad[0]:
             self._raise_bad_input(int(bad[0]) - 1, int(bad[1]) - 1, flat, incs, shape)
         status = out[-2].reshape(shape)
-        out = [out[i] for i in self._pick]
+        # integer results (DZBPL's tooth numbers) come back as floats: a failure holds NaN
+        out = [np.asarray(out[i], dtype=float) for i in self._pick]
         out = [o.reshape(shape) if o.ndim == 1 else o.T.reshape(shape + o.shape[:-1])
                for o in out]
         if self._python_checked:                        # integer sets Fortran cannot screen
@@ -596,8 +600,11 @@ def _nan_like(o):
 
 
 def _status_code(status):
-    """The public code of a Fortran status (100 + d is a loss of significance)."""
-    return ST_SIGNIFICANCE if status > ST_DIGITS else int(status)
+    """The public code of a Fortran status (100 + d is a loss of significance; 10 c + k,
+    k = 1..9, is code c for the k-th of a routine's reasons, each with its message)."""
+    if status > ST_DIGITS:
+        return ST_SIGNIFICANCE
+    return int(status) // 10 if 10 <= status < 100 else int(status)
 
 
 def _significance_message(messages, status):
@@ -612,9 +619,11 @@ def _significance_message(messages, status):
 def status_error(name, status, index, messages, message=None):
     """The exception for a failed ``status`` of routine ``name`` at ``index``."""
     where = "" if index is None else f" at index {list(index)}"
+    code = _status_code(status)
     if message is None:
-        message = messages.get(status, _DEFAULT_MESSAGES.get(status, f"status {status}"))
-    return _ERRORS.get(status, SingularError)(f"{name}{where}: {message}")
+        message = messages.get(status) or messages.get(code) or \
+            _DEFAULT_MESSAGES.get(code, f"status {status}")
+    return _ERRORS.get(code, SingularError)(f"{name}{where}: {message}")
 
 
 def settle_arrays(name, out, status, on_error, messages, message_at=None):
@@ -623,7 +632,8 @@ def settle_arrays(name, out, status, on_error, messages, message_at=None):
     Raises the error of the first failed position (``on_error="raise"``) or puts NaN
     there (``"nan"``); warns once for a loss of significance.  ``message_at(status,
     index)`` may give a more precise message for a failed position.  Returns ``(out,
-    status)`` with Fortran's 100 + d codes mapped to SIGNIFICANCE.
+    status)`` with Fortran's 100 + d codes mapped to SIGNIFICANCE and its reason codes
+    10 c + k to c.
     """
     lost = (status == ST_SIGNIFICANCE) | (status > ST_DIGITS)
     failed = (status != ST_OK) & ~lost
@@ -642,6 +652,9 @@ def settle_arrays(name, out, status, on_error, messages, message_at=None):
         warnings.warn(f"{name}: {_significance_message(messages, worst)} (first at index "
                       f"{list(idx)})", SignificanceWarning, stacklevel=_caller_stacklevel())
         status = np.where(status > ST_DIGITS, ST_SIGNIFICANCE, status).astype(np.int32)
+    reason = (status >= 10) & (status < 100)             # 10 c + k: code c
+    if reason.any():
+        status = np.where(reason, status // 10, status).astype(np.int32)
     return out, status
 
 
@@ -669,7 +682,8 @@ def book_routine(name: str, *, listing: str, lines: str, chapter: str,
         (> 0), ``nonnegative``, ``nonzero``, ``integers`` ({name: allowed values or a
         range}; counts default to the integers >= 1), ``checks`` (:class:`Check`),
         ``messages`` ({status: text}), ``function`` (a book FUNCTION: returns a number),
-        ``report`` (callable(inputs, outputs) -> text, printed for AAA = 0).
+        ``report`` (callable(inputs, outputs) -> text, printed for AAA = 0), ``example``
+        (a valid input row in the book's order, for the generic tests).
     """
     spec = Routine(name, listing=listing, lines=lines, chapter=chapter, inputs=inputs,
                    outputs=outputs, **options)

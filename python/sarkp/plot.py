@@ -4,6 +4,12 @@ matplotlib is imported inside the functions only, so ``import sarkp`` never need
 Every function draws on a new ``matplotlib.figure.Figure`` (no pyplot state, no display
 needed) and returns it; ``save(figure, path)`` writes a PNG.
 
+Linkages (chapter 4, program X):
+
+* :func:`mechanism`: a planar linkage drawn in several positions, with the paths of
+  chosen points;
+* :func:`diagrams`: quantities against the crank angle, one panel per unit.
+
 Cams (chapter 5):
 
 * :func:`cam_profile`: the profile, its base circle and the follower in one position;
@@ -16,6 +22,11 @@ Forces and dynamics (chapters 7-8):
   of the force vector (F cos G, F sin G) drawn from the origin (e.g. program VII.10's F21);
 * :func:`speed_diagram`: omega(phi) of the reduction link from DZKNDV, with and without
   the flywheel of DMHVK (Fig. 96's WPR and WPRM).
+
+Gears (chapter 6):
+
+* :func:`gear_mesh`: an external spur mesh near its pitch point, both wheels' involute
+  teeth, the line of action and its active length (DGMZPC, DGMTZK).
 """
 
 from __future__ import annotations
@@ -38,6 +49,77 @@ def _figure(*, rows=1, size=(6.0, 6.0)):
 def save(figure, path) -> None:
     """Write ``figure`` as a PNG file."""
     figure.savefig(path, dpi=120)
+
+
+def mechanism(points, links, *, fixed=(), guide=None, highlight=0, every=1, paths=(),
+              title=""):
+    """A planar linkage in several positions.
+
+    ``points``: {name: (x, y)} with x, y arrays over the positions (m), or floats for a
+    fixed point; ``links``: tuples of point names, each drawn as a polyline (a lever
+    B-C-D as one tuple); ``fixed``: names drawn as frame pivots; ``guide``: the height
+    (m) of a horizontal slider guide; ``highlight``: the position drawn in colour, with
+    the point names; ``every``: draw every n-th other position in grey; ``paths``: names
+    whose paths are drawn."""
+    xy = {n: (np.atleast_1d(np.asarray(x, float)), np.atleast_1d(np.asarray(y, float)))
+          for n, (x, y) in points.items()}
+    count = max(v[0].size for v in xy.values())
+
+    def at(name, k):
+        x, y = xy[name]
+        return (x[k] if x.size > 1 else x[0]), (y[k] if y.size > 1 else y[0])
+    figure, (ax,) = _figure(size=(7.5, 6.0))
+    for k in range(0, count, max(1, every)):
+        if k == highlight:
+            continue
+        for link in links:
+            c = [at(n, k) for n in link]
+            ax.plot([p[0] for p in c], [p[1] for p in c], "-", color="0.75", lw=0.8)
+    for i, name in enumerate(paths):
+        x, y = xy[name]
+        ax.plot(x, y, "-", color=f"C{i + 2}", lw=3.0, alpha=0.45, label=f"path of {name}")
+    for i, link in enumerate(links):
+        c = [at(n, highlight) for n in link]
+        ax.plot([p[0] for p in c], [p[1] for p in c], "o-", color="C0", lw=2.2, ms=4,
+                label="position 1" if i == 0 else None)
+    for name in fixed:
+        x, y = at(name, 0)
+        ax.plot([x], [y], "^", color="k", ms=9)
+    for name in xy:
+        x, y = at(name, highlight)
+        ax.annotate(name, (x, y), xytext=(7, -12), textcoords="offset points",
+                    fontsize=10, color="C0", fontweight="bold", zorder=5,
+                    bbox=dict(boxstyle="round,pad=0.1", fc="white", ec="none", alpha=0.8))
+    if guide is not None:
+        ax.axhline(guide, color="C3", lw=0.7, ls="--", label="guide of the slider")
+    ax.set_aspect("equal")
+    ax.set_xlabel("x, m")
+    ax.set_ylabel("y, m")
+    ax.grid(True, lw=0.3)
+    ax.legend(loc="best", fontsize=8)
+    ax.set_title(title or "mechanism in its positions")
+    return figure
+
+
+def diagrams(x, panels, *, xlabel="crank angle φ1, rad", title=""):
+    """Curves against ``x``, one panel per entry of ``panels``: (ylabel with its unit,
+    {curve label: values})."""
+    x = np.asarray(x, dtype=float)
+    figure, axes = _figure(rows=len(panels), size=(7.5, 2.5 * len(panels) + 0.6))
+    for ax, (ylabel, curves) in zip(axes, panels):
+        for i, (label, values) in enumerate(curves.items()):
+            ax.plot(x, np.asarray(values, dtype=float), ".-", color=f"C{i}", lw=1.2,
+                    ms=3, label=label)
+        values = np.concatenate([np.asarray(v, dtype=float).ravel() for v in curves.values()])
+        if np.nanmin(values) < 0.0 < np.nanmax(values):
+            ax.axhline(0.0, color="k", lw=0.5)
+        ax.set_ylabel(ylabel)
+        ax.grid(True, lw=0.3)
+        ax.legend(fontsize=8, loc="best")
+    axes[-1].set_xlabel(xlabel)
+    if title:
+        figure.suptitle(title)
+    return figure
 
 
 def _rotate(x, y, angle):
@@ -97,6 +179,7 @@ def cam_profile(XA, YA, FI, *, position=None, follower="knife", offset=0.0,
     else:
         raise ValueError(f"follower must be 'knife' or 'flat', not {follower!r}")
     ax.set_aspect("equal")
+    ax.locator_params(axis="x", nbins=6)
     ax.set_xlabel("x, m")
     ax.set_ylabel("y, m")
     ax.set_title(title or f"cam turned by {FI[k]:.4f} rad")
@@ -199,4 +282,110 @@ def speed_diagram(phi, WPR, WPRM=None, *, W1=None, title=""):
     ax.legend()
     if title:
         ax.set_title(title)
+    return figure
+
+
+def _involute_flank(rb, r_from, r_to, n=40):
+    """Polar (r, theta) of an involute of the base circle rb from radius r_from to r_to,
+    theta = inv(alpha_r) = tan(alpha_r) - alpha_r with cos(alpha_r) = rb/r."""
+    r = np.linspace(max(r_from, rb), r_to, n)
+    alpha = np.arccos(np.clip(rb / r, -1.0, 1.0))
+    return r, np.tan(alpha) - alpha
+
+
+def gear_mesh(M, Z1, Z2, X1=0.0, X2=0.0, *, teeth=3):
+    """Draw an external spur mesh near its pitch point: both wheels' involute teeth, their
+    tip, operating pitch and base circles, the line of action N1N2 and its active length.
+
+    The geometry is sarkp's: DGMZPC (operating angle, centre distance, tip shortening) and
+    DGMTZK (reference thickness), in the current mode.  Wheel 1 is below, wheel 2 above,
+    the pitch point P at the origin, the centre line vertical.
+
+    Parameters
+    ----------
+    M : float
+        Module (mm).
+    Z1, Z2 : int
+        Tooth numbers.
+    X1, X2 : float
+        Shift coefficients.
+    teeth : int
+        Teeth drawn on each side of the centre line.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        The drawing; its attribute ``mesh`` is a dict: ``N1``, ``N2`` the ends of the line
+        of action (tangent points on the base circles), ``A``, ``B`` the ends of its active
+        part (where the tip circles of wheels 2 and 1 cut it), ``active`` the active length
+        |AB|, equal to eps_alpha times the base pitch pi m cos(alpha).
+    """
+    from .gears import DGMTZK, DGMZPC
+
+    mesh = DGMZPC(M, Z1, Z2, 0.0, X1, X2, 0.0)
+    aw, alfaw, dy = mesh.AW, mesh.ALFAW, mesh.XUR
+    figure, (ax,) = _figure(size=(7.0, 7.0))
+    u = Z2 / Z1
+    rw1, rw2 = aw / (1.0 + u), aw * u / (1.0 + u)         # operating pitch radii
+    centres = (np.array([0.0, -rw1]), np.array([0.0, rw2]))
+    wheels = []
+    for k, (z, x, c) in enumerate(((Z1, X1, centres[0]), (Z2, X2, centres[1]))):
+        g = DGMTZK(M, z, 0.0, x)
+        rb, r = g.DB / 2, g.D / 2
+        ra = r + (1.0 + x - dy) * M                        # tip shortened by dy
+        rf = g.DF / 2
+        alpha0 = math.acos(rb / r)
+        half = g.S / (2 * r) + (math.tan(alpha0) - alpha0)  # half tooth angle on the base
+        wheels.append((c, rb, ra, rf, half, z))
+    for k, (c, rb, ra, rf, half, z) in enumerate(wheels):
+        towards_p = math.pi / 2 if k == 0 else -math.pi / 2
+        # wheel 1 has a tooth on the centre line, wheel 2 a space there
+        offset = 0.0 if k == 0 else math.pi / z
+        rr, th = _involute_flank(rb, max(rb, rf), ra)
+        root = [min(rf, rb)]                  # a radial line below the base circle
+        for j in range(-teeth, teeth + 1):
+            axis = towards_p + offset + 2 * math.pi * j / z
+            for side in (-1, 1):
+                ang = axis + side * (half - th)
+                xs = np.concatenate([np.multiply(root, math.cos(axis + side * half)),
+                                     rr * np.cos(ang)])
+                ys = np.concatenate([np.multiply(root, math.sin(axis + side * half)),
+                                     rr * np.sin(ang)])
+                ax.plot(c[0] + xs, c[1] + ys, color=("tab:blue", "tab:red")[k], lw=1.2)
+            tip = np.linspace(axis - (half - th[-1]), axis + (half - th[-1]), 8)
+            ax.plot(c[0] + ra * np.cos(tip), c[1] + ra * np.sin(tip),
+                    color=("tab:blue", "tab:red")[k], lw=1.2)
+        span = np.linspace(towards_p - (teeth + 1) * 2 * math.pi / z,
+                           towards_p + (teeth + 1) * 2 * math.pi / z, 200)
+        for radius, style in ((ra, ":"), (rb, "--"), ((rw1, rw2)[k], "-.")):
+            ax.plot(c[0] + radius * np.cos(span), c[1] + radius * np.sin(span), style,
+                    color="0.5", lw=0.7)
+    # the line of action through P, at alpha_w to the common tangent (the x axis)
+    direction = np.array([math.cos(alfaw), math.sin(alfaw)])
+    n1 = centres[0] + wheels[0][1] * np.array([-math.sin(alfaw), math.cos(alfaw)])
+    n2 = centres[1] + wheels[1][1] * np.array([math.sin(alfaw), -math.cos(alfaw)])
+
+    def cut(centre, radius):
+        """The point of the line P + t*direction on the circle (centre, radius)."""
+        b = direction @ (-centre)
+        cc = centre @ centre - radius ** 2
+        roots = (-b + np.array([-1.0, 1.0]) * math.sqrt(b * b - cc))
+        t = roots[np.argmin(np.abs(roots))]
+        return t * direction
+
+    a_point = cut(centres[1], wheels[1][2])               # wheel 2's tip: contact begins
+    b_point = cut(centres[0], wheels[0][2])               # wheel 1's tip: contact ends
+    ax.plot(*zip(n1, n2), color="k", lw=0.8)
+    ax.plot(*zip(a_point, b_point), color="k", lw=3)
+    for name, p in (("N1", n1), ("N2", n2), ("A", a_point), ("B", b_point),
+                    ("P", np.zeros(2))):
+        ax.annotate(name, p, textcoords="offset points", xytext=(4, 4))
+    ax.set_aspect("equal")
+    width = (teeth + 1.5) * math.pi * M
+    ax.set_xlim(-width, width)
+    ax.set_ylim(-width, width)
+    ax.set_title(f"z1 = {Z1:g}, z2 = {Z2:g}, m = {M:g}, x1 = {X1:g}, x2 = {X2:g}: "
+                 f"alpha_w = {math.degrees(alfaw):.2f} deg, eps_alpha = {mesh.E:.3f}")
+    figure.mesh = {"N1": n1, "N2": n2, "A": a_point, "B": b_point,
+                   "active": float(np.linalg.norm(b_point - a_point))}
     return figure

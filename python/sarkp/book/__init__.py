@@ -2,7 +2,8 @@
 
 Each program module has ``LISTING``, ``TITLE``, ``FIGURES`` (the figure numbers it
 prints), ``cells()`` (the computed table as ``{(row, column): value}``, keyed as in the
-figure's data file) and ``render()`` (the printout in the book's layout).  Both run in
+figure's data file; program X, which prints seven figures, has ``figure_cells(N)``) and
+``render()`` (the printout in the book's layout).  Both run in
 the current mode (see :mod:`sarkp.modes`); the book's programs are meant to be run
 as printed.
 """
@@ -20,7 +21,14 @@ PROGRAMS = {
     "IV.15": "prog_iv_15",
     "V.5": "prog_v_5",
     "V.5-FLAT": "prog_v_5_flat",
+    "VI.2": "prog_vi_2",
+    "VI.3": "prog_vi_3",
+    "VI.5": "prog_vi_5",
+    "VI.6": "prog_vi_6",
+    "VI.7": "prog_vi_7",
+    "VI.8": "prog_vi_8",
     "VII.10": "prog_vii_10",
+    "X": "prog_x",
 }
 
 #: figure number -> listing of the program that prints it
@@ -29,7 +37,15 @@ FIGURES = {
     "10": "III.5",
     "35": "V.5",
     "36": "V.5-FLAT",
+    "39": "VI.2",
+    "44": "VI.3",
+    "46": "VI.5",
+    "47": "VI.6",
+    "48": "VI.7",
+    "50": "VI.8",
 }
+# program X (chapter 10): the figures whose stages this build can run
+FIGURES.update((f, "X") for f in importlib.import_module(".prog_x", __name__).FIGURES)
 
 
 def program(listing: str):
@@ -48,5 +64,13 @@ def figure_program(number: str):
     return program(FIGURES[key])
 
 
-__all__ = ["PROGRAMS", "FIGURES", "program", "figure_program", "Figure", "load_figure",
-           "compare"]
+def figure_cells(number: str) -> dict:
+    """Figure ``number`` as reproduced in the current mode, ``{(row, column): value}``."""
+    prog = figure_program(number)
+    if hasattr(prog, "figure_cells"):
+        return prog.figure_cells(str(number))
+    return prog.cells()
+
+
+__all__ = ["PROGRAMS", "FIGURES", "program", "figure_program", "figure_cells", "Figure",
+           "load_figure", "compare"]

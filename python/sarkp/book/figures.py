@@ -126,3 +126,45 @@ def report(figure: Figure, comparisons: list, mode: str,
                      f"(columns {' '.join(columns)}; {', '.join(reasons)})")
     lines.append(f"{len(matching)} of {len(compared)} cells match")
     return "\n".join(lines), len(matching), len(compared)
+
+
+def summary(figure: Figure, comparisons: list, corrected_differences: dict | None = None
+            ) -> dict:
+    """Counts of a diff: cells compared, matching, differing with an ERRATA id of their
+    own (explained), differing without one (unexplained), left out and the ids why.
+
+    ``corrected_differences`` (the program's reasons for corrected mode, as for
+    :func:`report`) also explains a differing cell, counted as "corrected mode";
+    ``own_ids`` counts the differing cells with no ERRATA id of their own either way."""
+    compared = [c for c in comparisons if c.cell.reproducible]
+    differ = [c for c in compared if not c.matches]
+    own = [c for c in differ if c.cell.errata]
+    explain = corrected_differences or {}
+    by_mode = [c for c in differ if not c.cell.errata
+               and (explain.get(c.cell.column) or explain.get("*"))]
+    skipped = [c for c in comparisons if not c.cell.reproducible]
+    reasons = sorted({e for c in skipped for e in c.cell.errata.split(";") if e})
+    because = sorted({e for c in own for e in c.cell.errata.split(";") if e})
+    if by_mode:
+        because.append(f"corrected mode: {len(by_mode)}")
+    return {"figure": figure.number, "compared": len(compared), "because": ", ".join(because),
+            "matching": len(compared) - len(differ), "explained": len(own) + len(by_mode),
+            "unexplained": len(differ) - len(own) - len(by_mode),
+            "own_ids": len(differ) - len(own), "left_out": len(skipped),
+            "why": ", ".join(reasons)}
+
+
+def summary_table(rows: list) -> str:
+    """The summary of several diffs as a Markdown table."""
+    out = ["| figure | cells compared | matching | explained differences | unexplained "
+           "| cells left out (why) |", "|---|---|---|---|---|---|"]
+    for r in rows:
+        left = f"{r['left_out']} ({r['why']})" if r["left_out"] else "0"
+        explained = f"{r['explained']} ({r['because']})" if r["explained"] else "0"
+        out.append(f"| Fig. {r['figure']} | {r['compared']} | {r['matching']} | "
+                   f"{explained} | {r['unexplained']} | {left} |")
+    total = {k: sum(r[k] for r in rows) for k in ("compared", "matching", "explained",
+                                                 "unexplained", "left_out")}
+    out.append(f"| all | {total['compared']} | {total['matching']} | {total['explained']} "
+               f"| {total['unexplained']} | {total['left_out']} |")
+    return "\n".join(out)

@@ -1,0 +1,70 @@
+"""The example of DKRKT (listing VI.3, L4019-4137): Fig. 44, five choices of the shift
+coefficients for m = 4 mm, z1 = 13, z2 = 34 (text L4219-4221).
+
+The calls are not printed; the echoed headers give them:
+``DKRKT(4.0, 13.0, 34.0, AW, SDVIG, 0.0, X1, X2, ALFAW)`` with (AW, SDVIG) = (100, 0),
+(0, 1), (0, 3), (110, 0), (0, 2).  Each run prints the header (FORMAT 25), the result
+(FORMAT 52) or a message, and the dump of FORMAT 55.  Output: Fig. 44 (L4166-4197).
+
+The fourth run (AW = 110) gives pointed teeth: the book prints its message 21 and the
+rejected coefficients; sarkp refuses the call (RequirementError), so the dump's X1, X2,
+XS and ALFAW of that run are not computed (ERRATA E-FIG44-1).  As printed, DUGINV stops at
+TCHNST = 0.00001 (E-DKRKT-3): ALFAW = 0.3490 for zero shifts; corrected mode gives the
+exact 0.3491 (E-DUGINV-1).
+"""
+
+from __future__ import annotations
+
+from ..errors import RequirementError
+from ..gears import DKRKT, dkrkt_limits, dkrkt_report
+
+LISTING = "VI.3"
+TITLE = "Shift coefficients and the operating angle (DKRKT example, chapter 6)"
+FIGURES = ("44",)
+
+M, Z1, Z2 = 4.0, 13.0, 34.0
+#: (AW, SDVIG) of the five runs, in print order.
+RUNS = ((100.0, 0), (0.0, 1), (0.0, 3), (110.0, 0), (0.0, 2))
+#: the book's message number for sarkp's reasons (FORMATs 50, 51, 54 after labels 20-22)
+_MESSAGES = (("undercut", 50), ("pointed", 51), ("message 22", 54))
+CORRECTED_DIFFERENCES = {"ALFAW": "E-DUGINV-1 (corrected: the exact root)",
+                         "ALFAW/55": "E-DUGINV-1 (corrected: the exact root)"}
+
+
+def _run():
+    """Yield (inputs, outputs or None, FORMAT of the line after the header)."""
+    for aw, sdvig in RUNS:
+        inputs = {"M": M, "Z1": Z1, "Z2": Z2, "AW": aw, "SDVIG": sdvig}
+        try:
+            yield inputs, DKRKT(M, Z1, Z2, aw, sdvig), 52
+        except RequirementError as err:
+            fmt = next((f for word, f in _MESSAGES if word in str(err)), 54)
+            yield inputs, None, fmt
+
+
+def cells() -> dict:
+    """The computed figure as ``{(run, column): value}``, keyed as in data/fig44.csv."""
+    out = {}
+    for k, (inputs, result, fmt) in enumerate(_run(), 1):
+        row = str(k)
+        for name, value in inputs.items():
+            out[(row, name)] = float(value)
+        out[(row, "FORMAT")] = float(fmt)
+        lim = dkrkt_limits(M, Z1, Z2, inputs["AW"])
+        for name in ("AO", "X1Z", "X2Z", "X1P", "X2P", "Y"):
+            out[(row, name)] = float(lim[name])
+        out[(row, "SDVIG/55")] = float(inputs["SDVIG"])
+        out[(row, "AW/55")] = inputs["AW"]
+        if result is not None:
+            for name, value in zip(("X1", "X2", "ALFAW"), result):
+                out[(row, name)] = out[(row, name + "/55")] = float(value)
+            out[(row, "XS")] = float(result.X1 + result.X2)
+    return out
+
+
+def render() -> str:
+    """The printout (Fig. 44) in the book's layout."""
+    parts = []
+    for inputs, result, fmt in _run():
+        parts.append(dkrkt_report(inputs, result, None if fmt == 52 else fmt))
+    return "\n".join(parts)

@@ -1,0 +1,90 @@
+"""The example of DGMZPC (listing VI.6, L4410-4454): Fig. 47, two external meshes.
+
+The calls as printed (L4482-4483) are garbled: (а) lost one 0.5 and (б) has one 0.0 too
+many (E-FIG47-2); XS = 1.0000 and E = 2.7280 prove
+(а) ``DGMZPC(5.0, 11.0, 26.0, 0.0, 0.5, 0.5, 30.0, 0.0)`` and
+(б) ``DGMZPC(7.0, 18.0, 60.0, (PI/180.0)*16.0, 0.0, 0.0, 100.0, 0.0)``.
+Output: Fig. 47 (L4456-4476).  (б)'s AW = 283.9946 < A with XS = 0 is DUGINV's early stop
+(E-DUGINV-1); its last digit needs the ES EVM's hexadecimal arithmetic (E-FIG47-1), which
+:func:`emulate` repeats (the cell is marked not reproducible in data/fig47.csv and checked
+against the emulation by tests/test_gears.py).
+"""
+
+from __future__ import annotations
+
+import math
+
+from ..gears import DGMZPC
+from ..modes import book_pi
+from .prog_v_5 import _R4, _f
+
+LISTING = "VI.6"
+TITLE = "External involute mesh (DGMZPC example, chapter 6)"
+FIGURES = ("47",)
+CORRECTED_DIFFERENCES = {"*": "E-DUGINV-1 (corrected: the exact alpha_w), E-DGMZPC-3 "
+                              "(corrected: the helical gear's tip and base circles)"}
+
+
+def _calls():
+    return {"a": (5.0, 11.0, 26.0, 0.0, 0.5, 0.5, 30.0),
+            "b": (7.0, 18.0, 60.0, (book_pi() / 180.0) * 16.0, 0.0, 0.0, 100.0)}
+
+
+def cells() -> dict:
+    out = {}
+    for row, call in _calls().items():
+        result = DGMZPC(*call)
+        for name, value in zip(result._fields, result):
+            out[(row, name)] = float(value)
+    return out
+
+
+def render() -> str:
+    return "\n".join(DGMZPC.spec.report({}, tuple(DGMZPC(*call))) for call in _calls().values())
+
+
+_TAN, _ATAN, _COS, _SIN, _ACOS = (_f(math.tan), _f(math.atan), _f(math.cos), _f(math.sin),
+                                  _f(math.acos))
+
+
+def _duginv(invx, xnach, tchnst):
+    """VI.4 (L4209-4215) in the ES EVM's arithmetic."""
+    x = xnach
+    while True:
+        x1 = _ATAN(x + invx)
+        if abs(x1 - x) - tchnst < 0.0:
+            return x1
+        x = x1
+
+
+def emulate() -> dict:
+    """DGMZPC (L4420-4443, with E-DGMZPC-1, -2) statement by statement in the ES EVM's
+    truncating hexadecimal REAL*4, left to right as written; library functions are the
+    exact values truncated.  Independent of sarkp's Fortran: the evidence for E-FIG47-1.
+    Returns ``{(row, name): value}`` keyed as :func:`cells`."""
+    out = {}
+    for row, call in {"a": (5.0, 11.0, 26.0, 0.0, 0.5, 0.5, 30.0),
+                      "b": (7.0, 18.0, 60.0, None, 0.0, 0.0, 100.0)}.items():
+        pi = _R4(3.14159)
+        m, z1, z2, beta, x1, x2, bw = (_R4(v) if v is not None else None for v in call)
+        if beta is None:
+            beta = pi / _R4(180.0) * _R4(16.0)
+        alfa = pi / _R4(9.0)
+        alfat = _ATAN(_TAN(alfa) / _COS(beta))
+        a = (z1 + z2) * m / (_R4(2.0) * _COS(beta))
+        xs = x1 + x2
+        invalw = (_R4(2.0) * xs * _TAN(alfa)) / (z1 + z2) + _TAN(alfat) - alfat
+        alfaw = _duginv(invalw, pi / _R4(18.0), _R4(0.00001))
+        aw = (z1 + z2) * m * _COS(alfat) / (_R4(2.0) * _COS(beta) * _COS(alfaw))
+        xy = (aw - a) / m
+        xur = xs - xy
+        da1 = m * z1 + _R4(2.0) * (_R4(1.0) + x1 - xur) * m
+        da2 = m * z2 + _R4(2.0) * (_R4(1.0) + x2 - xur) * m
+        ala1 = _ACOS(m * z1 * _COS(alfa) / da1)
+        ala2 = _ACOS(m * z2 * _COS(alfa) / da2)
+        ealfa = (z1 * _TAN(ala1) + z2 * _TAN(ala2) - (z1 + z2) * _TAN(alfaw)) / (_R4(2.0) * pi)
+        ebeta = bw * _SIN(beta) / (pi * m)
+        for name, value in zip(("A", "XS", "ALFAW", "AW", "XY", "XUR", "E"),
+                               (a, xs, alfaw, aw, xy, xur, ealfa + ebeta)):
+            out[(row, name)] = float(value)
+    return out

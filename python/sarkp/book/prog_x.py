@@ -1,0 +1,945 @@
+"""Program X (section 10.8, L7228-7650): the course project of chapter 10, the
+conveyor-feeder ("manipulator") mechanism, stage by stage as the book runs it.
+
+=========== ======== ====================================================== =========
+stage       figure   routines (program X's statements)                      chapter
+=========== ======== ====================================================== =========
+synthesis   Fig. 84  DSNTZR, DSNTZ1 (L7310-7338)                            3
+teeth       Fig. 86  DZBPL x 8 (L7340-7363)                                 6
+gears       Fig. 87  DKRKT, DGMTZK x 2, DGMZPC, DGMZVN (L7365-7405)         6
+cam         Fig. 89  the motion law (loop DO 5), DPRFPL (L7407-7489)        5
+kinematics  Fig. 91  DPRM1, DPRM2, DSKOR1, DSKOR2, DUSKR1, DUSKR2           4
+                     (L7491-7531, printed L7584-7606)
+forces      Fig. 94  DSMVKT, DNMAF2, DMOMNT, DNMAF1 (L7533-7566)            7
+dynamics    Fig. 96  the reduced inertia IPR (L7568-7579), DZKNDV, DMHVK,   8
+                     DZKNDV (L7622-7647)
+=========== ======== ====================================================== =========
+
+The task card (Fig. 75, L6157-6196, with the ch. 10 text): slider stroke 0.40 m
+(x_E = 0.82, 0.62, 0.42 m while link 3 turns by 0, 20, 40 degrees), guide height
+H5 = 0.64 m, coefficient of speed change K = 1.1, crank speed 3 rad/s, flat-faced cam
+follower with a 0.06 m lift on a cosine acceleration law, resistance 2000 N / 400 N,
+links of 50 kg/m, and a flywheel for delta = 0.02.
+
+Each stage can run alone (``sarkp book run X --stage cam``), as the book recommends for
+the dialogue mode (L7238-7252); a stage that needs an earlier stage's results (the
+kinematics needs the link lengths, the forces the kinematics, the dynamics the forces)
+runs that stage silently first.  When an earlier stage cannot run (its routines are not
+in this build of sarkp, or its task card has no mechanism), the stage raises a
+:class:`sarkp.SarkpError` naming both stages and the cause, and prints nothing.
+
+As-printed mode reproduces the printed figures: PI = 3.14159, the main program's own
+arithmetic that a printed cell depends on (the crank angle ``F = F + DF``, L7504, and
+the cam's loop DO 5) in the ES EVM's truncating REAL*4 (:mod:`sarkp.book.es_evm`), and
+the program's choices and errors the figures were computed with, each a row of
+docs/ERRATA.md (section "Program X"):
+
+* E-X-FICD1-1: FICD1 = 0 for the crank angle of DSNTZR's first position (1.3563 rad);
+* E-X-LINKS-1: ROA, RAB, ROC as fitted to Fig. 91's positions (no DSNTZ1 gives them);
+* E-DUSKR1-1 (DUSKR1's ``ABS(Y(1))``) and E-X-W4 (omega2 passed to DUSKR2 for omega4);
+* E-X-IPR-1: the m3 term counted twice in the reduced inertia;
+* E-X-DELTA-1: delta = 0.01 for the flywheel where the card asks 0.02.
+
+Corrected mode is the design the task card asks for: exact pi, FICD1 from DSNTZR, the
+lengths from DSNTZ1's construction, true accelerations, the reduced inertia counted
+once, delta = 0.02; :func:`corrected_report` prints where it differs from the book, and
+:func:`checks` holds it against physics (the stroke, the coefficient of speed change,
+accelerations against numerical derivatives of the velocities, the forces against virtual
+work, the flywheel against the delta it is sized for).  Without a flywheel the corrected
+machine stalls (E-DZKNDV-2): WPR, EPR are then not printed.
+"""
+
+from __future__ import annotations
+
+import math
+
+import numpy as np
+
+import sarkp
+from .. import DSMVKT, DUGL3, DMOMNT, get_mode
+from ..errors import SarkpError
+from ..kinematics import DPRM1, DPRM2, DSKOR1, DSKOR2, DUSKR1, DUSKR2
+from ..modes import book_pi
+from ..report import fortran_write
+from ..synthesis import DSNTZ1, DSNTZR
+from .prog_v_5 import _R4      # a REAL*4 of the ES EVM (sarkp.book.es_evm)
+
+LISTING = "X"
+TITLE = "Course project of chapter 10: the conveyor-feeder mechanism (program X)"
+
+# ---- the program's data (DATA statements and assignments) ---------------------------------
+X5 = (0.82, 0.62, 0.42)          # L7312-7314: slider positions, m
+H5 = 0.64                        # guide height above C, m (the card's "0,06" is OCR)
+FICD = (0.0, 0.349, 0.698)       # turns of CD from its first position, rad
+FI5 = (1.57, 1.57, 1.57)
+DELTA = 0.698                    # swing of link 3, rad (40 degrees)
+SKW = 1.1                        # L7322: coefficient of speed change of link 3
+XD, Q = 0.7, -1.0                # L7326: DSNTZ1's abscissa of C and assembly variant
+W1 = 3.0                         # L7427: crank speed, 1/s
+DSMAX = 0.06                     # L7427: follower lift, m
+GAMMA_DIVISOR = 3.0              # L7467: DPRFPL's design angle PI/3.0
+G, ML = 9.81, 50.0               # L7542: gravity, mass per metre of a link
+POSITIONS = 37                   # L7503: DO 30 K = 1, 37
+CAM_POINTS = 26                  # L7434: DO 5 K = 1, 26
+#: E-X-LINKS-1: ROA, RAB, ROC fitted (least squares) to the 259 printed position cells of
+#: Fig. 91 with the other lengths from DSNTZR; the printed Fig. 84 has them to 3 decimals.
+FITTED_LINKS = {"ROA": 0.16646893, "RAB": 2.33535352, "ROC": 2.09023145}
+#: E-X-DELTA-1: the flywheel's coefficient of speed fluctuation, as run and as asked.
+DELTA_FLYWHEEL = {"as-printed": 0.01, "corrected": 0.02}
+
+STAGES = ("synthesis", "teeth", "gears", "cam", "kinematics", "forces", "dynamics")
+STAGE_FIGURE = {"synthesis": "84", "teeth": "86", "gears": "87", "cam": "89",
+                "kinematics": "91", "forces": "94", "dynamics": "96"}
+#: what each stage takes from earlier ones
+NEEDS = {"synthesis": (), "teeth": (), "gears": (), "cam": (),
+         "kinematics": ("synthesis",), "forces": ("synthesis", "kinematics"),
+         "dynamics": ("synthesis", "kinematics", "forces")}
+#: the library routines each stage calls, and the chapter they belong to
+ROUTINES = {
+    "synthesis": (("DSNTZR", "DSNTZ1"), 3),
+    "teeth": (("DZBPL",), 6),
+    "gears": (("DKRKT", "DGMTZK", "DGMZPC", "DGMZVN"), 6),
+    "cam": (("DPRFPL",), 5),
+    "kinematics": (("DPRM1", "DPRM2", "DSKOR1", "DSKOR2", "DUSKR1", "DUSKR2"), 4),
+    "forces": (("DNMAF2", "DNMAF1"), 7),
+    "dynamics": (("DZKNDV", "DMHVK"), 8),
+}
+
+#: Why a printed cell differs in corrected mode (see docs/ERRATA.md).
+CORRECTED_DIFFERENCES = {
+    **{c: "E-PI-1; E-FIG89-3 (exact pi and IEEE double arithmetic, phases by the row number)"
+       for c in ("FIK", "FIK_P", "AT", "VT", "ST", "X", "Y", "RK", "DLT", "ROK", "RKSH")},
+    **{c: "E-FIG86-2; E-DZBPL-4 (corrected DZBPL: variant 8's 30/76/76/183 is not "
+          "coaxial, 30 + 76 != 183 - 76, and no other set is)" for c in ("Z1", "Z2", "Z3", "Z4")},
+    **{c: "E-PI-1; E-DUGINV-1 (exact pi and the exact operating angle)"
+       for c in ("AL12", "ALFA", "AW", "XU", "XUR", "XD", "DA1", "DA2", "DF1", "DF2", "H1",
+                 "H2", "SA1", "SA2", "EALFA", "E", "S", "SB", "SA", "DB", "DA", "DF", "X",
+                 "X1", "X2")},
+    "*": "E-PI-1; E-X-FICD1-1; E-X-LINKS-1; E-DUSKR1-1; E-X-W4; E-X-IPR-1; E-X-DELTA-1 "
+         "(the corrected design)",
+}
+
+
+def missing_routines(stage: str) -> tuple:
+    """The routines of ``stage`` that this build of sarkp does not have."""
+    names, _ = ROUTINES[stage]
+    return tuple(n for n in names if not hasattr(sarkp, n))
+
+
+def available(stage: str) -> bool:
+    """Whether ``stage`` and every stage it needs can run in this build."""
+    return not missing_routines(stage) and all(available(s) for s in NEEDS[stage])
+
+
+def _figures() -> tuple:
+    return tuple(STAGE_FIGURE[s] for s in STAGES if available(s))
+
+
+#: the figures this build reproduces (the others plug in when their chapters are built)
+FIGURES = _figures()
+
+
+class StageError(SarkpError):
+    """A stage of program X cannot run; the message names the stage and the cause."""
+
+
+# ---- the main program's own arithmetic ----------------------------------------------------
+
+def _number():
+    """The main program's REAL: the ES EVM's as printed, a double corrected."""
+    return _R4 if get_mode() == "as-printed" else float
+
+
+def _fn(function):
+    if get_mode() == "as-printed":
+        return lambda x: _R4(function(float(x)))
+    return function
+
+
+# ---- stage 1: synthesis (Fig. 84) -----------------------------------------------------------
+
+def synthesis() -> dict:
+    """DSNTZR for the crank-slider 3-4-5 by three slider positions, then DSNTZ1 for the
+    four-bar 1-2-3 by the extreme positions of link 3 and K (operator functions 1-4,
+    L6489-6503; L7310-7338)."""
+    pi = book_pi()
+    printed = get_mode() == "as-printed"
+    try:
+        r = DSNTZR(X5, H5, FICD, FI5, 1.0)
+    except SarkpError as exc:
+        raise StageError(f"program X, stage 'synthesis' (Fig. 84): DSNTZR finds no "
+                         f"crank-slider for the task card: {exc}") from exc
+    # E-X-FICD1-1: the printed run used 0 (Fig. 84 prints -0.000) for DSNTZR's 1.3563
+    ficd1 = 0.0 if printed else r.FI11
+    ficb1 = ficd1 + pi - (pi / 2.0 + DELTA)
+    try:
+        s = DSNTZ1(SKW, ficb1, ficb1 + DELTA, r.L1, XD, Q, 1.0)
+    except SarkpError as exc:
+        raise StageError(f"program X, stage 'synthesis' (Fig. 84): DSNTZ1 finds no "
+                         f"four-bar for K = {SKW} and the extreme positions "
+                         f"{ficb1:.4f}, {ficb1 + DELTA:.4f} rad: {exc}") from exc
+    out = {"RCD": r.L1, "RDE": r.L2, "FICD1": ficd1, "FI11": r.FI11, "FICB1": ficb1,
+           "DSNTZ1": (s.L1, s.L2, s.LO)}
+    if printed:                     # E-X-LINKS-1
+        out.update(FITTED_LINKS)
+    else:
+        out.update(ROA=s.L1, RAB=s.L2, ROC=s.LO)
+    out["RCB"] = out["RCD"]
+    return out
+
+
+def render_synthesis(s: dict) -> str:
+    return "\n".join([
+        fortran_write("(1X,'РАЗМЕРЫ ЗВЕНЬЕВ МАНИПУЛЯТОРА'//"
+                      "'RCD = ',F7.3,' RDE = ',F7.3,' FICD = ',F7.3//)",
+                      [s["RCD"], s["RDE"], s["FICD1"]]),
+        fortran_write("('ROA = ',F7.3,' RAB = ',F7.3,' ROC = ',F7.3//)",
+                      [s["ROA"], s["RAB"], s["ROC"]])])
+
+
+# ---- stage 2: tooth numbers (Fig. 86) -------------------------------------------------------
+
+#: L7344-7363: COMMON /ZUB/ limits and the eight DZBPL calls (KS, P, Q, L2, L3, Z1MIN,
+#: Z1MAX, SHEMA).  The printed 5th call reads "6, 7, 3, 0, 200" for "6, 7, 30, 200" (OCR).
+ZUB_LIMITS = {"ZKRN": 20, "ZKRW": 85, "DZ": 8}
+DZBPL_CALLS = ((1, 1, 25, 2, 3, 30, 200, 3), (1, 1, 25, 3, 4, 30, 200, 3),
+               (1, 1, 25, 4, 5, 30, 200, 3), (1, 1, 25, 6, 7, 30, 200, 3),
+               (2, 5, 1, 1, 1, 13, 35, 1), (3, 5, 1, 1, 1, 13, 35, 1),
+               (2, 71, 10, 1, 1, 13, 35, 1), (3, 71, 10, 1, 1, 13, 35, 1))
+
+
+def teeth() -> dict:
+    """The eight DZBPL variants of the planetary reducer (L7344-7363); the COMMON
+    /ZUB/ limits ZKRN, ZKRW, DZ of L7344-7346 are DZBPL's own (chapter 6)."""
+    out = []
+    for call in DZBPL_CALLS:
+        try:
+            result = sarkp.DZBPL(*call)
+        except sarkp.RequirementError:
+            # no admissible set: DZBPL prints its message and the program goes on
+            # (corrected mode, variant 8: 30/76/76/183 is not coaxial, E-DZBPL-4)
+            result = None
+        except SarkpError as exc:
+            raise StageError(f"program X, stage 'teeth' (Fig. 86): DZBPL{call}: "
+                             f"{exc}") from exc
+        out.append((dict(zip(sarkp.DZBPL.spec.inputs, call)), result))
+    return {"variants": out}
+
+
+def render_teeth(t: dict) -> str:
+    return "\n".join(sarkp.gears.dzbpl_report(args["KS"], args["SHEMA"],
+                                              None if result is None else list(result))
+                     for args, result in t["variants"])
+
+
+# ---- stage 3: gear geometry (Fig. 87) -------------------------------------------------------
+
+#: L7375-7405: DKRKT with AAA = 1.0 (it prints its input line all the same, L6590), the
+#: geometry routines with AAA = 0.0 (they print their reports).  Here every call is
+#: silent (AAA = 1) and :func:`render_gears` prints the reports afterwards, so that a
+#: failure prints nothing and the order is the book's.
+GEAR_CALLS = {
+    "DKRKT": dict(M=3.0, Z1=20.0, Z2=51.0, AW=0.0, SDVIG=3, AAA=1.0),
+    "DGMTZK1": dict(M=3.0, Z=20.0, BETA=0.0, AAA=1.0),            # X = X1
+    "DGMTZK2": dict(M=3.0, Z=51.0, BETA=0.0, AAA=1.0),            # X = X2
+    "DGMZPC": dict(M=3.0, Z1=20.0, Z2=51.0, BETA=0.0, BW=20.0, AAA=1.0),
+    "DGMZVN": dict(M=3.0, Z1=51.0, Z2=122.0, X2=0.0, ZO2=25.0, DO=75.0, XO=0.17, DAO=83.8,
+                   AAA=1.0),
+}
+
+
+def gears() -> dict:
+    """Shift coefficients (DKRKT, equal specific sliding), the two gears (DGMTZK), the
+    external mesh 20/51 (DGMZPC) and the internal mesh 51/122 cut by a shaper cutter
+    (DGMZVN), L7365-7405."""
+    out = {}
+    try:
+        args = GEAR_CALLS["DKRKT"]
+        k = sarkp.DKRKT(**args)
+        out["DKRKT"] = (args, k)
+        for name, x in (("DGMTZK1", k.X1), ("DGMTZK2", k.X2)):
+            args = dict(GEAR_CALLS[name], X=x)
+            out[name] = (args, sarkp.DGMTZK(**args))
+        args = dict(GEAR_CALLS["DGMZPC"], X1=k.X1, X2=k.X2)
+        out["DGMZPC"] = (args, sarkp.DGMZPC(**args))
+        args = dict(GEAR_CALLS["DGMZVN"], X1=k.X2)
+        out["DGMZVN"] = (args, sarkp.DGMZVN(**args))
+    except SarkpError as exc:
+        raise StageError(f"program X, stage 'gears' (Fig. 87): {exc}") from exc
+    return out
+
+
+def render_gears(g: dict) -> str:
+    args, k = g["DKRKT"]
+    # with AAA = 1 DKRKT prints only its input line (FORMAT 25, two records)
+    parts = ["\n".join(sarkp.gears.dkrkt_report(args).split("\n")[:2]),
+             fortran_write("(1X,'КОЭФФИЦИЕНТЫ СМЕЩЕНИЯ КОЛЕС:'/' X1 = ',F7.3,"
+                           "' X2 = ',F7.3/' УГОЛ ЗАЦЕПЛЕНИЯ AL12 = ',F8.4)",
+                           [k.X1, k.X2, k.ALFAW])]
+    for name, routine in (("DGMTZK1", sarkp.DGMTZK), ("DGMTZK2", sarkp.DGMTZK),
+                          ("DGMZPC", sarkp.DGMZPC), ("DGMZVN", sarkp.DGMZVN)):
+        args, result = g[name]
+        parts.append(routine.spec.report(args, list(result)))
+    return "\n".join(parts)
+
+
+# ---- stage 4: cam (Fig. 89) -----------------------------------------------------------------
+
+def cam_law() -> dict:
+    """The follower's motion law, loop DO 5 (L7414-7463), formulas (10.1)-(10.3).
+
+    As printed, in the ES EVM's arithmetic: it puts FI(11) just below FIU (row 11 is the
+    end of the rise, AT = -1.8605) and FI(16) just below FIU + FID (row 16 is still on
+    the dwell, AT = 0), as Fig. 89 prints (E-FIG89-3).  Corrected: the same phases by
+    the row number, exact pi, double precision."""
+    R = _number()
+    cos, sin = _fn(math.cos), _fn(math.sin)
+    pi = R(book_pi())
+    beta = pi * (R(SKW) - R(1.0)) / (R(SKW) + R(1.0))
+    fiu = (pi - beta) * R(0.4)
+    fid = (pi - beta) * R(0.2)
+    sk = fiu / pi
+    w1 = R(W1)
+    wo = R(DSMAX) * w1 * w1 / (R(2.0) * (sk * sk))
+    dfi = fiu / R(10.0)
+    printed = get_mode() == "as-printed"
+    fik, at, vt, st = [], [], [], []
+    fi = -dfi
+    ao = R(0.0)
+    for k in range(1, CAM_POINTS + 1):
+        if printed:
+            fi = fi + dfi
+            rise = fi <= fiu
+            dwell = fiu < fi < fiu + fid
+            ret = fi > fiu + fid
+        else:
+            fi = (k - 1) * dfi
+            rise, dwell, ret = k <= 11, 11 < k <= 16, k > 16
+        if rise:
+            ao = wo
+        if dwell:
+            ao = R(0.0)
+        if ret:
+            ao = -wo
+        if (fi < fiu) if printed else k <= 11:        # IF(FI-FIU)25,26,26
+            psi, smax = fi, R(0.0)
+        else:
+            psi, smax = fi - (fiu + fid), R(2.0) * wo * ((sk / w1) * (sk / w1))
+        fik.append(fi)
+        at.append(ao * cos(psi / sk))
+        vt.append(ao * sk / w1 * sin(psi / sk))
+        st.append(ao * ((sk / w1) * (sk / w1)) * (R(1.0) - cos(psi / sk)) + smax)
+    return {"FIK": np.array(fik, float), "AT": np.array(at, float),
+            "VT": np.array(vt, float), "ST": np.array(st, float),
+            "FIU": float(fiu), "FID": float(fid), "BETA": float(beta), "WO": float(wo)}
+
+
+def cam() -> dict:
+    """The motion law and the flat-faced follower's cam (DPRFPL with GAMMA = PI/3,
+    L7467; ERRATA E-X-DPRFPL-1 for its ST argument)."""
+    law = cam_law()
+    try:
+        p = sarkp.DPRFPL(CAM_POINTS, book_pi() / GAMMA_DIVISOR, W1, law["FIK"], law["AT"],
+                         law["VT"], law["ST"])
+    except SarkpError as exc:
+        raise StageError(f"program X, stage 'cam' (Fig. 89): DPRFPL: {exc}") from exc
+    return {**law, "X": p.XA, "Y": p.YA, "RK": p.R1, "DLT": p.DELTA, "ROK": p.ROK,
+            "RKSH": p.RKSH, "ROKMIN": p.ROKMIN, "NCONC": p.NCONC}
+
+
+def render_cam(c: dict) -> str:
+    lines = [fortran_write("(1X,'КИНЕМАТИЧЕСКИЕ ХАРАКТЕРИСТИКИ ДВИЖЕНИЯ ','ТОЛКАТЕЛЯ'/5X,"
+                           "'FIK',8X,'AT',8X,'VT',8X,'ST')")]
+    lines += [fortran_write("(1X,4F10.4)", [c[n][k] for n in ("FIK", "AT", "VT", "ST")])
+              for k in range(CAM_POINTS)]
+    lines.append(fortran_write("(1X//'РАДИУС КУЛАЧКОВОЙ ШАЙБЫ - RKSH = ',F7.4//)",
+                               [c["RKSH"]]))
+    lines.append(fortran_write("(1X,'ХАРАКТЕРИСТИКИ ПРОФИЛЯ КУЛАЧКА'//5X,'FIK',7X,'X',"
+                               "9X,'Y',9X,'RK',7X,'DLT',7X,'ROK')"))
+    lines += [fortran_write("(1X,6F10.4)",
+                            [c[n][k] for n in ("FIK", "X", "Y", "RK", "DLT", "ROK")])
+              for k in range(CAM_POINTS)]
+    return "\n".join(lines)
+
+
+# ---- stage 5: kinematics (Fig. 91) ----------------------------------------------------------
+
+def crank_angles(positions: int = POSITIONS) -> np.ndarray:
+    """F = 0, DF, 2 DF, ... with DF = 2 PI/36 (L7500-7505).  As printed accumulated
+    ``F = F + DF`` in the ES EVM's REAL*4, as program II.13 does (E-FIG4-4): the
+    printed FI1 = 2.9670, 3.4906, ... (E-FIG91-7)."""
+    if get_mode() == "as-printed":
+        R = _R4
+        df = R(2.0) * R(book_pi()) / R(36.0)
+        f, out = -df, []
+        for _ in range(positions):
+            f = f + df
+            out.append(float(f))
+        return np.array(out)
+    return np.arange(positions) * (2.0 * math.pi / 36.0)
+
+
+def kinematics(links: dict, angles=None) -> dict:
+    """Positions, velocities and accelerations of the mechanism (operator functions
+    27-39, L6813-6855; loop DO 30, L7503-7531) at the crank angles ``angles`` (default:
+    the program's 37).  ``links``: RCD (= RCB), RDE, ROA, RAB, ROC of the synthesis."""
+    pi = book_pi()
+    pid2 = pi / 2.0
+    printed = get_mode() == "as-printed"
+    f = crank_angles() if angles is None else np.asarray(angles, dtype=float)
+    roa, rab, roc = links["ROA"], links["RAB"], links["ROC"]
+    rcb = rcd = links["RCD"]
+    rde = links["RDE"]
+    xc, yc = -roc * math.sin(DELTA), roc * math.cos(DELTA)          # formula 27
+    xa, ya = roa * np.cos(f), roa * np.sin(f)                       # formula 28
+    try:
+        p1 = DPRM1(xa, ya, xc, yc, rab, rcb, -1.0)
+        xd, yd = xc + rcd * np.cos(p1.FI3 + pi), yc + rcd * np.sin(p1.FI3 + pi)
+        p2 = DPRM2(xd, yd, 0.0, H5 + yc, 0.0, rde, 0.0, pid2)
+        va, ala = W1 * roa, f + pid2
+        v1 = DSKOR1(rab, p1.FI2, rcb, p1.FI3, va, ala, 0.0, 0.0)
+        vd, ald = rcd * np.abs(v1.W3), DUGL3(p1.FI3 + pi, pid2, v1.W3)
+        v2 = DSKOR2(vd, ald, 0.0, 0.0, rde, p2.FI2, 0.0)
+        a1 = DUSKR1(W1**2 * roa, f + pi, 0.0, 0.0, rab, p1.FI2, rcb, p1.FI3, v1.W2, v1.W3)
+        ad = rcd * np.sqrt(v1.W3**4 + a1.E3**2)
+        # L7528: PI - ATAN(ABS(E3)/W3**2); atan2 keeps it finite where W3 = 0
+        bd = DUGL3(p1.FI3 + pi, pi - np.arctan2(np.abs(a1.E3), v1.W3**2), a1.E3)
+        # E-X-W4: L7530 passes W2(K) where omega4 belongs; the printed Fig. 91 used it
+        a2 = DUSKR2(ad, bd, 0.0, 0.0, 0.0, 0.0, rde, p2.FI2, v1.W2 if printed else v2.W2,
+                    0.0)
+    except SarkpError as exc:
+        raise StageError(f"program X, stage 'kinematics' (Fig. 91): the mechanism "
+                         f"ROA = {roa:.4f}, RAB = {rab:.4f}, ROC = {roc:.4f} m: {exc}") from exc
+    return {"FI1": f, "FI2": p1.FI2, "FICB": p1.FI3, "XE": p2.XB, "YE": p2.YB,
+            "FIDE": p2.FI2, "XB": p1.XB, "YB": p1.YB, "XA": xa, "YA": ya, "XC": xc,
+            "YC": yc, "XD": xd, "YD": yd, "W2": v1.W2, "W3": v1.W3, "VE": v2.VB,
+            "ALE": v2.ALB, "W4": v2.W2, "VA": va, "ALA": ala, "VD": vd, "ALD": ald,
+            "ALBA": v1.ALBA, "ALED": v2.ALBA, "E2": a1.E2, "E3": a1.E3, "E4": a2.E2,
+            "AE": a2.AB, "BE": a2.BB}
+
+
+def render_kinematics(k: dict) -> str:
+    n = len(k["FI1"])
+    lines = [fortran_write("(1X,'КИНЕМАТИЧЕСКИЙ РАСЧЕТ МЕХАНИЗМА ','МАНИПУЛЯТОРА'//5X,"
+                           "'ЛИНЕЙНЫЕ И УГЛОВЫЕ ПЕРЕМЕЩЕНИЯ ЗВЕНЬЕВ'/3X,'FI1',5X,'FI2',"
+                           "6X,'FICB',6X,'XE',6X,'FIDE',6X,'XB',7X,'YB'/)")]
+    cols = ("FI1", "FI2", "FICB", "XE", "FIDE", "XB", "YB")
+    lines += [fortran_write("(7F9.4)", [k[c][i] for c in cols]) for i in range(n)]
+    lines.append(fortran_write("(5X//'ЛИНЕЙНЫЕ И УГЛОВЫЕ СКОРОСТИ ЗВЕНЬЕВ'/3X,'FI1',6X,"
+                               "'W2',7X,'W3',7X,'VE',7X,'ALE',6X,'W4'/)"))
+    cols = ("FI1", "W2", "W3", "VE", "ALE", "W4")
+    lines += [fortran_write("(6F9.4)", [k[c][i] for c in cols]) for i in range(n)]
+    lines.append(fortran_write("(5X//'ЛИНЕЙНЫЕ И УГЛОВЫЕ УСКОРЕНИЯ ЗВЕНЬЕВ'/3X,'FI1',6X,"
+                               "'E2',7X,'E3',7X,'E4',7X,'AE',7X,'BE'/)"))
+    cols = ("FI1", "E2", "E3", "E4", "AE", "BE")
+    lines += [fortran_write("(6F9.4)", [k[c][i] for c in cols]) for i in range(n)]
+    return "\n".join(lines)
+
+
+# ---- stage 6: forces (Fig. 94) --------------------------------------------------------------
+
+def masses(links: dict) -> dict:
+    """L7542-7550: masses of 50 kg per metre of link (link 3 is the lever BCD, 2 RCD long),
+    J_S = m l**2, m5 = 2 m4; J_S1 = (ML ROA) ROA**2 is the crank's."""
+    rcd, rde, roa, rab = links["RCD"], links["RDE"], links["ROA"], links["RAB"]
+    m4 = ML * rde
+    m3 = 2.0 * rcd * ML
+    m2 = ML * rab
+    return {"M4": m4, "M5": 2.0 * m4, "M3": m3, "M2": m2, "IS4": m4 * rde**2,
+            "IS3": m3 * (2.0 * rcd)**2, "IS2": m2 * rab**2, "IS1": (ML * roa) * roa**2}
+
+
+def forces(links: dict, kin: dict) -> dict:
+    """Static forces in the joints, without inertia loads (operator functions 40-48,
+    L6994-7096; L7551-7566): the resistance FS = 2000 N while W3 < 0 (working stroke),
+    400 N otherwise, gravity of links 2-5, DNMAF2 for the group 4-5, DNMAF1 for 2-3,
+    the moment M1 of F21 about O."""
+    pi = book_pi()
+    pid2 = pi / 2.0
+    m = masses(links)
+    rcd, rde, rab, roa = links["RCD"], links["RDE"], links["RAB"], links["ROA"]
+    fs = np.where(kin["W3"] < 0.0, 2000.0, 400.0)                   # IF(W3(K))15,16,16
+    f5, g5 = DSMVKT(fs, pi, 2.0 * G * m["M4"], -pid2)
+    xs4 = kin["XD"] + 0.3 * rde * np.cos(kin["FIDE"])
+    ys4 = kin["YD"] + 0.3 * rde * np.sin(kin["FIDE"])
+    try:
+        # group 4-5 (L7556-7558): DNMAF2's F21, F23, F34 are the program's F43 (4 on 3),
+        # F45 (4 on 5) and F50 (5 on the guide)
+        g45 = sarkp.DNMAF2(kin["XD"], kin["YD"], kin["XE"], kin["YE"], 0.0, xs4, ys4,
+                           G * m["M4"], -pid2, kin["XE"], kin["YE"], f5, g5, 0.0, 0.0)
+        f3, g3 = DSMVKT(g45.F21, g45.G21, G * m["M3"], -pid2)
+        t3 = DMOMNT(0.85 * rcd, kin["FICB"] + pi, g45.F21, g45.G21)   # F43 moved to S3
+        # group 2-3 (L7561-7565): DNMAF1's F21, F23, F34 are F21 (2 on 1), F23 (2 on 3)
+        # and F30 (3 on the frame)
+        g23 = sarkp.DNMAF1(kin["XA"], kin["YA"], kin["XB"], kin["YB"], kin["XC"], kin["YC"],
+                           kin["XA"] + 0.5 * rab * np.cos(kin["FI2"]),
+                           kin["YA"] + 0.5 * rab * np.sin(kin["FI2"]), G * m["M2"], -pid2,
+                           kin["XC"] + 0.15 * rcd * np.cos(kin["FICB"] + pi),
+                           kin["YC"] + 0.15 * rcd * np.sin(kin["FICB"] + pi), f3, g3, 0.0,
+                           t3)
+    except SarkpError as exc:
+        raise StageError(f"program X, stage 'forces' (Fig. 94): {exc}") from exc
+    m1 = DMOMNT(roa, kin["FI1"], g23.F21, g23.G21)                       # L7566
+    return {"FI1": kin["FI1"], "FS": fs, "F43": g45.F21, "G43": g45.G21, "F45": g45.F23,
+            "G45": g45.G23, "F50": g45.F34, "G50": g45.G34, "F21": g23.F21, "G21": g23.G21,
+            "F23": g23.F23, "G23": g23.G23, "F30": g23.F34, "G30": g23.G34, "M1": m1,
+            "T3": t3, **m}
+
+
+def render_forces(fo: dict) -> str:
+    n = len(fo["FI1"])
+    lines = [fortran_write("(//'ОПРЕДЕЛЕНИЕ УСИЛИЙ В КИНЕМАТИЧЕСКИХ'/'ПАРАХ МЕХАНИЗМА "
+                           "МАНИПУЛЯТОРА'//10X,'ВЕЛИЧИНЫ УСИЛИЙ И МОМЕНТ СОПРОТИВЛЕНИЯ'/"
+                           "4X,'FI1',5X,'F43',6X,'F45',6X,'F50',6X,'F30',6X,'F23',6X,"
+                           "'F21',6X,'M1')")]
+    cols = ("FI1", "F43", "F45", "F50", "F30", "F23", "F21", "M1")
+    lines += [fortran_write("(F8.3,6F9.1,F8.1)", [fo[c][i] for c in cols]) for i in range(n)]
+    lines.append(fortran_write("(/10X,'НАПРАВЛЯЮЩИЕ УГЛЫ ВЕКТОРОВ СИЛ'/4X,'FI1',5X,'G43',"
+                               "6X,'G45',6X,'G50',6X,'G30',6X,'G23',6X,'G21')"))
+    cols = ("FI1", "G43", "G45", "G50", "G30", "G23", "G21")
+    lines += [fortran_write("(F8.3,6F9.3)", [fo[c][i] for c in cols]) for i in range(n)]
+    return "\n".join(lines)
+
+
+# ---- stage 7: dynamics (Fig. 96) ------------------------------------------------------------
+
+def reduced_inertia(links: dict, kin: dict) -> np.ndarray:
+    """J_pr of formula 51 (L7156; L7573-7579).  As printed the translation of link 3's
+    centre of mass is counted twice (E-X-IPR-1); corrected once."""
+    m = masses(links)
+    rcd, rde, rab = links["RCD"], links["RDE"], links["RAB"]
+    vs4, _ = DSMVKT(kin["VD"], kin["ALD"], np.abs(kin["W4"]) * 0.3 * rde, kin["ALED"])
+    vs2, _ = DSMVKT(kin["VA"], kin["ALA"], np.abs(kin["W2"]) * rab / 2.0, kin["ALBA"])
+    w3 = kin["W3"]
+    twice = m["M3"] * (w3 * 0.15 * rcd)**2 if get_mode() == "as-printed" else 0.0
+    return (m["M5"] * kin["VE"]**2 + m["M4"] * vs4**2 + m["IS4"] * kin["W4"]**2 + twice
+            + (m["IS3"] + m["M3"] * (0.15 * rcd)**2) * w3**2 + m["M2"] * vs2**2
+            + m["IS2"] * kin["W2"]**2) / W1**2
+
+
+def dynamics(links: dict, kin: dict, fo: dict) -> dict:
+    """The equation of motion in energy form (DZKNDV, trapezoids), the flywheel (DMHVK)
+    and the motion with it (DZKNDV again), L7622-7633."""
+    ipr = reduced_inertia(links, kin)
+    is1 = fo["IS1"]
+    delta = DELTA_FLYWHEEL[get_mode()]
+    n = len(ipr)
+    stalls = False
+    try:
+        try:
+            d1 = sarkp.DZKNDV(n, float(n), W1, is1, fo["M1"], ipr)
+        except sarkp.RequirementError:
+            # corrected mode (E-DZKNDV-2): without a flywheel the crank's inertia alone
+            # cannot keep a steady motion at W1 -- the machine stalls, there is no WPR.
+            # DEC does not depend on ISC: take it from a run with a large one.
+            if get_mode() == "as-printed":
+                raise
+            stalls = True
+            d1 = sarkp.DZKNDV(n, float(n), W1, is1 + 1e6, fo["M1"], ipr)
+        imh = sarkp.DMHVK(n, delta, is1, W1, d1.DEC)
+        imh = float(imh[0] if isinstance(imh, tuple) else imh)
+        d2 = sarkp.DZKNDV(n, float(n), W1, is1 + imh, fo["M1"], ipr)
+    except SarkpError as exc:
+        raise StageError(f"program X, stage 'dynamics' (Fig. 96): {exc}") from exc
+    nan = np.full(n, np.nan)
+    return {"FI1": kin["FI1"], "IPR": ipr, "AS": d1.AS, "ASUM": d1.ASUM, "EV": d1.EV,
+            "DEC": d1.DEC, "WPR": nan if stalls else d1.WPR,
+            "EPR": nan if stalls else d1.EPR, "WPRM": d2.WPR, "EPRM": d2.EPR,
+            "IMH": imh, "DELTA": delta, "IS1": is1, "STALLS": stalls}
+
+
+TRAPEZOIDS = " ИСПОЛЬЗУЕТСЯ МЕТОД ТРАПЕЦИЙ"          # DINTGR's message, once per DZKNDV
+
+
+def render_dynamics(d: dict) -> str:
+    n = len(d["FI1"])
+    lines = [TRAPEZOIDS, TRAPEZOIDS,
+             fortran_write("(//1X,'РЕЗУЛЬТАТЫ РЕШЕНИЯ УРАВНЕНИЯ ДВИЖЕНИЯ'/8X,'МЕХАНИЗМА "
+                           "МАНИПУЛЯТОРА'/2X,'FI1',4X,'IPR',5X,'AS',4X,'ASUM',4X,'EV',5X,"
+                           "'DEC',3X,'WPR',5X,'EPR',2X,'WPRM',4X,'EPRM'/)")]
+    cols = ("FI1", "IPR", "AS", "ASUM", "EV", "DEC", "WPR", "EPR", "WPRM", "EPRM")
+    if d.get("STALLS"):     # corrected mode: no steady motion without the flywheel
+        lines += [fortran_write("(F6.3,5F7.1,A7,A8,F6.2,F8.2)",
+                                [d[c][i] for c in cols[:6]] + ["  stall", "   stall"]
+                                + [d["WPRM"][i], d["EPRM"][i]]) for i in range(n)]
+    else:
+        lines += [fortran_write("(F6.3,5F7.1,F7.2,F8.2,F6.2,F8.2)", [d[c][i] for c in cols])
+                  for i in range(n)]
+    lines.append(fortran_write("(//1X,'МОМЕНТ ИНЕРЦИИ МАХОВИКА - IMH = ',F7.2)",
+                               [d["IMH"]]))
+    return "\n".join(lines)
+
+
+# ---- running the program ---------------------------------------------------------------------
+
+def _cannot(stage: str, why: str) -> StageError:
+    return StageError(f"program X, stage '{stage}' (Fig. {STAGE_FIGURE[stage]}): {why}")
+
+
+def _check_routines(stage: str, needed_by: str | None = None) -> None:
+    missing = missing_routines(stage)
+    if missing:
+        chapter = ROUTINES[stage][1]
+        cause = (f"sarkp has no {', '.join(missing)} in this build (chapter {chapter} of "
+                 f"the library is not built yet)")
+        if needed_by:
+            raise _cannot(needed_by, f"needs the results of stage '{stage}' "
+                                     f"(Fig. {STAGE_FIGURE[stage]}), which cannot run: "
+                                     f"{cause}")
+        raise _cannot(stage, cause)
+
+
+def run(stages=None) -> dict:
+    """Run the stages ``stages`` (default: all, in the book's order) in the current
+    mode, with every stage they need; return ``{stage: results}`` for the stages run
+    (needed stages included).  A stage that cannot run raises :class:`StageError`."""
+    wanted = list(STAGES if stages is None else stages)
+    for s in wanted:
+        if s not in STAGES:
+            raise ValueError(f"program X has no stage {s!r}; stages: {', '.join(STAGES)}")
+    todo = [s for s in STAGES if s in wanted or any(s in NEEDS[w] for w in wanted)]
+    for s in todo:
+        for w in [w for w in wanted if s in NEEDS[w]] or [None]:
+            _check_routines(s, needed_by=w if s not in wanted else None)
+    done: dict = {}
+    for s in todo:
+        try:
+            if s == "synthesis":
+                done[s] = synthesis()
+            elif s == "teeth":
+                done[s] = teeth()
+            elif s == "gears":
+                done[s] = gears()
+            elif s == "cam":
+                done[s] = cam()
+            elif s == "kinematics":
+                done[s] = kinematics(done["synthesis"])
+            elif s == "forces":
+                done[s] = forces(done["synthesis"], done["kinematics"])
+            elif s == "dynamics":
+                done[s] = dynamics(done["synthesis"], done["kinematics"], done["forces"])
+        except StageError as exc:
+            users = [w for w in wanted if s in NEEDS[w]]
+            if s in wanted or not users:
+                raise
+            raise _cannot(users[0], f"needs the results of stage '{s}', which failed: "
+                                    f"{exc}") from exc
+    return done
+
+
+_RENDER = {"synthesis": render_synthesis, "teeth": render_teeth, "gears": render_gears,
+           "cam": render_cam, "kinematics": render_kinematics, "forces": render_forces,
+           "dynamics": render_dynamics}
+
+
+def render(stage: str | None = None) -> str:
+    """The program's printout in the book's layout: every stage that this build can run
+    (a note names the others and why), or one ``stage`` alone.  Everything is computed
+    before anything is returned, so a failure prints nothing."""
+    if stage is not None:
+        done = run([stage])
+        text = _RENDER[stage](done[stage])
+        if get_mode() == "corrected":
+            text += "\n\n" + corrected_report(done, [stage])
+        return text
+    runnable = [s for s in STAGES if available(s)]
+    done = run(runnable)
+    parts = []
+    for s in STAGES:
+        if s in done:
+            parts.append(_RENDER[s](done[s]))
+        else:
+            missing = missing_routines(s) or next(
+                missing_routines(n) for n in NEEDS[s] if missing_routines(n))
+            parts.append(f"[program X: stage '{s}' (Fig. {STAGE_FIGURE[s]}) not run: "
+                         f"sarkp has no {', '.join(missing)} in this build]")
+    text = "\n".join(parts)
+    if get_mode() == "corrected":
+        text += "\n\n" + corrected_report(done, runnable)
+    return text
+
+
+# ---- the figures as cells ----------------------------------------------------------------------
+
+def stage_cells(stage: str, results: dict) -> dict:
+    """The computed figure of ``stage`` as {(row, column): value}, keyed as in its data
+    file (data/fig<N>.csv)."""
+    out = {}
+    if stage == "synthesis":
+        s = results
+        for name, key in (("RCD", "RCD"), ("RDE", "RDE"), ("FICD", "FICD1"), ("ROA", "ROA"),
+                          ("RAB", "RAB"), ("ROC", "ROC")):
+            out[("1", name)] = float(s[key])
+    elif stage == "cam":
+        c = results
+        out[("RKSH", "RKSH")] = float(c["RKSH"])
+        for k in range(CAM_POINTS):
+            row = str(k + 1)
+            for name in ("FIK", "AT", "VT", "ST", "X", "Y", "RK", "DLT", "ROK"):
+                out[(row, name)] = float(c[name][k])
+            out[(row, "FIK_P")] = float(c["FIK"][k])
+    elif stage == "kinematics":
+        k = results
+        for i in range(len(k["FI1"])):
+            row = str(i + 1)
+            for name in ("FI1", "FI2", "FICB", "XE", "FIDE", "XB", "YB", "W2", "W3", "VE",
+                         "ALE", "W4", "E2", "E3", "E4", "AE", "BE"):
+                out[(row, name)] = float(k[name][i])
+            out[(row, "FI1_V")] = out[(row, "FI1_A")] = float(k["FI1"][i])
+    elif stage in ("forces", "dynamics"):
+        t = results
+        for i in range(len(t["FI1"])):
+            row = str(i + 1)
+            for name, v in t.items():
+                if isinstance(v, np.ndarray) and v.shape == t["FI1"].shape:
+                    out[(row, name)] = float(v[i])
+            if stage == "forces":
+                out[(row, "FI1_G")] = out[(row, "FI1")]
+        if stage == "dynamics":
+            out[("IMH", "IMH")] = float(t["IMH"])
+    elif stage == "teeth":
+        for n, (args, r) in enumerate(results["variants"], 1):
+            out[(str(n), "SHEMA")] = float(args["SHEMA"])
+            out[(str(n), "KS")] = float(args["KS"])
+            for name in ("Z1", "Z2", "Z3", "Z4"):
+                if r is not None:                   # no admissible set: nothing printed
+                    out[(str(n), name)] = float(getattr(r, name))
+    elif stage == "gears":
+        rename = {"ALFAW": "ALFA", "XY": "XU"}           # the printed names
+        for block, (args, r) in results.items():
+            for name, v in args.items():
+                if name != "AAA":
+                    out[(block, name)] = float(v)
+            for name, v in r._asdict().items():
+                out[(block, rename.get(name, name))] = float(v)
+        out[("DKRKT", "AL12")] = out[("DKRKT", "ALFA")]
+    return out
+
+
+def figure_cells(number: str) -> dict:
+    """Figure ``number`` of program X as computed, {(row, column): value}."""
+    stage = next(s for s, f in STAGE_FIGURE.items() if f == str(number))
+    return stage_cells(stage, run([stage])[stage])
+
+
+# ---- corrected mode: the design the task card asks for -------------------------------------
+
+def checks(done: dict) -> dict:
+    """Physical checks of a run (meant for corrected mode): the slider's stroke against
+    the card's 0.40 m, the coefficient of speed change realized against K = 1.1, the
+    swing of link 3 against DELTA, and the accelerations against central differences of
+    the velocities over a fine sweep (relative to each quantity's largest value)."""
+    out = {}
+    if "kinematics" in done:
+        links = done["synthesis"]
+        fine = np.linspace(0.0, 2.0 * math.pi, 3601)
+        k = kinematics(links, fine)
+        out["stroke"] = float(k["XE"].max() - k["XE"].min())
+        out["swing"] = float(k["FICB"].max() - k["FICB"].min())
+        # the working stroke: link 3 turning clockwise (W3 < 0, FS = 2000 N), between the
+        # two zeros of W3 (the rocker's extreme positions), interpolated on the sweep
+        w3 = k["W3"]
+        i = np.flatnonzero(np.sign(w3[:-1]) != np.sign(w3[1:]))
+        zeros = fine[i] - w3[i] * (fine[i + 1] - fine[i]) / (w3[i + 1] - w3[i])
+        if zeros.size != 2:
+            raise _cannot("kinematics", f"link 3 stops {zeros.size} times per turn, "
+                                        f"not twice: the mechanism is no crank-rocker")
+        inside = (zeros[1] - zeros[0]) / (2.0 * math.pi)
+        work = inside if w3[i[0] + 1] < 0.0 else 1.0 - inside
+        out["working_stroke_deg"] = 360.0 * work
+        out["K_realized"] = max(work, 1 - work) / min(work, 1 - work)
+        h = 1e-5
+        plus, minus = kinematics(links, fine + h), kinematics(links, fine - h)
+
+        def rel(a, b):
+            return float(np.max(np.abs(a - b)) / np.max(np.abs(b)))
+
+        def vex(t):
+            return t["VE"] * np.cos(t["ALE"])
+
+        def aex(t):
+            return t["AE"] * np.cos(t["BE"])
+        out["E2_vs_dW2/dt"] = rel(k["E2"], W1 * (plus["W2"] - minus["W2"]) / (2 * h))
+        out["E3_vs_dW3/dt"] = rel(k["E3"], W1 * (plus["W3"] - minus["W3"]) / (2 * h))
+        out["E4_vs_dW4/dt"] = rel(k["E4"], W1 * (plus["W4"] - minus["W4"]) / (2 * h))
+        out["AE_vs_dVE/dt"] = rel(aex(k), W1 * (vex(plus) - vex(minus)) / (2 * h))
+    if "forces" in done:
+        # virtual work (no inertia loads): the moment M1 of link 2's force on the crank
+        # about O times omega1 is the power of the loads, FS on 5 and the weights of 2-5;
+        # the points' velocities as central differences of their positions
+        links = done["synthesis"]
+        fine = np.linspace(0.0, 2.0 * math.pi, 721)[:-1]
+        h = 1e-6
+        k, kp, km = (kinematics(links, fine + d) for d in (0.0, h, -h))
+        fo = forces(links, k)
+        m = masses(links)
+        pi = book_pi()
+
+        def centres(t):
+            c3 = (t["XC"] + 0.15 * links["RCD"] * np.cos(t["FICB"] + pi),
+                  t["YC"] + 0.15 * links["RCD"] * np.sin(t["FICB"] + pi))
+            s4y = t["YD"] + 0.3 * links["RDE"] * np.sin(t["FIDE"])
+            s2y = t["YA"] + 0.5 * links["RAB"] * np.sin(t["FI2"])
+            return t["XE"], s2y, c3[1], s4y
+        (xe_p, s2_p, s3_p, s4_p), (xe_m, s2_m, s3_m, s4_m) = centres(kp), centres(km)
+        rate = W1 / (2.0 * h)
+        power = (-fo["FS"] * (xe_p - xe_m) * rate
+                 - G * (m["M2"] * (s2_p - s2_m) + m["M3"] * (s3_p - s3_m)
+                        + m["M4"] * (s4_p - s4_m)) * rate)      # slider 5 moves level
+        out["virtual_work"] = float(np.max(np.abs(fo["M1"] * W1 - power))
+                                    / np.max(np.abs(power)))
+    if "dynamics" in done:
+        d = done["dynamics"]
+        w = d["WPRM"]
+        out["delta_realized"] = float((w.max() - w.min()) / W1)
+    return out
+
+
+def corrected_report(done: dict, stages) -> str:
+    """Where the corrected design differs from the book's run, and its checks."""
+    with sarkp.as_printed():
+        book = run([s for s in stages if s in STAGES])
+        cb = checks(book)
+    c = checks(done)
+    lines = ["CORRECTED DESIGN (sarkp --mode corrected) AGAINST THE BOOK'S RUN",
+             f"  {'quantity':40s} {'corrected':>12} {'book':>12}"]
+
+    def row(name, ours, theirs, unit="", why=""):
+        lines.append(f"  {name:40s} {ours:>12} {theirs:>12} {unit:6s} {why}")
+    if "synthesis" in done:
+        s, b = done["synthesis"], book["synthesis"]
+        row("FICD1, angle of CD in position 1", f"{s['FICD1']:.4f}", f"{b['FICD1']:.4f}",
+            "rad", "E-X-FICD1-1")
+        for n in ("ROA", "RAB", "ROC"):
+            row(n, f"{s[n]:.4f}", f"{b[n]:.4f}", "m", "E-X-LINKS-1")
+    if "teeth" in done:
+        found = sum(r is not None for _, r in done["teeth"]["variants"])
+        row("teeth: DZBPL variants with a set", f"{found} of 8",
+            f"{sum(r is not None for _, r in book['teeth']['variants'])} of 8", "",
+            "E-DZBPL-4, E-FIG86-2")
+    if "gears" in done:
+        for block, name in (("DKRKT", "ALFAW"), ("DGMZPC", "AW"), ("DGMZVN", "AW")):
+            row(f"gears: {block} {name}", f"{getattr(done['gears'][block][1], name):.4f}",
+                f"{getattr(book['gears'][block][1], name):.4f}", "", "E-DUGINV-1")
+    if "cam" in done:
+        row("cam: working angle PI - BETA", f"{done['cam']['FIU'] / 0.4:.6f}",
+            f"{book['cam']['FIU'] / 0.4:.6f}", "rad", "E-PI-1")
+        row("cam: base radius RKSH", f"{done['cam']['RKSH']:.6f}",
+            f"{book['cam']['RKSH']:.6f}", "m", "E-PI-1")
+    if "kinematics" in done:
+        row("slider stroke (card: 0.40)", f"{c['stroke']:.4f}", f"{cb['stroke']:.4f}", "m")
+        row("swing of link 3 (card: 0.698)", f"{c['swing']:.4f}", f"{cb['swing']:.4f}",
+            "rad")
+        row("K realized (card: 1.1)", f"{c['K_realized']:.4f}", f"{cb['K_realized']:.4f}")
+        row("working stroke (cam: 171.43 deg)", f"{c['working_stroke_deg']:.2f}",
+            f"{cb['working_stroke_deg']:.2f}", "deg")
+        k, kb = done["kinematics"], book["kinematics"]
+        for n in ("E3", "E4", "AE"):
+            row(f"largest |{n}|", f"{np.abs(k[n]).max():.4f}",
+                f"{np.abs(kb[n]).max():.4f}", "", "E-DUSKR1-1; E-X-W4")
+        for n in ("E2", "E3", "E4", "AE"):
+            key = next(x for x in c if x.startswith(n + "_vs"))
+            row(f"{key}, relative", f"{c[key]:.1e}", f"{cb[key]:.1e}", "",
+                "accelerations against numerical derivatives of the velocities")
+    if "forces" in done:
+        row("M1 w1 against the loads' power, relative", f"{c['virtual_work']:.1e}",
+            f"{cb['virtual_work']:.1e}", "", "virtual work")
+    if "dynamics" in done:
+        d, db = done["dynamics"], book["dynamics"]
+        row("flywheel delta (card: 0.02)", f"{d['DELTA']:.2f}", f"{db['DELTA']:.2f}", "",
+            "E-X-DELTA-1")
+        row("delta realized with the flywheel", f"{c['delta_realized']:.4f}",
+            f"{cb['delta_realized']:.4f}")
+        row("steady motion without the flywheel", "stalls" if d["STALLS"] else "yes",
+            "stalls" if db["STALLS"] else "printed", "", "E-DZKNDV-2")
+        row("IMH", f"{d['IMH']:.2f}", f"{db['IMH']:.2f}", "kg m2", "E-X-IPR-1; E-X-DELTA-1")
+        row("largest IPR", f"{d['IPR'].max():.2f}", f"{db['IPR'].max():.2f}", "kg m2",
+            "E-X-IPR-1")
+    return "\n".join(lines)
+
+
+# ---- pictures --------------------------------------------------------------------------------
+
+def plots(directory, stage: str | None = None) -> list:
+    """Write the drawing-sheet pictures of the stages run (``stage``, or every stage this
+    build can run) as PNG files in ``directory``; return their paths.  Needs matplotlib.
+
+    kinematics: the mechanism in its positions, the velocity and the acceleration
+    diagrams; cam: the profile with the flat follower, the radius of curvature; forces:
+    the hodographs of the joint reactions; dynamics: the energy and the crank's angular
+    speed without and with the flywheel."""
+    from pathlib import Path
+
+    from .. import plot
+
+    stages = [stage] if stage else [s for s in STAGES if available(s)]
+    done = run(stages)
+    directory = Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    mode = get_mode()
+    written = []
+
+    def save(figure, name):
+        path = directory / name
+        plot.save(figure, path)
+        written.append(path)
+    if "kinematics" in stages:
+        k, s = done["kinematics"], done["synthesis"]
+        pts = {"O": (0.0, 0.0), "A": (k["XA"], k["YA"]), "B": (k["XB"], k["YB"]),
+               "C": (k["XC"], k["YC"]), "D": (k["XD"], k["YD"]), "E": (k["XE"], k["YE"])}
+        save(plot.mechanism(pts, [("O", "A"), ("A", "B"), ("B", "C", "D"), ("D", "E")],
+                            fixed=("O", "C"), guide=float(k["YE"][0]), every=3,
+                            paths=("A", "E"),
+                            title=f"Program X ({mode}): the mechanism every 30° of the "
+                                  f"crank\nROA {s['ROA']:.3f} m, RAB {s['RAB']:.3f} m, "
+                                  f"ROC {s['ROC']:.3f} m"),
+             "x_mechanism.png")
+        vex = k["VE"] * np.cos(k["ALE"])
+        save(plot.diagrams(k["FI1"], [
+            ("angular velocity, rad/s", {"ω2": k["W2"], "ω3": k["W3"], "ω4": k["W4"]}),
+            ("velocity of E, m/s", {"v_E (along x)": vex})],
+            title=f"Program X: velocities, ω1 = {W1:g} rad/s ({mode})"), "x_velocities.png")
+        aex = k["AE"] * np.cos(k["BE"])
+        save(plot.diagrams(k["FI1"], [
+            ("angular acceleration, rad/s²", {"ε2": k["E2"], "ε3": k["E3"], "ε4": k["E4"]}),
+            ("acceleration of E, m/s²", {"a_E (along x)": aex})],
+            title=f"Program X: accelerations ({mode}"
+                  + ("; E3 with E-DUSKR1-1, E4 and a_E with E-X-W4)" if mode == "as-printed"
+                     else ")")), "x_accelerations.png")
+    if "cam" in stages:
+        c = done["cam"]
+        save(plot.cam_profile(c["X"], c["Y"], c["FIK"], follower="flat",
+                              base_radius=c["RKSH"],
+                              title=f"Program X ({mode}): flat-faced follower,"
+                                    f" r0 = {c['RKSH']:.4f} m\nradius of curvature < 0 at "
+                                    f"{int(np.sum(c['ROK'] < 0))} of {CAM_POINTS} points: "
+                                    f"not convex (E-DPRFPL-1)"), "x_cam_profile.png")
+        save(plot.cam_diagrams(c["FIK"], c["ROK"],
+                               title=f"Program X: radius of curvature of the cam ({mode})"),
+             "x_cam_curvature.png")
+    if "forces" in stages and hasattr(plot, "reaction_hodograph"):
+        f = done["forces"]
+        for name, label in (("21", "A (F21)"), ("23", "B (F23)"), ("30", "C (F30)"),
+                            ("43", "D (F43)")):
+            save(plot.reaction_hodograph(f["F" + name], f["G" + name],
+                                         label=f"reaction at {label}",
+                                         title=f"Program X ({mode}): reaction at "
+                                               f"{label}, N"),
+                 f"x_hodograph_{name}.png")
+    if "dynamics" in stages:
+        d = done["dynamics"]
+        save(plot.diagrams(d["FI1"], [
+            ("work and energy, J", {"ΣA (ASUM)": d["ASUM"], "E of the links (EV)": d["EV"],
+                                    "ΔE (DEC)": d["DEC"]}),
+            ("reduced moment of inertia, kg·m²", {"J_pr (IPR)": d["IPR"]})],
+            title=f"Program X ({mode}): work, energy and reduced inertia"), "x_energy.png")
+        panels = [] if d["STALLS"] else [
+            ("ω without flywheel, rad/s", {"ω1 (WPR)": d["WPR"]})]
+        panels.append(("ω with flywheel, rad/s", {"ω1 (WPRM)": d["WPRM"],
+                                                  "mean speed W1": np.full(len(d["FI1"]), W1)}))
+        save(plot.diagrams(d["FI1"], panels,
+                           title=f"Program X ({mode}): angular speed of the crank\n"
+                                 f"flywheel IMH = {d['IMH']:.1f} kg·m² for δ = {d['DELTA']:g}"
+                                 + ("\nwithout the flywheel the machine stalls (E-DZKNDV-2)"
+                                    if d["STALLS"] else "")), "x_omega.png")
+    return written
