@@ -106,6 +106,70 @@ def _refs():
         lo = (l3 - h) / (1 + lam)
         return [lam * lo, lo, l3]
     R["DSNTZK"] = dsntzk
+
+    def circumcentre(p1, p2, p3):
+        # |B - p1| = |B - p2| = |B - p3|: two linear equations
+        m = mp.matrix([[2 * (p2[0] - p1[0]), 2 * (p2[1] - p1[1])],
+                       [2 * (p3[0] - p1[0]), 2 * (p3[1] - p1[1])]])
+        r = mp.matrix([p2[0]**2 + p2[1]**2 - p1[0]**2 - p1[1]**2,
+                       p3[0]**2 + p3[1]**2 - p1[0]**2 - p1[1]**2])
+        return mp.lu_solve(m, r)
+
+    def dsntzr(a):
+        lo, l3, fi1, fi3 = a
+        cs = []
+        for k in range(3):
+            d = M(fi1[0]) - M(fi1[k])
+            cs.append(M(lo[k]) * e(d) + M(l3) * e(M(fi3[k]) + d))
+        b = circumcentre(*cs)
+        return [norm(b), norm(cs[0] - b)]
+    R["DSNTZR"] = dsntzr
+
+    def crank_lengths(A, c1, c2):
+        ac1, ac2 = norm(c1 - A), norm(c2 - A)
+        l1 = (ac1 - ac2) / 2
+        return l1, ac1 - l1
+
+    def dsntz1(a):                                 # corrected mode (E-DSNTZ1-4)
+        kw3, f31, f32, l3, xd, q = map(M, a)
+        beta = mp.pi * (kw3 - 1) / (kw3 + 1)
+        D = pt(xd, 0)
+        c1, c2 = D + l3 * e(f31), D + l3 * e(f32)
+        S = (c1 + c2) / 2
+        h = norm(c2 - c1) / 2
+        E = S + h * mp.cot(beta) * (D - S) / norm(D - S)
+        r = norm(E - c1)
+        xa = E[0] + mp.sign(q or 1) * mp.sqrt(r**2 - E[1]**2)
+        l1, l2 = crank_lengths(pt(xa, 0), c1, c2)
+        return [l1, l2, abs(xd - xa)]
+    R["DSNTZ1"] = dsntz1
+
+    def dsntz2(a):
+        kw3, fi3, l3, xd, gmin, gmax = map(M, a)
+        beta = mp.pi * (kw3 - 1) / (kw3 + 1)
+        psi = beta + gmax - gmin
+        D = pt(xd, 0)
+        c1, c2 = D + l3 * e(fi3), D + l3 * e(fi3 + psi)
+        st = solve(e(fi3 - gmin), -e(fi3 + psi - gmax), c2 - c1)
+        A = c1 + st[0] * e(fi3 - gmin)
+        l1, l2 = crank_lengths(A, c1, c2)
+        return [l1, l2, norm(D - A), A[0], A[1]]
+    R["DSNTZ2"] = dsntz2
+
+    def dsntz3(a):                                 # corrected mode
+        xb1, yb1, xb2, yb2, xc1, yc1, xc2, yc2, fi1, alc1 = map(M, a)
+        b1, b2, c1, c2 = pt(xb1, yb1), pt(xb2, yb2), pt(xc1, yc1), pt(xc2, yc2)
+        fib = mp.atan2(b2[1] - b1[1], b2[0] - b1[0])
+        # A on the bisector of B1B2 (midpoint + s k x (B2 - B1)) and on the line through B1
+        # at FIB1B2 - pi/2 + FI1/2
+        mb = (b1 + b2) / 2
+        st = solve(kx(b2 - b1), -e(fib - mp.pi / 2 + fi1 / 2), b1 - mb)
+        A = mb + st[0] * kx(b2 - b1)
+        mc = (c1 + c2) / 2
+        st = solve(kx(c2 - c1), -e(alc1 + mp.pi / 2), c1 - mc)
+        D = mc + st[0] * kx(c2 - c1)
+        return [norm(A - b1), norm(c1 - D), norm(D - A)]
+    R["DSNTZ3"] = dsntz3
     R["DVKT"] = lambda a: [mp.hypot(M(a[2]) - M(a[0]), M(a[3]) - M(a[1])),
                            mp.atan2(M(a[3]) - M(a[1]), M(a[2]) - M(a[0]))]
     R["DMOMNT"] = lambda a: [M(a[0]) * M(a[2]) * mp.sin(M(a[3]) - M(a[1]))]
@@ -319,6 +383,14 @@ def _got(name, args, out):
         return list(o.FDIF)
     if name == "DSNTZK":
         return [o.L1, o.LO, o.L3]
+    if name == "DSNTZR":
+        return [o.L1, o.L2]
+    if name == "DSNTZ1":
+        return [o.L1, o.L2, o.LO]
+    if name == "DSNTZ2":
+        return [o.L1, o.L2, o.LO, o.XA, o.YA]
+    if name == "DSNTZ3":
+        return [o.L1, o.L3, o.LO]
     if name in ("DMOMNT", "DOMEGA"):
         return [o]
     if name == "DVKT":
