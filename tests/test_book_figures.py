@@ -1,14 +1,16 @@
 """The book's printed figures, from the package data, against the reproductions."""
 
+import math
 import subprocess
 import sys
 import tempfile
 
+import numpy as np
 import pytest
 
 import sarkp
 from sarkp import book
-from sarkp.book import figures
+from sarkp.book import figures, prog_ii_13
 from sarkp.cli import main
 
 
@@ -45,10 +47,108 @@ def test_fig4_last_angle_needs_the_es_evm_arithmetic():
 
 def test_fig4_velocity_columns_are_not_the_printed_ones():
     """W2, W3, VD came from wrong calls (E-II13-2/3): the right values differ."""
-    _, comparisons = diff("4", "as-printed")
+    _, comparisons = diff("4", "corrected")
     w3 = {c.cell.row: c for c in comparisons if c.cell.column == "W3"}
     assert not w3["1"].cell.reproducible
     assert abs(w3["1"].computed - w3["1"].cell.value) > 1.0     # -1.4286 vs -2.6180
+
+
+def _fig4_rows():
+    """Fig. 4's printed cells by row number and column (from the package data)."""
+    rows = {}
+    for cell in figures.load_figure("4").cells:
+        rows.setdefault(int(cell.row), {})[cell.column] = cell
+    return rows
+
+
+def test_fig4_printed_domega_calls_compute_sign_of_fi_over_l_E_II13_3():
+    """What the printed program computed for W2, W3: DOMEGA has three dummy arguments and
+    returns SIGN(VEKTOR/RAZMER, UGOL) (L648-660), and II.13 calls it as DOMEGA(L2, FI2,
+    VBA, ALBA) (L875-876), so W2 = SIGN(FI2/L2, VBA).  As-printed mode computes that."""
+    domega = [line for line in sarkp.listing("DOMEGA").splitlines()
+              if not line.startswith("C")]
+    assert "FUNCTION DOMEGA(RAZMER,VEKTOR,UGOL)" in domega[0]
+    assert [line.strip() for line in domega[1:3]] == ["A = VEKTOR/RAZMER",
+                                                      "DOMEGA = SIGN(A, UGOL)"]
+    program = sarkp.listing("II.13")
+    assert "W2 = DOMEGA(L2, FI2, VBA, ALBA)" in program
+    assert "W3 = DOMEGA(L3, FI3, VBC, ALBC)" in program
+    with sarkp.as_printed():
+        t = prog_ii_13.compute()
+    card = prog_ii_13.CARD
+    np.testing.assert_allclose(np.abs(t["W2"]), t["FI2"] / card["L2"], rtol=1e-15)
+    np.testing.assert_allclose(np.abs(t["W3"]), t["FI3"] / card["L3"], rtol=1e-15)
+
+
+def test_fig4_printed_w2_w3_magnitudes_are_the_printed_fi2_fi3_over_l2_l3():
+    """The figure itself: in every row |W2| and FI2/L2 (|W3| and FI3/L3), each known to half
+    a unit of its last printed digit, overlap (L2, L3 from the card, E-II13-7)."""
+    card = prog_ii_13.CARD
+    rows = _fig4_rows()
+    assert len(rows) == 18
+    for row in rows.values():
+        for w, fi, length in (("W2", "FI2", card["L2"]), ("W3", "FI3", card["L3"])):
+            half = 0.5 * row[w].unit
+            lo = (row[fi].value - 0.5 * row[fi].unit) / length
+            hi = (row[fi].value + 0.5 * row[fi].unit) / length
+            assert lo <= abs(row[w].value) + half and abs(row[w].value) - half <= hi
+
+
+def test_fig4_printed_signs_cannot_come_from_the_printed_listing_E_II13_3():
+    """ALA = DUGL1(FI1, PI/2., W1) reads a fourth argument that is not there (E-II13-1), but
+    X2 - X1 = W1 - FI1 > 0 in rows 1-12, so DUGL1 (L551-569) puts ALA in the right
+    half-plane whatever it reads.  Solving the listing's system (L860-866) with the
+    printed FI2, FI3 for every such ALA gives sign pairs (VBA, VBC) that never include the
+    printed signs of (W2, W3) in rows 4-8 and 12: the signs are not reproducible."""
+    rows = _fig4_rows()
+    pi, w1 = 3.14159, prog_ii_13.W1
+    impossible = []
+    for k in range(1, 19):
+        fi1 = (k - 1) * pi / 18.0
+        if w1 - fi1 <= 0.0:
+            continue
+        fi2, fi3 = rows[k]["FI2"].value, rows[k]["FI3"].value
+        seen = set()
+        for y2 in np.concatenate([-np.logspace(6, -6, 200), [0.0], np.logspace(-6, 6, 200)]):
+            ala = sarkp.DUGL1(fi1, pi / 2.0, w1, pi / 2.0 + y2)
+            assert math.cos(ala) >= -1e-12          # the right half-plane
+            a = [[math.cos(fi3 + pi / 2.0), -math.cos(fi2 + pi / 2.0)],
+                 [math.sin(fi3 + pi / 2.0), -math.sin(fi2 + pi / 2.0)]]
+            (vbc, vba), _ = sarkp.GELG([0.5 * math.cos(ala), 0.5 * math.sin(ala)], a, 2, 1,
+                                       0.0001)
+            seen.add((np.sign(vba), np.sign(vbc)))
+        printed = (np.sign(rows[k]["W2"].value), np.sign(rows[k]["W3"].value))
+        if printed not in seen:
+            impossible.append(k)
+    assert impossible == [4, 5, 6, 7, 8, 12]
+
+
+def test_fig4_row16_w3_is_on_a_rounding_edge_E_FIG4_5():
+    """Row 16: the printed |W3| = 5.2682 needs FI3 >= L3 * 5.26815; the printed FI3 = 2.1073
+    allows it, and as-printed mode's FI3 falls short of it by less than one unit of the
+    ES EVM's REAL*4 (16**-5 between 1 and 16): the machine's last bit decided the cell."""
+    row = _fig4_rows()[16]
+    card = prog_ii_13.CARD
+    need = card["L3"] * (abs(row["W3"].value) - 0.5 * row["W3"].unit)
+    assert abs(need - row["FI3"].value) <= 0.5 * row["FI3"].unit
+    with sarkp.as_printed():
+        fi3 = prog_ii_13.compute()["FI3"][15]
+    assert 0.0 < need - fi3 < 16.0 ** -5
+    assert not row["W3"].reproducible and "E-FIG4-5" in row["W3"].errata
+    left_out = [c for c in figures.load_figure("4").cells
+                if c.column in ("W2", "W3") and not c.magnitude]
+    assert [(c.row, c.column) for c in left_out] == [("16", "W3")]
+
+
+def test_fig4_diff_compares_w2_w3_in_magnitude(capsys):
+    assert main(["book", "diff", "4"]) == 0
+    out = capsys.readouterr().out
+    assert "35 printed cells compared in magnitude only" in out and ": 35 match" in out
+    assert "19 printed cells not reproducible" in out and "E-FIG4-5" in out
+    _, comparisons = diff("4", "as-printed")
+    signs = [c for c in comparisons if c.cell.magnitude]
+    assert len(signs) == 35 and all(c.matches for c in signs)
+    assert any(np.sign(c.computed) != np.sign(c.cell.value) for c in signs)
 
 
 def test_cli_diff_summary(capsys):
