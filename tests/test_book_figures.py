@@ -1,6 +1,7 @@
 """The book's printed figures, from the package data, against the reproductions."""
 
 import math
+import re
 import subprocess
 import sys
 import tempfile
@@ -207,3 +208,53 @@ def test_cli_version_and_help():
     assert done.returncode == 0 and done.stdout.strip() == f"sarkp {sarkp.__version__}"
     done = subprocess.run(_sarkp_command() + ["--help"], capture_output=True, text=True)
     assert "as printed by default" in " ".join(done.stdout.split())
+
+
+def test_gelg_es_evm_port_is_ssp_gelg():
+    """prog_ii_13's statement-by-statement GELG (IBM SSP), run in exact double arithmetic,
+    solves random systems as LAPACK does (column-major flat arrays, as in SSP)."""
+    rng = np.random.default_rng(14)
+    for m in (1, 2, 3, 5):
+        for _ in range(50):
+            a, r = rng.normal(size=(m, m)), rng.normal(size=m)
+            x = prog_ii_13._gelg_es_evm(list(r), list(a.flatten(order="F")), m, 1e-4, float)
+            exact = np.linalg.solve(a, r)
+            tol = 1e-13 * np.linalg.cond(a) * np.max(np.abs(exact))
+            np.testing.assert_allclose(x, exact, rtol=0, atol=tol)
+
+
+def test_ii13_single_and_es_evm_runs_are_the_program_in_lower_precision():
+    """The IEEE single run (sarkp.printed's routines) and the ES EVM emulation follow
+    as-printed mode to their precision; the emulation accumulates the crank angle exactly
+    as as-printed mode does (E-FIG4-4), and IEEE single's last angle prints 2.9671, as
+    E-FIG4-4 says."""
+    single, es = prog_ii_13.single(), prog_ii_13.emulate()
+    with sarkp.as_printed():
+        double = prog_ii_13.compute()
+        at_single_angles = prog_ii_13.compute(angles=single["FI"])
+    for name in prog_ii_13.COLUMNS[1:]:
+        scale = np.max(np.abs(double[name]))
+        # IEEE single: units of 6e-8, ES EVM REAL*4: of up to 16**-5 = 9.5e-7, truncating;
+        # some ten of them through the 20-odd operations of a row, times the conditioning
+        np.testing.assert_allclose(single[name], at_single_angles[name], rtol=0,
+                                   atol=1e-6 * scale)
+        np.testing.assert_allclose(es[name], double[name], rtol=0, atol=1e-5 * scale)
+    # as-printed FI sums DFI 17 times truncating (E-FIG4-4): at most 16**-5 per addition
+    np.testing.assert_allclose(single["FI"], double["FI"], rtol=0, atol=17 * 16.0**-5)
+    assert np.array_equal(es["FI"], double["FI"])
+    assert f"{single['FI'][17]:.4f}" == "2.9671"
+
+
+def test_readme_arithmetic_table_is_current():
+    """README.md's table of Fig. 4 under double, IEEE single and the ES EVM is the output
+    of prog_ii_13.arithmetic_table(); every cell an arithmetic misses is within a tenth of
+    a unit of the rounding edge, as the README says."""
+    from pathlib import Path
+    readme = Path(__file__).resolve().parents[1] / "README.md"
+    text = readme.read_text(encoding="utf-8")
+    start = text.index("<!-- prog_ii_13.arithmetic_table() -->\n") + 39
+    end = text.index("<!-- end of prog_ii_13.arithmetic_table() -->")
+    table = prog_ii_13.arithmetic_table()
+    assert text[start:end].strip() == table
+    misses = re.findall(r"\(([+-]\d\.\d\d)\)", table)
+    assert misses and all(0.5 < abs(float(u)) < 0.6 for u in misses)

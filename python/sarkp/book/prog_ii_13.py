@@ -143,33 +143,42 @@ def _columns(rows) -> dict:
     return {name: np.array([float(r[i]) for r in rows]) for i, name in enumerate(COLUMNS)}
 
 
+def _single(function):
+    """A library function of IEEE single precision: the exact value rounded to float32
+    (not numpy's float32 kernels, whose last bit depends on the CPU)."""
+    return lambda x: np.float32(function(float(x)))
+
+
 def single() -> dict:
     """Program II.13 in IEEE single precision: the printed routines DVKT, DUGL1, DUGL3,
     DOMEGA and DSMVKT (:mod:`sarkp.printed`, REAL as on the ES EVM), the main program's
-    own statements in numpy float32, and GELG as sarkp.printed calls it (sarkp's GELG on
-    the REAL arguments, its result rounded to REAL).  Returns the columns by name."""
+    own statements in float32 (its COS, SIN, ARCOS correctly rounded to single), and GELG
+    as sarkp.printed calls it (sarkp's GELG on the REAL arguments, its result rounded to
+    REAL).  The printed program itself cannot run (:func:`sarkp.printed.program`).
+    Returns the columns by name."""
     from .. import printed
     f = np.float32
+    cos, sin, arccos = (_single(math.cos), _single(math.sin), _single(math.acos))
     L1, L2, L3, LO, NU, LBD = (f(CARD[k]) for k in ("L1", "L2", "L3", "LO", "NU", "LBD"))
     w1, pi = f(2.0), f(3.14159)                                  # L837, L836
     dfi = pi / f(18.0)
     fi1, rows = -dfi, []
     for _ in range(18):
         fi1 = f(fi1 + dfi)
-        xa, ya = L1 * np.cos(fi1), L1 * np.sin(fi1)
+        xa, ya = L1 * cos(fi1), L1 * sin(fi1)
         lac, fiac = (f(v) for v in printed.DVKT(xa, ya, LO, 0.0))
-        delta = np.arccos((L2**2 + lac**2 - L3**2) / (f(2.0) * L2 * lac))
+        delta = arccos((L2**2 + lac**2 - L3**2) / (f(2.0) * L2 * lac))
         fi2 = fiac + delta
-        xb, yb = xa + L2 * np.cos(fi2), ya + L2 * np.sin(fi2)
+        xb, yb = xa + L2 * cos(fi2), ya + L2 * sin(fi2)
         fi3 = f(printed.DUGL1(LO, 0.0, xb, yb))
-        xd = xb + LBD * np.cos(fi2 + (pi - NU))
-        yd = yb + LBD * np.sin(fi2 + (pi - NU))
+        xd = xb + LBD * cos(fi2 + (pi - NU))
+        yd = yb + LBD * sin(fi2 + (pi - NU))
         va = abs(w1 * L1)
         ala = f(printed.DUGL3(fi1, pi / f(2.0), w1))               # E-II13-1 corrected
-        a = np.array([[np.cos(fi3 + pi / f(2.0)), -np.cos(fi2 + pi / f(2.0))],
-                      [np.sin(fi3 + pi / f(2.0)), -np.sin(fi2 + pi / f(2.0))]], dtype=f)
-        c = np.array([va * np.cos(ala), va * np.sin(ala)], dtype=f)
-        r, ier = GELG(c.astype(float), a.astype(float), 2, 1, float(f(0.0001)))
+        a = np.array([[cos(fi3 + pi / f(2.0)), -cos(fi2 + pi / f(2.0))],
+                      [sin(fi3 + pi / f(2.0)), -sin(fi2 + pi / f(2.0))]], dtype=f)
+        c = np.array([va * cos(ala), va * sin(ala)], dtype=f)
+        r, _ = GELG(c.astype(float), a.astype(float), 2, 1, float(f(0.0001)))
         vbc, vba = (f(v) for v in r)
         alba = f(printed.DUGL3(fi2, pi / f(2.0), vba))
         albc = f(printed.DUGL3(fi3, pi / f(2.0), vbc))
