@@ -124,6 +124,25 @@ def test_fig4_printed_signs_cannot_come_from_the_printed_listing_E_II13_3():
     assert impossible == [4, 5, 6, 7, 8, 12]
 
 
+def test_fig4_printed_vd_exceeds_every_vbc_the_listing_allows_E_II13_2():
+    """With LBD = 0 the printed VD is |VBC| (DSMVKT of VBC and a zero vector, L877-879).
+    Whatever ALA the garbage gave (E-II13-1), |VA| = 0.5 and the listing's system
+    (L860-866) bound |VBC|; rows 1, 10 and 18 print more than that bound."""
+    rows = _fig4_rows()
+    pi = 3.14159
+    too_big = []
+    for k, row in rows.items():
+        fi2, fi3 = row["FI2"].value, row["FI3"].value
+        a = [[math.cos(fi3 + pi / 2.0), -math.cos(fi2 + pi / 2.0)],
+             [math.sin(fi3 + pi / 2.0), -math.sin(fi2 + pi / 2.0)]]
+        largest = max(abs(sarkp.GELG([0.5 * math.cos(t), 0.5 * math.sin(t)], a, 2, 1,
+                                     0.0001)[0][0])
+                      for t in np.linspace(0.0, 2.0 * math.pi, 3601))
+        if row["VD"].value - 0.5 * row["VD"].unit > largest:
+            too_big.append(k)
+    assert too_big == [1, 10, 18]
+
+
 def test_fig4_row16_w3_is_on_a_rounding_edge_E_FIG4_5():
     """Row 16: the printed |W3| = 5.2682 needs FI3 >= L3 * 5.26815; the printed FI3 = 2.1073
     allows it, and as-printed mode's FI3 falls short of it by less than one unit of the
