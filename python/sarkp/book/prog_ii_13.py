@@ -12,7 +12,7 @@ positions and come out as round numbers (L1 = 0.25, L2 = 0.65, L3 = 0.40, LO = 0
 LBD = 0, so D coincides with B and NU does not matter).
 
 The printed program has three wrong calls (ERRATA E-II13-1..3): DUGL1 for DUGL3 at L859
-(VD depends on memory garbage), DOMEGA with four arguments at L875-876 (W2, W3 wrong),
+(ALA reads a missing argument), DOMEGA with four arguments at L875-876 (W2, W3 wrong),
 and the velocity of B passed to DSMVKT with its sign and its flipped direction both
 applied (E-II13-4).  Corrected mode fixes all of them.  As-printed mode keeps E-II13-4,
 on which the printed ALD column depends, keeps E-II13-3 (W2 = SIGN(FI2/L2, VBA),
@@ -338,7 +338,7 @@ def arithmetic_table() -> str:
     """Fig. 4's printed cells reproduced by the same statements in three arithmetics:
     as-printed mode (double precision), IEEE single precision (:func:`single`) and the
     ES EVM's (:func:`emulate`); a Markdown table of the cells within half a unit of the
-    last printed digit (W2, W3 in magnitude; VD is garbage, E-II13-2), then the cells
+    last printed digit (W2, W3 in magnitude; VD is not reproducible, E-II13-2), then the cells
     that differ.  The README's table is this function's output."""
     from . import figures
     from .. import as_printed
