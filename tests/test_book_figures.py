@@ -143,6 +143,16 @@ def test_fig4_printed_vd_exceeds_every_vbc_the_listing_allows_E_II13_2():
     assert too_big == [1, 10, 18]
 
 
+def test_fig4_printed_ald_is_fi3_plus_half_pi_whatever_ala_E_II13_4():
+    """As printed, v_B = VBC (cos ALBC, sin ALBC) with ALBC = FI3 + SIGN(PI/2, VBC) points
+    along FI3 + PI/2 for either sign of VBC (E-II13-4), so with LBD = 0 ALD = FI3 + PI/2
+    whatever the garbage ALA (E-II13-1) was: the figure's ALD and FI3 agree in every row,
+    which is why ALD is reproducible and VD is not."""
+    for row in _fig4_rows().values():
+        gap = row["ALD"].value - (row["FI3"].value + 3.14159 / 2.0)
+        assert abs(gap) <= 0.5 * row["ALD"].unit + 0.5 * row["FI3"].unit
+
+
 def test_fig4_row16_w3_is_on_a_rounding_edge_E_FIG4_5():
     """Row 16: the printed |W3| = 5.2682 needs FI3 >= L3 * 5.26815; the printed FI3 = 2.1073
     allows it, and as-printed mode's FI3 falls short of it by less than one unit of the

@@ -106,8 +106,8 @@ def compute(card=None, positions: int = 18, angles=None) -> dict:
     if printed:
         # E-II13-3 as printed (L875-876): DOMEGA(L2, FI2, VBA, ALBA).  DOMEGA reads three
         # arguments (L648-660), so ALBA is ignored and W2 = SIGN(FI2/L2, VBA): the
-        # magnitude FI2/L2 is what Fig. 4 prints; the sign is VBA's, and the printed run's
-        # VBA came from the garbage ALA of E-II13-1 (here: the corrected ALA).
+        # magnitude FI2/L2 is what Fig. 4 prints; the sign is VBA's, here from the
+        # corrected ALA (the printed signs are not reproducible, E-II13-3).
         w2 = DOMEGA(L2, fi2, vba)
         w3 = DOMEGA(L3, fi3, vbc)
     else:
