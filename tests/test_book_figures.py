@@ -1,14 +1,17 @@
 """The book's printed figures, from the package data, against the reproductions."""
 
+import math
+import re
 import subprocess
 import sys
 import tempfile
 
+import numpy as np
 import pytest
 
 import sarkp
 from sarkp import book
-from sarkp.book import figures
+from sarkp.book import figures, prog_ii_13
 from sarkp.cli import main
 
 
@@ -45,10 +48,137 @@ def test_fig4_last_angle_needs_the_es_evm_arithmetic():
 
 def test_fig4_velocity_columns_are_not_the_printed_ones():
     """W2, W3, VD came from wrong calls (E-II13-2/3): the right values differ."""
-    _, comparisons = diff("4", "as-printed")
+    _, comparisons = diff("4", "corrected")
     w3 = {c.cell.row: c for c in comparisons if c.cell.column == "W3"}
     assert not w3["1"].cell.reproducible
     assert abs(w3["1"].computed - w3["1"].cell.value) > 1.0     # -1.4286 vs -2.6180
+
+
+def _fig4_rows():
+    """Fig. 4's printed cells by row number and column (from the package data)."""
+    rows = {}
+    for cell in figures.load_figure("4").cells:
+        rows.setdefault(int(cell.row), {})[cell.column] = cell
+    return rows
+
+
+def test_fig4_printed_domega_calls_compute_sign_of_fi_over_l_E_II13_3():
+    """What the printed program computed for W2, W3: DOMEGA has three dummy arguments and
+    returns SIGN(VEKTOR/RAZMER, UGOL) (L648-660), and II.13 calls it as DOMEGA(L2, FI2,
+    VBA, ALBA) (L875-876), so W2 = SIGN(FI2/L2, VBA).  As-printed mode computes that."""
+    domega = [line for line in sarkp.listing("DOMEGA").splitlines()
+              if not line.startswith("C")]
+    assert "FUNCTION DOMEGA(RAZMER,VEKTOR,UGOL)" in domega[0]
+    assert [line.strip() for line in domega[1:3]] == ["A = VEKTOR/RAZMER",
+                                                      "DOMEGA = SIGN(A, UGOL)"]
+    program = sarkp.listing("II.13")
+    assert "W2 = DOMEGA(L2, FI2, VBA, ALBA)" in program
+    assert "W3 = DOMEGA(L3, FI3, VBC, ALBC)" in program
+    with sarkp.as_printed():
+        t = prog_ii_13.compute()
+    card = prog_ii_13.CARD
+    np.testing.assert_allclose(np.abs(t["W2"]), t["FI2"] / card["L2"], rtol=1e-15)
+    np.testing.assert_allclose(np.abs(t["W3"]), t["FI3"] / card["L3"], rtol=1e-15)
+
+
+def test_fig4_printed_w2_w3_magnitudes_are_the_printed_fi2_fi3_over_l2_l3():
+    """The figure itself: in every row |W2| and FI2/L2 (|W3| and FI3/L3), each known to half
+    a unit of its last printed digit, overlap (L2, L3 from the card, E-II13-7)."""
+    card = prog_ii_13.CARD
+    rows = _fig4_rows()
+    assert len(rows) == 18
+    for row in rows.values():
+        for w, fi, length in (("W2", "FI2", card["L2"]), ("W3", "FI3", card["L3"])):
+            half = 0.5 * row[w].unit
+            lo = (row[fi].value - 0.5 * row[fi].unit) / length
+            hi = (row[fi].value + 0.5 * row[fi].unit) / length
+            assert lo <= abs(row[w].value) + half and abs(row[w].value) - half <= hi
+
+
+def test_fig4_printed_signs_cannot_come_from_the_printed_listing_E_II13_3():
+    """ALA = DUGL1(FI1, PI/2., W1) reads a fourth argument that is not there (E-II13-1), but
+    X2 - X1 = W1 - FI1 > 0 in rows 1-12, so DUGL1 (L551-569) puts ALA in the right
+    half-plane whatever it reads.  Solving the listing's system (L860-866) with the
+    printed FI2, FI3 for every such ALA gives sign pairs (VBA, VBC) that never include the
+    printed signs of (W2, W3) in rows 4-8 and 12: the signs are not reproducible."""
+    rows = _fig4_rows()
+    pi, w1 = 3.14159, prog_ii_13.W1
+    impossible = []
+    for k in range(1, 19):
+        fi1 = (k - 1) * pi / 18.0
+        if w1 - fi1 <= 0.0:
+            continue
+        fi2, fi3 = rows[k]["FI2"].value, rows[k]["FI3"].value
+        seen = set()
+        for y2 in np.concatenate([-np.logspace(6, -6, 200), [0.0], np.logspace(-6, 6, 200)]):
+            ala = sarkp.DUGL1(fi1, pi / 2.0, w1, pi / 2.0 + y2)
+            assert math.cos(ala) >= -1e-12          # the right half-plane
+            a = [[math.cos(fi3 + pi / 2.0), -math.cos(fi2 + pi / 2.0)],
+                 [math.sin(fi3 + pi / 2.0), -math.sin(fi2 + pi / 2.0)]]
+            (vbc, vba), _ = sarkp.GELG([0.5 * math.cos(ala), 0.5 * math.sin(ala)], a, 2, 1,
+                                       0.0001)
+            seen.add((np.sign(vba), np.sign(vbc)))
+        printed = (np.sign(rows[k]["W2"].value), np.sign(rows[k]["W3"].value))
+        if printed not in seen:
+            impossible.append(k)
+    assert impossible == [4, 5, 6, 7, 8, 12]
+
+
+def test_fig4_printed_vd_exceeds_every_vbc_the_listing_allows_E_II13_2():
+    """With LBD = 0 the printed VD is |VBC| (DSMVKT of VBC and a zero vector, L877-879).
+    Whatever ALA the garbage gave (E-II13-1), |VA| = 0.5 and the listing's system
+    (L860-866) bound |VBC|; rows 1, 10 and 18 print more than that bound."""
+    rows = _fig4_rows()
+    pi = 3.14159
+    too_big = []
+    for k, row in rows.items():
+        fi2, fi3 = row["FI2"].value, row["FI3"].value
+        a = [[math.cos(fi3 + pi / 2.0), -math.cos(fi2 + pi / 2.0)],
+             [math.sin(fi3 + pi / 2.0), -math.sin(fi2 + pi / 2.0)]]
+        largest = max(abs(sarkp.GELG([0.5 * math.cos(t), 0.5 * math.sin(t)], a, 2, 1,
+                                     0.0001)[0][0])
+                      for t in np.linspace(0.0, 2.0 * math.pi, 3601))
+        if row["VD"].value - 0.5 * row["VD"].unit > largest:
+            too_big.append(k)
+    assert too_big == [1, 10, 18]
+
+
+def test_fig4_printed_ald_is_fi3_plus_half_pi_whatever_ala_E_II13_4():
+    """As printed, v_B = VBC (cos ALBC, sin ALBC) with ALBC = FI3 + SIGN(PI/2, VBC) points
+    along FI3 + PI/2 for either sign of VBC (E-II13-4), so with LBD = 0 ALD = FI3 + PI/2
+    whatever the garbage ALA (E-II13-1) was: the figure's ALD and FI3 agree in every row,
+    which is why ALD is reproducible and VD is not."""
+    for row in _fig4_rows().values():
+        gap = row["ALD"].value - (row["FI3"].value + 3.14159 / 2.0)
+        assert abs(gap) <= 0.5 * row["ALD"].unit + 0.5 * row["FI3"].unit
+
+
+def test_fig4_row16_w3_is_on_a_rounding_edge_E_FIG4_5():
+    """Row 16: the printed |W3| = 5.2682 needs FI3 >= L3 * 5.26815; the printed FI3 = 2.1073
+    allows it, and as-printed mode's FI3 falls short of it by less than one unit of the
+    ES EVM's REAL*4 (16**-5 between 1 and 16): the machine's last bit decided the cell."""
+    row = _fig4_rows()[16]
+    card = prog_ii_13.CARD
+    need = card["L3"] * (abs(row["W3"].value) - 0.5 * row["W3"].unit)
+    assert abs(need - row["FI3"].value) <= 0.5 * row["FI3"].unit
+    with sarkp.as_printed():
+        fi3 = prog_ii_13.compute()["FI3"][15]
+    assert 0.0 < need - fi3 < 16.0 ** -5
+    assert not row["W3"].reproducible and "E-FIG4-5" in row["W3"].errata
+    left_out = [c for c in figures.load_figure("4").cells
+                if c.column in ("W2", "W3") and not c.magnitude]
+    assert [(c.row, c.column) for c in left_out] == [("16", "W3")]
+
+
+def test_fig4_diff_compares_w2_w3_in_magnitude(capsys):
+    assert main(["book", "diff", "4"]) == 0
+    out = capsys.readouterr().out
+    assert "35 printed cells compared in magnitude only" in out and ": 35 match" in out
+    assert "19 printed cells not reproducible" in out and "E-FIG4-5" in out
+    _, comparisons = diff("4", "as-printed")
+    signs = [c for c in comparisons if c.cell.magnitude]
+    assert len(signs) == 35 and all(c.matches for c in signs)
+    assert any(np.sign(c.computed) != np.sign(c.cell.value) for c in signs)
 
 
 def test_cli_diff_summary(capsys):
@@ -106,3 +236,53 @@ def test_cli_version_and_help():
     assert done.returncode == 0 and done.stdout.strip() == f"sarkp {sarkp.__version__}"
     done = subprocess.run(_sarkp_command() + ["--help"], capture_output=True, text=True)
     assert "as printed by default" in " ".join(done.stdout.split())
+
+
+def test_gelg_es_evm_port_is_ssp_gelg():
+    """prog_ii_13's statement-by-statement GELG (IBM SSP), run in exact double arithmetic,
+    solves random systems as LAPACK does (column-major flat arrays, as in SSP)."""
+    rng = np.random.default_rng(14)
+    for m in (1, 2, 3, 5):
+        for _ in range(50):
+            a, r = rng.normal(size=(m, m)), rng.normal(size=m)
+            x = prog_ii_13._gelg_es_evm(list(r), list(a.flatten(order="F")), m, 1e-4, float)
+            exact = np.linalg.solve(a, r)
+            tol = 1e-13 * np.linalg.cond(a) * np.max(np.abs(exact))
+            np.testing.assert_allclose(x, exact, rtol=0, atol=tol)
+
+
+def test_ii13_single_and_es_evm_runs_are_the_program_in_lower_precision():
+    """The IEEE single run (sarkp.printed's routines) and the ES EVM emulation follow
+    as-printed mode to their precision; the emulation accumulates the crank angle exactly
+    as as-printed mode does (E-FIG4-4), and IEEE single's last angle prints 2.9671, as
+    E-FIG4-4 says."""
+    single, es = prog_ii_13.single(), prog_ii_13.emulate()
+    with sarkp.as_printed():
+        double = prog_ii_13.compute()
+        at_single_angles = prog_ii_13.compute(angles=single["FI"])
+    for name in prog_ii_13.COLUMNS[1:]:
+        scale = np.max(np.abs(double[name]))
+        # IEEE single: units of 6e-8, ES EVM REAL*4: of up to 16**-5 = 9.5e-7, truncating;
+        # some ten of them through the 20-odd operations of a row, times the conditioning
+        np.testing.assert_allclose(single[name], at_single_angles[name], rtol=0,
+                                   atol=1e-6 * scale)
+        np.testing.assert_allclose(es[name], double[name], rtol=0, atol=1e-5 * scale)
+    # as-printed FI sums DFI 17 times truncating (E-FIG4-4): at most 16**-5 per addition
+    np.testing.assert_allclose(single["FI"], double["FI"], rtol=0, atol=17 * 16.0**-5)
+    assert np.array_equal(es["FI"], double["FI"])
+    assert f"{single['FI'][17]:.4f}" == "2.9671"
+
+
+def test_readme_arithmetic_table_is_current():
+    """README.md's table of Fig. 4 under double, IEEE single and the ES EVM is the output
+    of prog_ii_13.arithmetic_table(); every cell an arithmetic misses is within a tenth of
+    a unit of the rounding edge, as the README says."""
+    from pathlib import Path
+    readme = Path(__file__).resolve().parents[1] / "README.md"
+    text = readme.read_text(encoding="utf-8")
+    start = text.index("<!-- prog_ii_13.arithmetic_table() -->\n") + 39
+    end = text.index("<!-- end of prog_ii_13.arithmetic_table() -->")
+    table = prog_ii_13.arithmetic_table()
+    assert text[start:end].strip() == table
+    misses = re.findall(r"\(([+-]\d\.\d\d)\)", table)
+    assert misses and all(0.5 < abs(float(u)) < 0.6 for u in misses)

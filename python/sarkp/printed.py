@@ -50,7 +50,8 @@ def excluded() -> dict[str, str]:
 def program(name: str):
     """The book's main program NAME (``"II.13"``) as printed.  None of the seven can run as
     printed: this raises :class:`PrintedCodeError` with the reason (sarkp runs the programs
-    in Python: ``sarkp book run``)."""
+    in Python: ``sarkp book run``; :func:`sarkp.book.prog_ii_13.single` runs II.13's
+    statements in single precision through this module's routines)."""
     item = listings._find(name)
     if item.kind != "program":
         raise ValueError(f"{name} is a routine, not a program: sarkp.printed.{item.name}")
