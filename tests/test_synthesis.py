@@ -420,9 +420,20 @@ def test_dsntzr_sweep_matches_scalar():
 
 # ---- DSNTZ1: extreme positions and KW3 --------------------------------------------
 
+def reconstruction_scale(l1, l2, lo, l3):
+    """How much the test's own reconstruction amplifies one rounding of the lengths.
+    Positions are rebuilt from lengths up to max(L1, L2, LO): an angle at the rocker is
+    off by (their rounding) / L3.  The folded position is rebuilt from L2 - L1, which
+    cancels when the crank and the coupler are nearly equal: by L2 / (L2 - L1) more."""
+    size = max(1.0, max(l1, l2, lo) / l3)
+    return size * max(1.0, l2 / (l2 - l1))
+
+
 def _dsntz1_check(kw3, f31, f32, l3, xd, q):
     """Synthesize, recover the pivot from the lengths, move the mechanism: errors of
-    the two extreme rocker angles and of the coefficient of speed change."""
+    the two extreme rocker angles and of the coefficient of speed change, each divided
+    by what the reconstruction itself amplifies (``reconstruction_scale``; the
+    coefficient, from the crank angles of the two stops, once more)."""
     try:
         r = DSNTZ1(kw3, f31, f32, l3, xd, q)
     except RequirementError:
@@ -434,7 +445,8 @@ def _dsntz1_check(kw3, f31, f32, l3, xd, q):
     A = pivot_from(C1, C2, r.L1, r.L2, D, r.LO, on_x=True)
     assert abs(A[1]) < TOL
     errs, *_ = check_crank_rocker(A, D, r.L1, r.L2, l3, C1, f31, f32, kw3)
-    return errs
+    k = reconstruction_scale(r.L1, r.L2, r.LO, l3)
+    return errs[0] / k, errs[1] / k, errs[2] / k**2
 
 
 dsntz1_inputs = dict(kw3=st.floats(1.05, 3.0), f31=angles, swing=st.floats(0.2, 2.5),
@@ -509,12 +521,13 @@ def test_dsntz2_meets_its_requirements(kw3, fi3, l3, xd, gmin, dg):
     C1 = (xd + l3 * math.cos(fi3), l3 * math.sin(fi3))
     C2 = (xd + l3 * math.cos(fi3 + psi), l3 * math.sin(fi3 + psi))
     A = pivot_from(C1, C2, r.L1, r.L2, D, r.LO)
-    assert math.hypot(A[0] - r.XA, A[1] - r.YA) < TOL
+    k = reconstruction_scale(r.L1, r.L2, r.LO, l3)   # L1 close to L2: a near lock-up
+    assert math.hypot(A[0] - r.XA, A[1] - r.YA) < TOL * k
     errs, fb, t1, t2 = check_crank_rocker(A, D, r.L1, r.L2, l3, C1, fi3, fi3 + psi, kw3)
-    assert max(errs) < TOL, errs
+    assert errs[0] < TOL * k and errs[1] < TOL * k and errs[2] < TOL * k**2, errs
     # transmission angle BCD: GMIN stretched out, GMAX folded
-    assert abs(angle_at(fb.B(t1), fb.C(t1), D) - gmin) < TOL
-    assert abs(angle_at(fb.B(t2), fb.C(t2), D) - gmax) < TOL
+    assert abs(angle_at(fb.B(t1), fb.C(t1), D) - gmin) < TOL * k
+    assert abs(angle_at(fb.B(t2), fb.C(t2), D) - gmax) < TOL * k
 
 
 def test_dsntz2_bad_input():
