@@ -34,13 +34,56 @@ DIFFERS = {
     "DNMAF4": ({"E-DNMAF4-2"}, {"F23", "G23", "F34", "G34", "H34"}),
     "DNMA4": ({"E-DNMA4-1"}, {"HC"}),
     "DKNMA5": ({"E-DKNMA5-2", "E-DKNMA5-4"}, set(sarkp.DKNMA5.spec.outputs)),
+    # AW = 0 only (GEARS): DUGINV's TCHNST and X1 of SDVIG = 2; test_printed_dkrkt_* pins both
+    "DKRKT": ({"E-DKRKT-2", "E-DKRKT-3"}, {"X1", "X2", "ALFAW"}),
+    "DGMTZK": ({"E-DGMTZK-1"}, {"SA"}),
+    # AW (and XY, XUR and through them the tip circles of E) from the misplaced parenthesis
+    "DGMZPC": ({"E-DGMZPC-2"}, {"AW", "XY", "XUR", "E"}),
 }
 #: Routines whose printed formulation is worse conditioned than sarkp's (the tolerance
 #: is scaled by sarkp's conditioning, not the printed code's), with the ERRATA row.
 LOOSER = {"DSNTZ1": ("E-SYN-1", 1e-4)}
 
 
+def _teeth(rng, low=8, high=100):
+    return float(rng.integers(low, high + 1))
+
+
+def _worm(rng):
+    m, q, z2 = rng.uniform(1.0, 10.0), rng.uniform(7.0, 20.0), _teeth(rng, 20, 100)
+    return {"M": m, "Q": q, "Z1": float(rng.integers(1, 5)), "Z2": z2,
+            "AW": m * (0.5 * (z2 + q) + rng.uniform(-1.0, 1.0)), "AAA": 1.0}
+
+
+#: Chapter 6 draws inputs of its own domain: whole tooth numbers, a module M (a count
+#: elsewhere), shifts and helix angles of gear practice, a worm's diameter factor Q.
+#: DKRKT with AW = 0 only: with AW != 0 the printed code has no value (E-DKRKT-1, pinned
+#: by test_printed_dkrkt_differs_by_its_errata_only).
+GEARS = {
+    "DUGINV": lambda rng: {"INVX": rng.uniform(0.0, 0.3), "XNACH": rng.uniform(0.0, 1.0),
+                           "TCHNST": 10.0 ** rng.uniform(-5.0, -3.0)},
+    "DKRKT": lambda rng: {"M": rng.uniform(1.0, 10.0), "Z1": _teeth(rng), "Z2": _teeth(rng),
+                          "AW": 0.0, "SDVIG": int(rng.integers(1, 4)), "AAA": 1.0},
+    "DGMTZK": lambda rng: {"M": rng.uniform(1.0, 10.0), "Z": _teeth(rng),
+                           "BETA": rng.uniform(0.0, 0.6), "X": rng.uniform(-0.5, 1.0),
+                           "AAA": 1.0},
+    "DGMZPC": lambda rng: {"M": rng.uniform(1.0, 10.0), "Z1": _teeth(rng), "Z2": _teeth(rng),
+                           "BETA": rng.uniform(0.0, 0.6), "X1": rng.uniform(-0.5, 1.0),
+                           "X2": rng.uniform(-0.5, 1.0), "BW": rng.uniform(0.0, 100.0),
+                           "AAA": 1.0},
+    "DCHRVC": _worm,
+}
+
+
+def single(v):
+    """The same single-precision numbers for both, so only the arithmetic differs."""
+    return np.float32(v).astype(float) if isinstance(v, np.ndarray) else (
+        float(np.float32(v)) if isinstance(v, float) else v)
+
+
 def sample(spec, rng):
+    if spec.name in GEARS:
+        return {a: single(v) for a, v in GEARS[spec.name](rng).items()}
     values = {}
     for a in spec.inputs:
         if a == "AAA":
@@ -67,9 +110,7 @@ def sample(spec, rng):
             v = rng.uniform(-2, 2, 7)
         else:
             v = float(rng.uniform(-2, 2))
-        # the same single-precision numbers for both, so only the arithmetic differs
-        values[a] = np.float32(v).astype(float) if isinstance(v, np.ndarray) else (
-            float(np.float32(v)) if isinstance(v, float) else v)
+        values[a] = single(v)
     return values
 
 
@@ -88,7 +129,8 @@ def conditioning(f, spec, x, y):
     """sum_i |d y / d x_i| |x_i| from sarkp's own finite differences (double precision)."""
     s = [np.zeros_like(o) for o in y]
     for a in spec.inputs:
-        if a in ("AAA", "P", "Q", "ANALOG", "NOMER", "M", "ZM"):
+        if a in ("AAA", "ANALOG", "NOMER", "ZM", "SDVIG") or (
+                a in ("P", "Q", "M") and spec.name not in GEARS):
             continue
         v = x[a]
         for j in range(np.size(v)):        # each element of a table on its own
@@ -215,3 +257,38 @@ def test_cli_book_run_printed_says_why():
                        capture_output=True, text=True)
     assert r.returncode == 2 and r.stdout == ""
     assert "E-II13-1" in r.stderr and len(r.stderr.strip().splitlines()) == 1
+
+
+def test_printed_dkrkt_differs_by_its_errata_only():
+    """The printed DKRKT is sarkp's as-printed DKRKT but for three rows that as-printed mode
+    does not keep: ARCOS of a number above 1 whenever AW != 0 (E-DKRKT-1: gfortran's ACOS
+    gives NaN where the ES EVM stopped), X1 = 1/(1 + 0.086 (Z1 - 19))**2 for SDVIG = 2
+    (E-DKRKT-2), and DUGINV's TCHNST = 0.000001 (E-DKRKT-3)."""
+    pi = 3.14159                                          # the listing's PI (L4061)
+    rng = np.random.default_rng(6)
+    seen, n = set(), 0
+    for _ in range(400):
+        x = sample(sarkp.DKRKT.spec, rng)
+        try:
+            y = as_printed(sarkp.DKRKT, x)
+        except Exception:
+            continue                                      # inputs sarkp refuses
+        n += 1
+        m, z1, z2, sdvig = x["M"], x["Z1"], x["Z2"], x["SDVIG"]
+        x1, x2 = y[0][0], y[1][0]
+        if sdvig == 2 and z1 <= 19.0:                     # the printed parentheses
+            x1 = 1.0 / (1.0 + 0.086 * (z1 - 19.0)) ** 2
+            x2 = -x1
+            seen.add("E-DKRKT-2")
+        inv = (x1 + x2) / (z1 + z2) * 2.0 * math.tan(pi / 9.0) + math.tan(pi / 9.0) - pi / 9.0
+        with sarkp.as_printed():
+            alfaw = sarkp.DUGINV(inv, pi / 18.0, 0.000001)  # the listing's tolerance
+        seen.add("E-DKRKT-3") if abs(alfaw - y[2][0]) > 1e-5 else None
+        r = P.DKRKT(**x)
+        assert r.X1 == pytest.approx(x1, rel=TOL, abs=TOL)
+        assert r.X2 == pytest.approx(x2, rel=TOL, abs=TOL)
+        assert r.ALFAW == pytest.approx(alfaw, rel=TOL), x
+        # any AW != 0: the printed ARCOS(0.5*ZS*COS(ALFAO)) has an argument above 7 (ZS >= 16)
+        aw = 0.5 * m * (z1 + z2) * rng.uniform(1.0, 1.2)
+        assert np.isnan(P.DKRKT(**{**x, "AW": aw}).ALFAW)
+    assert n >= 50 and seen == {"E-DKRKT-2", "E-DKRKT-3"}, (n, seen)

@@ -13,6 +13,8 @@ their f2py signatures for the extension ``sarkp._printed``.
 * Types are the listing's: REAL (single precision) by FORTRAN's implicit rule unless the
   listing declares otherwise; INTEGER for I-N.  Which arguments are inputs and which are
   outputs comes from sarkp's routine (its ``intent``), since the book's FORTRAN does not say.
+* COMMON results (the chapter module's ``!sarkp common:`` lines) are read from the
+  listing's one COMMON block, word by word, which f2py exposes (``_printed.zpc.a``).
 * FORMAT statements only lay out the printer's output, which sarkp.printed discards; their
   texts (Cyrillic Hollerith constants whose counts were set for the ES EVM's one-byte
   characters) become ``FORMAT(1X, (8G15.7))`` for the compiler.  Nothing else is changed.
@@ -74,8 +76,29 @@ def modern_interfaces(paths) -> dict[str, dict]:
                     info["intent"][item[0].upper()] = d.group(2).lower()
                     if item[1]:
                         info["dims"][item[0].upper()] = [x.strip() for x in item[1][1:-1].split(",")]
+            # COMMON results: the names before "=>" of the "!sarkp common:" lines, in order
+            info["common"] = [c.split("=>")[0].strip().upper()
+                              for line in re.findall(r"^\s*!sarkp common:(.*)$", body, re.M)
+                              for c in line.split(",") if c.strip()]
             found[name] = info
     return found
+
+
+def common_block(name: str, stmts, results: list[str], types: dict[str, str]) -> list[str]:
+    """f2py's view of the listing's COMMON block that holds sarkp's COMMON results (by
+    position, as COMMON associates storage; the listing's names and types)."""
+    blocks = [m for m in (re.match(r"^(?:\d+\s+)?COMMON\s*/\s*(\w+)\s*/\s*(.*)$", s, re.I)
+                          for s, _ in stmts) if m]
+    if len(blocks) != 1:
+        sys.exit(f"gen_printed: {name} returns COMMON results but its listing has "
+                 f"{len(blocks)} COMMON statements (one expected)")
+    block, members = blocks[0].group(1).lower(), [
+        a.strip().upper() for a in blocks[0].group(2).split(",") if a.strip()]
+    if len(members) != len(results):
+        sys.exit(f"gen_printed: the printed COMMON /{block.upper()}/ of {name} has "
+                 f"{len(members)} words; sarkp returns {len(results)} COMMON results")
+    return [f"      {implicit(a, types)} :: {a.lower()}" for a in members] + [
+        f"      common /{block}/ {', '.join(a.lower() for a in members)}"]
 
 
 def prepare(text: str) -> str:
@@ -126,6 +149,8 @@ def main(out_f: str, out_pyf: str, listings: str, *chapters: str) -> None:
             shape = f", dimension({', '.join(d.lower() for d in dims)})" if dims else ""
             lines.append(f"      {implicit(a, types)}{shape}, intent({info['intent'].get(a, 'in')})"
                          f" :: {a.lower()}")
+        if info["common"]:
+            lines.extend(common_block(name, stmts, info["common"], types))
         lines.append(f"    end {kind} {name.lower()}")
         sigs.append("\n".join(lines))
     sigs.append("    subroutine prinit(devnull)\n      character*(*), intent(in) :: devnull\n"

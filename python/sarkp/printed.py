@@ -10,7 +10,8 @@ and a scratch file.
 
 Each routine takes sarkp's Python signature (``sarkp.printed.DPRM1(XA, YA, XC, YC, RZ2,
 RZ3, P, AAA=1.0)``) and returns the same named tuple (a FUNCTION, a float), computed by the
-printed code: scalars only, no checks, no errors; whatever the printed code does with bad
+printed code (COMMON results: the words of the listing's COMMON block, in order):
+scalars only, no checks, no errors; whatever the printed code does with bad
 input, it does here.  A routine whose printed code cannot run as printed raises
 :class:`PrintedCodeError` saying why (``listings/printed.csv``).
 """
@@ -20,6 +21,7 @@ from __future__ import annotations
 import csv
 import io
 import os
+import re
 from importlib import resources
 
 import numpy as np
@@ -71,6 +73,11 @@ def _make(name: str):
     fortran = getattr(_printed, name.lower())
     inputs = [a for a in spec.inputs]
     aaa = "AAA" in inputs
+    # COMMON results: the words of the listing's COMMON block, in order (gen_printed.py)
+    block = re.search(r"^ {6}COMMON\s*/\s*(\w+)\s*/(.*(?:\n {5}\S.*)*)",
+                      listings._find(name).text(), re.M)
+    words = [w.strip().lower() for w in re.sub(r"\n {5}\S", "", block.group(2)).split(",")
+             ] if block else []
 
     def routine(*args, **kwargs):
         if aaa and len(args) == len(inputs) - 1 and "AAA" not in kwargs:
@@ -90,7 +97,10 @@ def _make(name: str):
         out = fortran(**call)
         if spec.function:
             return float(out)
-        out = out if isinstance(out, tuple) else (out,)
+        out = out if isinstance(out, tuple) else () if out is None else (out,)
+        if len(out) < len(spec.outputs):
+            common = getattr(_printed, block.group(1).lower())
+            out = out + tuple(getattr(common, w) for w in words)
         return spec.result(*[np.array(o, dtype=float) if np.ndim(o) else float(o)
                              for o in out])
 
