@@ -261,8 +261,8 @@ def test_cli_book_run_printed_says_why():
 
 def test_printed_dkrkt_differs_by_its_errata_only():
     """The printed DKRKT is sarkp's as-printed DKRKT but for three rows that as-printed mode
-    does not keep: ARCOS of a number above 1 whenever AW != 0 (E-DKRKT-1: gfortran's ACOS
-    gives NaN where the ES EVM stopped), X1 = 1/(1 + 0.086 (Z1 - 19))**2 for SDVIG = 2
+    does not keep: ARCOS of a number above 1 whenever AW != 0 (E-DKRKT-1: outside its
+    domain; gfortran's ACOS gives NaN), X1 = 1/(1 + 0.086 (Z1 - 19))**2 for SDVIG = 2
     (E-DKRKT-2), and DUGINV's TCHNST = 0.000001 (E-DKRKT-3)."""
     pi = 3.14159                                          # the listing's PI (L4061)
     rng = np.random.default_rng(6)
