@@ -40,6 +40,19 @@ DIFFERS = {
     # AW (and XY, XUR and through them the tip circles of E) from the misplaced parenthesis
     "DGMZPC": ({"E-DGMZPC-2"}, {"AW", "XY", "XUR", "E"}),
 }
+def _involute_dgmzpc(x):
+    """DGMZPC's INVALW (L4430) as printed, PI = 3.14159."""
+    a = 3.14159 / 9.0
+    at = math.atan(math.tan(a) / math.cos(x["BETA"]))
+    return 2.0 * (x["X1"] + x["X2"]) * math.tan(a) / (x["Z1"] + x["Z2"]) + math.tan(at) - at
+
+
+#: Outputs that are an iterate of DUGINV's X = ATAN(X + INVX) (L4209-4215), with the INVX:
+#: the printed code (single precision) and as-printed mode (double) may stop one step apart,
+#: since the stop test compares a difference of two iterates with TCHNST (E-DUGINV-1), so
+#: the iterate before or after as-printed mode's is accepted too.
+ITERATES = {("DUGINV", "DUGINV"): lambda x: x["INVX"], ("DGMZPC", "ALFAW"): _involute_dgmzpc}
+
 #: Routines whose printed formulation is worse conditioned than sarkp's (the tolerance
 #: is scaled by sarkp's conditioning, not the printed code's), with the ERRATA row.
 LOOSER = {"DSNTZ1": ("E-SYN-1", 1e-4)}
@@ -173,9 +186,13 @@ def test_printed_code_agrees_with_as_printed_mode(name):
     differed = set()
     for x, y, yp, cond in comparisons(name, seed=sum(map(ord, name))):
         for k, out in enumerate(spec.outputs):
-            err = np.abs(yp[k] - y[k])
+            bound = tol * (cond[k] + np.max(np.abs(y[k]))) + 1e-12
             # a table's elements come from running sums: its largest value scales them all
-            ok = np.all(err <= tol * (cond[k] + np.max(np.abs(y[k]))) + 1e-12)
+            ok = np.all(np.abs(yp[k] - y[k]) <= bound)
+            if (name, out) in ITERATES and not ok:       # one step of DUGINV apart
+                v = ITERATES[name, out](x)
+                ok = any(np.all(np.abs(yp[k] - c) <= bound)
+                         for c in (np.arctan(y[k] + v), np.tan(y[k]) - v))
             if out in changed:
                 differed.update([out] if not ok else [])
                 continue
