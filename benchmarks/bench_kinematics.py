@@ -701,8 +701,14 @@ def main():
     with concurrent.futures.ThreadPoolExecutor(2) as pool:
         wall = time.perf_counter
         t1 = best(lambda: fourbar_dknma(big, 3, _NP), repeat=3, timer=wall)
-        t2 = best(lambda: list(pool.map(lambda h: fourbar_dknma(h, 3, _NP), halves)),
-                  repeat=3, timer=wall)
+        two = lambda: list(pool.map(lambda h: fourbar_dknma(h, 3, _NP), halves))  # noqa: E731
+        t2 = best(two, repeat=3, timer=wall)
+        c0, w0 = time.process_time(), wall()
+        two()
+        cores = (time.process_time() - c0) / (wall() - w0)
+    notes.append(f"fourbar: 2 threads x 2 chunks of {N_BIG} positions kept {cores:.2f} cores "
+                 f"busy (CPU time / wall time of one run); load average "
+                 f"{os.getloadavg()[0]:.2f} then")
     add(mech, f"sarkp DKNMA1, 10^{round(math.log10(N_BIG))} positions, one call (wall)",
         "full", t1 / N_BIG, n=N_BIG)
     add(mech, "the same, 2 threads x 2 chunks (wall)", "full", t2 / N_BIG, n=N_BIG)
@@ -951,6 +957,10 @@ def plot(curves):
         n, t = zip(*pts)
         style = "-o" if label.startswith("sarkp") else ("-s" if label.startswith("C") else "--^")
         ax.plot(n, np.array(t) * 1e9, style, label=label, ms=4)
+    c = curves.get("C loop (fourbar.c), full")
+    if c:
+        n, t = zip(*c)
+        ax.plot(n, 3e9 * np.array(t), ":", color="C0", label="target: 3x the C loop")
     ax.set_xscale("log")
     ax.set_yscale("log")
     ax.set_xlabel("positions per call (n)")
