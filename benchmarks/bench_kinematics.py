@@ -9,17 +9,27 @@ Two mechanisms, both driven by a crank at constant omega1 (corrected mode, exact
   D = C + RCD*e(FICB + pi), then the RRP group D-E with the slider E on a horizontal
   guide (DPRM2/DSKOR2/DUSKR2, or DKNMA2).
 
-Paths timed, per crank position:
+Paths timed (issue 9), per crank position unless stated:
 
-1. the sarkp array path: one call per routine over all positions (``split`` =
-   DPRM/DSKOR/DUSKR, ``dknma`` = DKNMA), and the raw f2py sweeps for the four-bar;
-2. a Python loop of scalar sarkp calls (on ``N_SCALAR`` positions);
-3. the same Fortran routines driven by a pure-Fortran loop (``fortran_driver.f90``,
-   compiled here with gfortran -O3 -llapack in a temporary directory);
-4. the peers, installed only in the benchmark's own venv (never project dependencies):
-   pylinkage (closed-form dyads; its numba kernel ``step_fast_with_kinematics`` and its
-   Python-level ``step_with_derivatives``) and mechanism (loop equations with fsolve);
-5. positions only and positions + velocities (DKNMA's ANALOG = 1) against the full cost.
+1. the hand-written C loop ``fourbar.c`` (closed-form circle intersection, Cramer 2x2,
+   the book's polar outputs), compiled here with cc -O3 -march=native into a temporary
+   directory and called through ctypes on NumPy arrays;
+2. the sarkp array path: one call per routine over all positions (DKNMA1, or
+   DPRM1 + DSKOR1 + DUSKR1), positions only (DPRM1), positions + velocities (DKNMA1 with
+   ANALOG = 1); the generated drivers ``_sarkp.drv_kinematics.NAME_n`` called bare; the
+   same Fortran routines in a pure-Fortran loop (``fortran_driver.f90``, gfortran -O3);
+3. per call: a 360-position sweep (one DKNMA1 call, three calls), the fixed cost (arrays
+   of one position), the scalar calls DKNMA1, DPRM1 and DVKT, a Python loop of scalar calls;
+4. two threads (ThreadPoolExecutor) over two chunks of a 10^6 sweep against one call;
+5. the peers, installed only in the benchmark's own venv (never project dependencies):
+   pylinkage (its numba kernel ``step_fast_with_kinematics`` and its Python-level
+   ``step_with_derivatives``), mechanism (loop equations with fsolve), kinepy (vectorised
+   positions; velocities only by its own central differences);
+6. the course mechanism of chapter 10 in the same table;
+7. time per position against the number of positions (10 to 10^6), plotted.
+
+Times are the best of repeats in CPU time of the process (time.process_time), except the
+threads (wall time); the load average is printed at the start and the end.
 
 Error: against an mpmath reference at 40 digits on a sample of ``N_SAMPLE`` positions:
 closed-form positions (circle-circle and circle-line intersections), velocities and
@@ -31,7 +41,8 @@ for sarkp as well.
 
 Run: ``python benchmarks/bench_kinematics.py`` (from outside the source tree, with sarkp,
 mpmath, pylinkage[numba] and mechanism installed; gfortran and LAPACK for the driver).
-Prints a table and writes ``benchmarks/results/kinematics.csv``.
+Prints a Markdown table and the targets of issue 9, and writes
+``benchmarks/results/kinematics.csv``, ``kinematics_sizes.csv`` and ``kinematics.png``.
 """
 
 from __future__ import annotations
