@@ -717,13 +717,19 @@ def main():
         c0, w0 = time.process_time(), wall()
         two()
         cores = (time.process_time() - c0) / (wall() - w0)
+        if cloop is not None:      # the control: ctypes releases the GIL for the C loop
+            c1 = best(lambda: cloop(big), repeat=3, timer=wall)
+            c2 = best(lambda: list(pool.map(cloop, halves)), repeat=3, timer=wall)
     notes.append(f"fourbar: 2 threads x 2 chunks of {N_BIG} positions kept {cores:.2f} cores "
                  f"busy (CPU time / wall time of one run); load average "
                  f"{os.getloadavg()[0]:.2f} then")
     add(mech, f"sarkp DKNMA1, 10^{round(math.log10(N_BIG))} positions, one call (wall)",
         "full", t1 / N_BIG, n=N_BIG)
     add(mech, "the same, 2 threads x 2 chunks (wall)", "full", t2 / N_BIG, n=N_BIG)
-    add(mech, "thread speedup (one call / 2 threads)", "full", t1 / t2, "ratio", N_BIG)
+    add(mech, "thread speedup of sarkp (one call / 2 threads)", "full", t1 / t2, "ratio",
+        N_BIG)
+    if cloop is not None:
+        add(mech, "thread speedup of the C loop, the control", "full", c1 / c2, "ratio", N_BIG)
 
     # -- 4. peers, four-bar -------------------------------------------------------------
     peers(tab, notes, mech, phi, idx, ref, ref0)
