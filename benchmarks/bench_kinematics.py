@@ -657,6 +657,15 @@ def main():
         for (name, level), (t, ier) in sorted(drv_times.items()):
             if name.startswith(mech):
                 add(mech, f"Fortran driver loop, {name.split('_')[1]}", levels[level], t)
+    if drv_dumps is not None:
+        for m_, split_ in (("fourbar", fourbar_split), ("course", course_split)):
+            full_out = split_(phi, 3, _NP)
+            dump = drv_dumps[m_]
+            diffs = {k: np.max(np.abs(dump[k] - full_out[k])) for k in dump}
+            worst = max(diffs, key=diffs.get)
+            notes.append(f"{m_}: the Fortran driver loop's split results against the array "
+                         f"path's: largest difference {diffs[worst]:.1e} (in {worst}, largest "
+                         f"magnitude {np.max(np.abs(full_out[worst])):.2g})")
     e_ang, e_w, e_e = angle_errors(fourbar_dknma(phi[idx], 3, _NP), ref, mech)
     notes.append(f"fourbar: sarkp DKNMA1, angles FI2, FI3 within {e_ang:.1e} rad, W2, W3 "
                  f"{e_w:.1e} and E2, E3 {e_e:.1e} relative")
@@ -797,7 +806,6 @@ def peers(tab, notes, mech, phi, idx, ref, ref0):
         linkage.step_fast(iterations=N)
         add(mech, "pylinkage step_fast (numba)", "positions",
             best(lambda: linkage.step_fast(iterations=N)) / N, err={"pos": err["pos"]})
-        p360 = crank_angles(360)
         lk360, _ = pylinkage_linkage(mech, 360, ref0)
         add(mech, "pylinkage numba, 360 positions", "full",
             best(lambda: lk360.step_fast_with_kinematics(iterations=360)), "call", 360)
