@@ -80,6 +80,8 @@ N_SCALAR = 200 if _Q else 2000   # positions of the Python scalar loop
 N_PEER = 100 if _Q else 1000     # positions of the slow peers (mechanism, pylinkage loop)
 N_SAMPLE = 20 if _Q else 200     # positions of the error sample (every N // N_SAMPLE-th)
 REPEAT = 2 if _Q else 5
+if _Q:                           # a smoke run does not overwrite the results
+    OUT = OUT / "quick"
 N_BIG = 10**5 if _Q else 10**6   # the threads benchmark
 W1 = 3.0             # crank angular velocity, rad/s (the book's omega1)
 
@@ -877,7 +879,7 @@ def targets(tab):
 
 
 def report(tab, notes, up0, up1, cloop, drv_cmd):
-    OUT.mkdir(exist_ok=True)
+    OUT.mkdir(parents=True, exist_ok=True)
     with open(OUT / "kinematics.csv", "w", newline="") as fh:
         w = csv.writer(fh)
         w.writerow(["mechanism", "path", "level", "n", "seconds", "per", "err_pos", "err_vel",
@@ -977,7 +979,7 @@ def plot(curves):
     import matplotlib
     matplotlib.use("Agg")
     import matplotlib.pyplot as plt
-    fig, ax = plt.subplots(figsize=(8, 5.5))
+    fig, ax = plt.subplots(figsize=(11, 5.5))
     for label, pts in curves.items():
         n, t = zip(*pts)
         style = "-o" if label.startswith("sarkp") else ("-s" if label.startswith("C") else "--^")
@@ -993,7 +995,7 @@ def plot(curves):
     ax.set_title(f"four-bar kinematics, time per position against n "
                  f"(load {os.getloadavg()[0]:.1f} on 2 cores)")
     ax.grid(True, which="both", alpha=0.3)
-    ax.legend(fontsize=8)
+    ax.legend(fontsize=8, loc="upper left", bbox_to_anchor=(1.01, 1.0))
     fig.tight_layout()
     OUT.mkdir(exist_ok=True)
     fig.savefig(OUT / "kinematics.png", dpi=110)
