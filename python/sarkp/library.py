@@ -85,6 +85,7 @@ ON_ERROR_DOC = """
 """
 
 _SCALAR_TYPES = (float, np.floating)
+_FLOAT64 = np.dtype(np.float64)
 #: what the scalar path takes (a bool is an int; complex, strings, arrays go the long way)
 _SCALARS = frozenset({float, int, bool, np.float64, np.float32, np.int64, np.int32})
 _PACKAGE_DIR = os.path.dirname(os.path.abspath(__file__))
@@ -397,7 +398,8 @@ class Routine:
                     raise ValueError(f"{self.name}: {arg} = {a} is an integer too large "
                                      f"for a double") from None
                 continue
-            a = as_real_array(self.name, arg, a)
+            if type(a) is not np.ndarray or a.dtype != _FLOAT64:
+                a = as_real_array(self.name, arg, a)
             if arg in self._fixed:
                 k = self._fixed[arg]
                 if a.ndim < 1 or a.shape[-1] != k:
@@ -442,9 +444,11 @@ class Routine:
             self._raise_bad_input(int(bad[0]) - 1, int(bad[1]) - 1, flat, incs, shape)
         status = out[-2].reshape(shape)
         # integer results (DZBPL's tooth numbers) come back as floats: a failure holds NaN
-        out = [np.asarray(out[i], dtype=float) for i in self._pick]
-        out = [o.reshape(shape) if o.ndim == 1 else o.T.reshape(shape + o.shape[:-1])
-               for o in out]
+        out = [out[i] if out[i].dtype == _FLOAT64 else out[i].astype(float)
+               for i in self._pick]
+        if shape != (n,) or any(o.ndim != 1 for o in out):
+            out = [o.reshape(shape) if o.ndim == 1 else o.T.reshape(shape + o.shape[:-1])
+                   for o in out]
         if self._python_checked:                        # integer sets Fortran cannot screen
             for arg, a in zip(self.inputs, values):
                 if arg in self._python_checked:
