@@ -3,6 +3,7 @@ derives is checked against a numerical derivative of the positions."""
 
 import pathlib
 import re
+import textwrap
 
 import numpy as np
 import pytest
@@ -49,3 +50,13 @@ def test_example_velocities_are_derivatives(run):
     assert np.max(np.abs(d[0] - k.W3)) < 1e-6
     assert np.max(np.abs(np.hypot(d[1], d[2]) - ve.L)) < 1e-6
     assert np.max(np.abs(d[3] - signed)) < 1e-6
+
+
+def test_thread_recipe_gives_the_one_call_result():
+    """The README's thread-pool recipe: its chunks put together equal one call."""
+    text = README.read_text(encoding="utf-8")
+    block = re.search(r"\* Threads:.*?```python\n(.*?)```", text, re.S).group(1)
+    namespace = {}
+    exec(compile(textwrap.dedent(block), "README.md", "exec"), namespace)
+    whole = namespace["kinematics"](namespace["fi"])
+    assert np.array_equal(namespace["W3"], whole.W3)
