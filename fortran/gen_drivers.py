@@ -8,11 +8,13 @@ named) and writes module ``drv_<module>`` with, for each book routine NAME:
 * ``NAME_1(sarkp_mode, <the book's arguments>, <COMMON results>, sarkp_status)``: one call
   in the caller's mode;
 * ``NAME_n(sarkp_mode, sarkp_n, sarkp_inc, sarkp_kind, sarkp_nan, <inputs as arrays>,
-  <outputs as arrays>, sarkp_status, sarkp_bad)``: a loop over ``sarkp_n`` positions, for
-  routines whose arguments are scalars or fixed-size arrays.  Input k of position i is
+  sarkp_out, sarkp_status, sarkp_bad)``: a loop over ``sarkp_n`` positions, for
+  routines whose arguments are scalars or fixed-size arrays.  The results of position i go
+  to ``sarkp_out(i, k)``, k in the order of NAME_1's results (one array the caller owns:
+  the Python layer allocates it, or reuses the caller's ``out=``; no array per result).  Input k of position i is
   element ``1 + (i-1)*sarkp_inc(k)``, so an input that is the same at every position is
-  passed once (``sarkp_inc(k) = 0``).  Each input is screened first, in the same loop, by
-  its kind (``screen``: finite, length, non-negative, non-zero, branch); the first bad one
+  passed once (``sarkp_inc(k) = 0``).  Each input is screened first, in the same loop (an
+  input passed once at the first position only), by its kind (``screen``: finite, length, non-negative, non-zero, branch); the first bad one
   stops the loop and comes back in ``sarkp_bad`` = (input, element), and a NaN gives the
   position status st_missing when ``sarkp_nan`` allows it.
 
@@ -310,10 +312,18 @@ def sweep_driver(mod, p, variables):
     commons = [c for c, _ in pairs]
     ins = [a for a in p.argnames if p.args[a].intent == "in"]
     outs = [a for a in p.argnames if p.args[a].intent == "out" and a != p.status_arg]
-    extra = [c.name for c in commons]
-    result = ["fres"] if p.kind == "function" else []
-    names = (["sarkp_mode", "sarkp_n", "sarkp_inc", "sarkp_kind", "sarkp_nan"] + ins + outs
-             + extra + result + ["sarkp_status", "sarkp_bad"])
+    # every result of position i goes to column k of sarkp_out(i, k), in the order of the
+    # one-call driver's results: the outputs, the COMMON results, a FUNCTION's value
+    results = [p.args[a] for a in outs] + commons
+    if p.kind == "function":
+        results.append(Arg("fres", p.result_type or "real(dp)", "out"))
+    for r in results:
+        if r.dims or r.type not in TYPES:
+            raise ValueError(f"{p.name}: the sweep packs scalar results only, not {r.name}")
+    column = {r.name: k for k, r in enumerate(results, 1)}
+    ints = [r.name for r in results if r.type == "integer"]
+    names = (["sarkp_mode", "sarkp_n", "sarkp_inc", "sarkp_kind", "sarkp_nan"] + ins
+             + ["sarkp_out", "sarkp_status", "sarkp_bad"])
     w = [f"  subroutine {p.name}_n({wrap_list(names)})"]
     if not p.commons:
         w.append("    !f2py threadsafe")
@@ -322,36 +332,40 @@ def sweep_driver(mod, p, variables):
     for a in ins:
         arg = p.args[a]
         w.append("    " + arg.decl(dims=arg.dims + ("*",)))
-    for a in outs:
-        arg = p.args[a]
-        w.append("    " + arg.decl(dims=arg.dims + ("sarkp_n",)))
-    for c in commons:
-        w.append("    " + Arg(c.name, c.type, "out", c.dims + ("sarkp_n",)).decl())
-    if result:
-        w.append(f"    {p.result_type or 'real(dp)'}, intent(out) :: fres(sarkp_n)")
-    w += ["    integer, intent(out) :: sarkp_status(sarkp_n), sarkp_bad(2)",
-          "    integer :: sarkp_i, sarkp_state"
-          + (", sarkp_j" if any(p.args[a].type == "real(dp)" for a in ins) else "")
-          + (", sarkp_l" if any(p.args[a].dims for a in ins) else ""),
-          "    sarkp_bad = 0",
+    w += [f"    real(dp), intent(inout) :: sarkp_out(sarkp_n, {len(results)})",
+          "    integer, intent(out) :: sarkp_status(sarkp_n), sarkp_bad(2)",
+          "    integer :: sarkp_i, sarkp_state, sarkp_once"
+          + (", sarkp_t, sarkp_j" if any(p.args[a].type == "real(dp)" for a in ins) else "")
+          + (", sarkp_l" if any(p.args[a].dims for a in ins) else "")]
+    if ints:
+        w.append(f"    integer :: {', '.join('sarkp_' + n for n in ints)}")
+    w += ["    sarkp_bad = 0",
           "    call set_mode(sarkp_mode)",
+          "    sarkp_once = 0",
           "    do sarkp_i = 1, sarkp_n",
           "      ! the inputs of position i: a NaN is a missing input (status 5) when allowed;",
-          "      ! anything else out of its kind's range stops the loop and is reported",
-          "      sarkp_state = 0"]
+          "      ! anything else out of its kind's range stops the loop and is reported.  An",
+          "      ! input passed once (inc 0) is screened at position 1 only, in its turn;",
+          "      ! sarkp_once keeps what it found (0, or 1 for a missing input).",
+          "      sarkp_state = sarkp_once"]
     for k, a in enumerate(ins, 1):
         arg = p.args[a]
         if arg.type != "real(dp)":
             continue
-        w.append(f"      sarkp_j = 1 + (sarkp_i - 1)*sarkp_inc({k})")
+        w.append(f"      if (sarkp_inc({k}) /= 0 .or. sarkp_i == 1) then")
+        w.append(f"        sarkp_j = 1 + (sarkp_i - 1)*sarkp_inc({k})")
         if arg.dims:
-            w += [f"      do sarkp_l = 1, {arg.dims[0]}",
-                  f"        sarkp_state = max(sarkp_state, screen({a}(sarkp_l, sarkp_j), "
+            w += ["        sarkp_t = 0",
+                  f"        do sarkp_l = 1, {arg.dims[0]}",
+                  f"          sarkp_t = max(sarkp_t, screen({a}(sarkp_l, sarkp_j), "
                   f"sarkp_kind({k}), sarkp_nan, {k}, sarkp_j, sarkp_bad))",
-                  "      end do"]
+                  "        end do"]
         else:
-            w.append(f"      sarkp_state = max(sarkp_state, screen({a}(sarkp_j), "
-                     f"sarkp_kind({k}), sarkp_nan, {k}, sarkp_j, sarkp_bad))")
+            w.append(f"        sarkp_t = screen({a}(sarkp_j), "
+                     f"sarkp_kind({k}), sarkp_nan, {k}, sarkp_j, sarkp_bad)")
+        w.append("        sarkp_state = max(sarkp_state, sarkp_t)")
+        w.append(f"        if (sarkp_inc({k}) == 0) sarkp_once = max(sarkp_once, sarkp_t)")
+        w.append("      end if")
     w += ["      if (sarkp_state == 2) return",
           "      if (sarkp_state == 1) then",
           "        sarkp_status(sarkp_i) = st_missing",
@@ -359,29 +373,27 @@ def sweep_driver(mod, p, variables):
           "      end if"]
 
     def ref(a):
-        arg = p.args[a]
-        if arg.intent == "in":
-            index = f"1 + (sarkp_i - 1)*sarkp_inc({ins.index(a) + 1})"
-        else:
-            index = "sarkp_i"
-        return f"{a}({':, ' * len(arg.dims)}{index})"
+        if a in ins:
+            arg = p.args[a]
+            return f"{a}({':, ' * len(arg.dims)}1 + (sarkp_i - 1)*sarkp_inc({ins.index(a) + 1}))"
+        if a in ints:
+            return f"sarkp_{a}"
+        return f"sarkp_out(sarkp_i, {column[a]})"
 
     actual = [("sarkp_status(sarkp_i)" if a == p.status_arg else ref(a)) for a in p.argnames]
     call = wrap_list(actual, indent="          ")
     if p.kind == "function":
-        w.append(f"      fres(sarkp_i) = {p.name}({call})")
+        w.append(f"      {ref('fres')} = {p.name}({call})")
     else:
         w.append(f"      call {p.name}({call})")
     if p.status_arg is None:
         w.append("      sarkp_status(sarkp_i) = st_ok")
     for c, var in pairs:
-        w.append(f"      {c.name}({':, ' * len(c.dims)}sarkp_i) = {mod}_{var}")
-    real_out = [(f"{a}({':, ' * len(p.args[a].dims)}sarkp_i)", bool(p.args[a].dims)) for a in outs
-                if p.args[a].type == "real(dp)"]
-    real_out += [(f"{c.name}({':, ' * len(c.dims)}sarkp_i)", bool(c.dims)) for c in commons
-                 if c.type == "real(dp)"]
-    if p.kind == "function" and (p.result_type or "real(dp)") == "real(dp)":
-        real_out.append(("fres(sarkp_i)", False))
+        w.append(f"      {ref(c.name)} = {mod}_{var}")
+    for n in ints:                                  # an integer result is stored as a real
+        w.append(f"      sarkp_out(sarkp_i, {column[n]}) = real(sarkp_{n}, dp)")
+    real_out = [(f"sarkp_out(sarkp_i, {column[r.name]})", False) for r in results
+                if r.type == "real(dp)"]
     if real_out:
         w.append("      if (succeeded(sarkp_status(sarkp_i))) then")
         w.append(f"        if (.not. ({finite_test(real_out)})) sarkp_status(sarkp_i) = st_range")

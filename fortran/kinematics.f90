@@ -64,7 +64,7 @@
 ! ERRATA ids of this chapter: E-<ROUTINE>-<n>, listed in docs/ERRATA.md.
 module kinematics
   use prmtr, only: dp, pi, pid2, printed_mode, book_sign, st_ok, st_assembly, st_singular, &
-                   st_significance, st_range, st_digits
+                   st_significance, st_range, st_digits, norm2d
   use operators, only: dugl1, dugl2, dugl3, dugl4, dugl5, dugol, domega, dvkt, dsmvkt
   use gelg_mod, only: gelg2
   implicit none
@@ -90,8 +90,12 @@ contains
     real(dp), intent(out) :: y1, y2
     integer, intent(out) :: st
     real(dp) :: x(2, 2), y(2)
-    x = reshape([a11, a21, a12, a22], [2, 2])
-    y = [b1, b2]
+    x(1, 1) = a11
+    x(2, 1) = a21
+    x(1, 2) = a12
+    x(2, 2) = a22
+    y(1) = b1
+    y(2) = b2
     call gelg2(x, y, st)
     y1 = y(1)
     y2 = y(2)
@@ -128,7 +132,7 @@ contains
       y1 = 0.0_dp; y2 = 0.0_dp
       return
     end if
-    ny = hypot(y1, y2)
+    ny = norm2d(y1, y2)
     den = max(ny, sb/na)
     if (den == 0.0_dp) then
       rel = 0.0_dp                                ! no data: y = 0 exactly
@@ -165,11 +169,11 @@ contains
     dc = 2.0_dp*uround*(abs(c) + abs(t2*s))
     e1 = db/abs(s) + abs(y1)*(ds/abs(s) + 2.0_dp*uround)
     e2 = e1*abs(c) + abs(y1)*dc + db + 2.0_dp*uround*(abs(y1*c) + abs(b1) + abs(y2))
-    den = max(hypot(y1, y2), sb)
+    den = max(norm2d(y1, y2), sb)
     if (den == 0.0_dp) then
       rel = 0.0_dp
     else
-      rel = hypot(e1, e2)/den
+      rel = norm2d(e1, e2)/den
     end if
   end subroutine solve_kind5
 
@@ -247,10 +251,30 @@ contains
     real(dp), intent(in) :: d0, l20, l30
     real(dp), intent(out) :: anga, angc, dang
     integer, intent(out) :: st
-    real(dp) :: d, l2, l3, a, b, c, t, f1, f2, f3, f4, area, h, pa, tol, dc
+    real(dp) :: pa, h, pc
     integer :: e
+    call tri_apex(d0, l20, l30, pa, h, pc, e, dang, st)
     anga = 0.0_dp
     angc = 0.0_dp
+    if (st /= st_ok) return
+    anga = atan2(h, pa)
+    angc = atan2(h, pc)
+  end subroutine tri_angles
+
+  ! The apex B of the triangle with base d = AC and sides l2 = AB, l3 = CB, in the frame of
+  ! the base: pa = projection of AB on AC, pc = d - pa that of CB on CA, h = the height
+  ! (>= 0).  tri_angles' angles are atan2(h, pa) and atan2(h, pc); corrected DKNMA1 uses
+  ! the apex itself (issue 9: no angle and back).  pa, h, pc are in units of 2**e (the
+  ! sides are scaled by a power of 2 first, see below).  dang and st as for tri_angles.
+  subroutine tri_apex(d0, l20, l30, pa, h, pc, e, dang, st)
+    real(dp), intent(in) :: d0, l20, l30
+    real(dp), intent(out) :: pa, h, pc, dang
+    integer, intent(out) :: e, st
+    real(dp) :: d, l2, l3, a, b, c, t, f1, f2, f3, f4, area, tol, dc
+    e = 0
+    pa = 0.0_dp
+    h = 0.0_dp
+    pc = 0.0_dp
     dang = 0.0_dp
     if (.not. (d0 > 0.0_dp .and. l20 > 0.0_dp .and. l30 > 0.0_dp)) then
       st = st_assembly
@@ -261,9 +285,18 @@ contains
       return
     end if
     e = exponent(max(d0, l20, l30))
-    d = scale(d0, -e)
-    l2 = scale(l20, -e)
-    l3 = scale(l30, -e)
+    if (abs(e) <= 60) then
+      ! no scaling needed (and none done, the costly part): the squares and the product of
+      ! four below stay normal, since f2 is 0 or at least an ulp of the largest side
+      e = 0
+      d = d0
+      l2 = l20
+      l3 = l30
+    else
+      d = scale(d0, -e)
+      l2 = scale(l20, -e)
+      l3 = scale(l30, -e)
+    end if
     ! sort a >= b >= c
     a = d
     b = l2
@@ -290,8 +323,7 @@ contains
     area = 0.25_dp*sqrt(f1*f2*f3*f4)
     h = 2.0_dp*area/d
     pa = (d*d + (l2 - l3)*(l2 + l3))/(2.0_dp*d)  ! projection of AB on AC
-    anga = atan2(h, pa)
-    angc = atan2(h, d - pa)
+    pc = d - pa
     ! first order both angles move by 2u(d^2+l2^2+l3^2)/(d h); second order (flat triangle)
     ! by sqrt(2 dc), dc the larger move of the two cosines
     dc = 2.0_dp*uround*(d*d + l2*l2 + l3*l3)/(d*min(l2, l3))
@@ -302,7 +334,7 @@ contains
     end if
     dang = dang + 16.0_dp*uround
     st = st_ok
-  end subroutine tri_angles
+  end subroutine tri_apex
 
   ! The four-argument DUGL1 that DKNMA1-DKNMA3 call (L2598, L2698, L2775) is not the book's
   ! II.3 DUGL1(X1, Y1, X2, Y2); the DKNMA comments name the helpers of textbook [1] (L2578).
@@ -321,6 +353,51 @@ contains
     real(dp), intent(in) :: fi, w, e
     acc_dir = dugl3(fi, pi - atan2(abs(e), w*w), e)
   end function acc_dir
+
+  ! e(FI + K*PI/2) for K = -1, 1 or 2, from C = cos FI and S = sin FI.  The book forms the
+  ! angle sum (FI + PID2, FI + PI, DUGL3's FI +- PI/2) and takes its cosine and sine.
+  ! Corrected mode uses the exact identities instead (issue 9: one sincos per angle; the
+  ! rounding of the sum is gone too).  As-printed mode keeps the book's sequence: with
+  ! PI = 3.14159 the two differ by about 3e-6, which a printed figure can show.
+  pure subroutine turn(fi, c, s, k, ct, st)
+    real(dp), intent(in) :: fi, c, s
+    integer, intent(in) :: k
+    real(dp), intent(out) :: ct, st
+    if (printed_mode /= 0) then
+      ct = cos(fi + k*pid2)
+      st = sin(fi + k*pid2)
+    else if (k == 1) then
+      ct = -s
+      st = c
+    else if (k == -1) then
+      ct = s
+      st = -c
+    else
+      ct = -c
+      st = -s
+    end if
+  end subroutine turn
+
+  ! The Cartesian components m*e(FI) of a vector given as (modulus, direction); a zero
+  ! modulus (a fixed pivot's velocity) costs no cosine and no sine.
+  pure subroutine components(m, fi, x, y)
+    real(dp), intent(in) :: m, fi
+    real(dp), intent(out) :: x, y
+    if (m == 0.0_dp) then
+      x = 0.0_dp
+      y = 0.0_dp
+    else
+      x = m*cos(fi)
+      y = m*sin(fi)
+    end if
+  end subroutine components
+
+  ! The quarter turn K = +-1 of DUGL3(FI, PI/2, V): +1 for V >= 0 (the book's SIGN).
+  pure integer function quarter(v)
+    real(dp), intent(in) :: v
+    quarter = 1
+    if (v < 0.0_dp) quarter = -1
+  end function quarter
 
   ! ============================================================================
   ! positions
@@ -429,7 +506,7 @@ contains
     rzac = 0.0_dp; fi3 = 0.0_dp; fica = 0.0_dp
     ier = st_ok
     h = rz2*sin(t)
-    rzac = hypot(xa - xc, ya - yc)
+    rzac = norm2d(xa - xc, ya - yc)
     if (rzac == 0.0_dp) then
       if (h == 0.0_dp) then
         ier = st_singular                         ! A = C: the axis direction is undefined
@@ -491,9 +568,9 @@ contains
     yb = ya + by
     mx = bx + (xa - xvm); my = by + (ya - yvm)
     nx = bx - dxc + (xc - xvn); ny = by - dyc + (yc - yvn)
-    rvbm = hypot(mx, my)
+    rvbm = norm2d(mx, my)
     fivbm = dugol(dugl2(0.0_dp, 0.0_dp, mx, my))
-    rvbn = hypot(nx, ny)
+    rvbn = norm2d(nx, ny)
     fivbn = dugol(dugl2(0.0_dp, 0.0_dp, nx, ny))
     ier = settle(ier, rel, [xb, yb, rvbm, rvbn])
     if (failed(ier)) then
@@ -615,7 +692,7 @@ contains
     real(dp) :: rzac, fica, y1, y2, sb, rel
     va3a = 0.0_dp; ala3a = 0.0_dp; va3c = 0.0_dp; ala3c = 0.0_dp; va3 = 0.0_dp; ala3 = 0.0_dp
     w3 = 0.0_dp
-    rzac = hypot(xa - xc, ya - yc)
+    rzac = norm2d(xa - xc, ya - yc)
     if (rzac == 0.0_dp) then
       ier = st_singular
       return
@@ -685,7 +762,7 @@ contains
     integer, intent(out) :: ier
     real(dp) :: vcm, alcm, y1, y2, sb, rel
     vc2c3 = 0.0_dp; alc2c3 = 0.0_dp; vc2cm = 0.0_dp; alc2cm = 0.0_dp; vc2 = 0.0_dp; alc2 = 0.0_dp
-    vcm = abs(wm)*hypot(xc3 - xvm, yc3 - yvm)
+    vcm = abs(wm)*norm2d(xc3 - xvm, yc3 - yvm)
     alcm = dugl3(dugl2(xvm, yvm, xc3, yc3), pid2, wm)
     sb = vcm + abs(vc3)
     ! y1*e(FIM + T2) - y2*e(FIM) = v_CM - v_C3, in the guide's frame
@@ -840,8 +917,8 @@ contains
     integer, intent(out) :: ier
     real(dp) :: abn, abm, dlt, dlta, bbm, bbn, y1, y2, a, b, sb, rel
     abbmr = 0.0_dp; bbbmr = 0.0_dp; abbnr = 0.0_dp; bbbnr = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp
-    abn = rvbn*hypot(wn*wn, en)                   ! = RVBN*SQRT(WN**4 + EN**2), no overflow
-    abm = rvbm*hypot(wm*wm, em)
+    abn = rvbn*norm2d(wn*wn, en)                   ! = RVBN*SQRT(WN**4 + EN**2), no overflow
+    abm = rvbm*norm2d(wm*wm, em)
     if (em == 0.0_dp) then
       dlt = pid2
     else
@@ -889,7 +966,7 @@ contains
     real(dp) :: acm, dlt, bcm, y1, y2, a, b, sb, rel
     ac2c3r = 0.0_dp; bc2c3r = 0.0_dp; ac2cmr = 0.0_dp; bc2cmr = 0.0_dp; ac2 = 0.0_dp
     bc2 = 0.0_dp
-    acm = hypot(xc3 - xvm, yc3 - yvm)*hypot(wm*wm, em)   ! = |C - VM| SQRT(WM**4 + EM**2)
+    acm = norm2d(xc3 - xvm, yc3 - yvm)*norm2d(wm*wm, em)   ! = |C - VM| SQRT(WM**4 + EM**2)
     if (em == 0.0_dp) then
       dlt = pid2
     else
@@ -940,13 +1017,15 @@ contains
     real(dp), intent(out) :: abcn, aban, abat, bbat, abct, bbct, ab, bb, e2, e3
     integer, intent(out) :: ier
     real(dp) :: rac, fik, ugbac, ugbca, y1, y2, prx, pry, q, dang, da, sb, relv, rela, ev
-    real(dp) :: est
-    integer :: st2
+    real(dp) :: est, c2, s2, c3, s3, n2x, n2y, n3x, n3y, m2x, m2y, m3x, m3y, tx, ty
+    real(dp) :: vax, vay, vcx, vcy, aax, aay, acx, acy
+    real(dp) :: pa, h, pc, ux, uy, r2x, r2y, r3x, r3y, l2s, l3s
+    integer :: st2, e
     xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; fi3 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp
     vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; w3 = 0.0_dp
     abcn = 0.0_dp; aban = 0.0_dp; abat = 0.0_dp; bbat = 0.0_dp; abct = 0.0_dp; bbct = 0.0_dp
     ab = 0.0_dp; bb = 0.0_dp; e2 = 0.0_dp; e3 = 0.0_dp
-    rac = hypot(xc - xa, yc - ya)
+    rac = norm2d(xc - xa, yc - ya)
     if (rac == 0.0_dp) then
       if (rz2 == rz3) then
         ier = st_singular
@@ -955,47 +1034,98 @@ contains
       end if
       return
     end if
-    call tri_angles(rac, rz2, rz3, ugbac, ugbca, dang, ier)
-    if (failed(ier)) return
-    ! The book rotates B's coordinates in the frame of C->A (E-DKNMA1-2) and takes FI2, FI3
-    ! from the rounded absolute coordinates of B; the same directions come here straight
-    ! from the triangle: B = A + RZ2 e(FI_AC + P*angle A), C->B = FI_AC + pi - P*angle C.
-    fik = atan2(yc - ya, xc - xa)                 ! direction A->C
     q = book_sign(1.0_dp, p)
-    fi2 = wrap_pi(fik + q*ugbac)
-    fi3 = wrap_pi(fik + pi - q*ugbca)
-    xb = xa + rz2*cos(fi2)
-    yb = ya + rz2*sin(fi2)
+    if (printed_mode /= 0) then
+      call tri_angles(rac, rz2, rz3, ugbac, ugbca, dang, ier)
+      if (failed(ier)) return
+      ! The book rotates B's coordinates in the frame of C->A (E-DKNMA1-2) and takes FI2,
+      ! FI3 from the rounded absolute coordinates of B; the same directions come here
+      ! straight from the triangle: B = A + RZ2 e(FI_AC + P*angle A),
+      ! C->B = FI_AC + pi - P*angle C.
+      fik = atan2(yc - ya, xc - xa)               ! direction A->C
+      fi2 = wrap_pi(fik + q*ugbac)
+      fi3 = wrap_pi(fik + pi - q*ugbca)
+      c2 = cos(fi2)
+      s2 = sin(fi2)
+      c3 = cos(fi3)
+      s3 = sin(fi3)
+      xb = xa + rz2*c2
+      yb = ya + rz2*s2
+    else
+      ! Corrected mode (issue 9): the same point B from the triangle's apex in the frame of
+      ! A->C (unit vector u, its normal turned by P), and FI2, FI3 as the directions of
+      ! B - A and B - C: two arctangents where the angles' way takes three, and no cosine
+      ! or sine of them (the unit vectors e(FI2), e(FI3) are (B - A)/RZ2, (B - C)/RZ3).
+      call tri_apex(rac, rz2, rz3, pa, h, pc, e, dang, ier)
+      if (failed(ier)) return
+      ux = (xc - xa)/rac
+      uy = (yc - ya)/rac
+      h = q*h
+      r2x = pa*ux - h*uy                          ! (B - A)/2**e
+      r2y = pa*uy + h*ux
+      r3x = -pc*ux - h*uy                         ! (B - C)/2**e
+      r3y = -pc*uy + h*ux
+      fi2 = atan2(r2y, r2x)
+      fi3 = atan2(r3y, r3x)
+      if (fi2 == -pi) fi2 = pi                    ! the range (-pi, pi] of DUGL2
+      if (fi3 == -pi) fi3 = pi
+      l2s = rz2
+      l3s = rz3
+      if (e /= 0) then
+        l2s = scale(rz2, -e)
+        l3s = scale(rz3, -e)
+      end if
+      c2 = r2x/l2s
+      s2 = r2y/l2s
+      c3 = r3x/l3s
+      s3 = r3y/l3s
+      if (e /= 0) then
+        xb = xa + scale(r2x, e)
+        yb = ya + scale(r2y, e)
+      else
+        xb = xa + r2x
+        yb = ya + r2y
+      end if
+      fik = pi                                    ! the rounding allowance below at its largest
+    end if
     da = dang + 4.0_dp*uround*(2.0_dp + abs(fik))
     est = da
+    ! The velocity and acceleration systems have the columns e(FI2 + PI/2), -e(FI3 + PI/2)
+    ! (L2615, L2640); each direction's cosine and sine is taken once (turn, components).
+    call turn(fi2, c2, s2, 1, n2x, n2y)
+    call turn(fi3, c3, s3, 1, n3x, n3y)
+    call components(va, ala, vax, vay)
+    call components(vc, alc, vcx, vcy)
     sb = abs(va) + abs(vc)
-    call solve2e(cos(fi2 + pid2), -cos(fi3 + pid2), sin(fi2 + pid2), -sin(fi3 + pid2), &
-                 vc*cos(alc) - va*cos(ala), vc*sin(alc) - va*sin(ala), da, &
+    call solve2e(n2x, -n3x, n2y, -n3y, vcx - vax, vcy - vay, da, &
                  4.0_dp*uround*(1.0_dp + max(abs(ala), abs(alc)))*sb, sb, y1, y2, ier, relv)
     if (failed(ier)) then
       xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; fi3 = 0.0_dp
       return
     end if
     est = max(est, relv)
-    ev = relv*max(hypot(y1, y2), sb/sqrt(2.0_dp))   ! absolute error of (y1, y2)
+    ev = relv*max(norm2d(y1, y2), sb/sqrt(2.0_dp))   ! absolute error of (y1, y2)
     alba = dugl3(fi2, pi/2.0_dp, y1)
     albc = dugl3(fi3, pi/2.0_dp, y2)
     vba = abs(y1)
     vbc = abs(y2)
-    prx = va*cos(ala) + vba*cos(alba)
-    pry = va*sin(ala) + vba*sin(alba)
-    vb = hypot(prx, pry)
+    call turn(fi2, c2, s2, quarter(y1), tx, ty)    ! e(ALBA)
+    prx = vax + vba*tx
+    pry = vay + vba*ty
+    vb = norm2d(prx, pry)
     alb = dugl5(prx, pry)
     w2 = domega(rz2, vba, alba - fi2)
     w3 = domega(rz3, vbc, albc - fi3)
     if (analog /= 1.0_dp) then
       aban = w2**2*rz2
       abcn = w3**2*rz3
+      call components(aa, ba, aax, aay)
+      call components(ac, bc, acx, acy)
+      call turn(fi2, c2, s2, 2, m2x, m2y)          ! e(FI2 + PI), e(FI3 + PI)
+      call turn(fi3, c3, s3, 2, m3x, m3y)
       sb = abs(aa) + abs(ac) + aban + abcn
-      call solve2e(cos(fi2 + pi/2.0_dp), -cos(fi3 + pi/2.0_dp), sin(fi2 + pi/2.0_dp), &
-                   -sin(fi3 + pi/2.0_dp), &
-                   ac*cos(bc) + abcn*cos(fi3 + pi) - aa*cos(ba) - aban*cos(fi2 + pi), &
-                   ac*sin(bc) + abcn*sin(fi3 + pi) - aa*sin(ba) - aban*sin(fi2 + pi), da, &
+      call solve2e(n2x, -n3x, n2y, -n3y, &
+                   acx + abcn*m3x - aax - aban*m2x, acy + abcn*m3y - aay - aban*m2y, da, &
                    4.0_dp*uround*(4.0_dp + max(abs(ba), abs(bc)))*sb &
                    + (2.0_dp*abs(y1)*ev + ev*ev)/rz2 + (2.0_dp*abs(y2)*ev + ev*ev)/rz3, &
                    sb, y1, y2, st2, rela)
@@ -1011,9 +1141,10 @@ contains
       bbct = dugl3(fi3, pi/2.0_dp, y2)
       abat = abs(y1)
       abct = abs(y2)
-      prx = aa*cos(ba) + aban*cos(fi2 + pi) + abat*cos(bbat)
-      pry = aa*sin(ba) + aban*sin(fi2 + pi) + abat*sin(bbat)
-      ab = hypot(prx, pry)
+      call turn(fi2, c2, s2, quarter(y1), tx, ty)  ! e(BBAT)
+      prx = aax + aban*m2x + abat*tx
+      pry = aay + aban*m2y + abat*ty
+      ab = norm2d(prx, pry)
       bb = dugl5(prx, pry)
       e2 = domega(rz2, abat, bbat - fi2)
       e3 = domega(rz3, abct, bbct - fi3)
@@ -1097,14 +1228,14 @@ contains
       return
     end if
     est = max(est, relv)
-    ev = relv*max(hypot(y1, y2), sb/sqrt(2.0_dp))
+    ev = relv*max(norm2d(y1, y2), sb/sqrt(2.0_dp))
     vba = abs(y1)
     alba = dugl3(fi2, pi/2.0_dp, y1)
     vbbm = abs(y2)
     albbm = dugl4(fim, pi, y2)
     vbx = va*cos(ala) + vba*cos(alba)
     vby = va*sin(ala) + vba*sin(alba)
-    vb = hypot(vbx, vby)
+    vb = norm2d(vbx, vby)
     alb = dugl5(vbx, vby)
     w2 = domega(rz2, vba, alba - fi2)
     if (analog /= 1.0_dp) then
@@ -1131,7 +1262,7 @@ contains
       bbbm = dugl4(albbm, pi, y2)
       abx = abm*cos(bbm) + abk*cos(bbk) + abbm*cos(bbbm)
       aby = abm*sin(bbm) + abk*sin(bbk) + abbm*sin(bbbm)
-      ab = hypot(abx, aby)
+      ab = norm2d(abx, aby)
       bb = dugl5(abx, aby)
       e2 = domega(rz2, abat, sin(bbat - fi2))          ! E-DKNMA2-4: book BBAT - FI2
     end if
@@ -1171,7 +1302,7 @@ contains
     bak = 0.0_dp; aar = 0.0_dp; bar = 0.0_dp; aact = 0.0_dp; bact = 0.0_dp; aa3 = 0.0_dp
     ba3 = 0.0_dp; e3 = 0.0_dp; aacn = 0.0_dp
     ier = st_ok
-    rac = hypot(xa - xc, ya - yc)
+    rac = norm2d(xa - xc, ya - yc)
     if (rac == 0.0_dp) then
       ier = st_singular
       return
@@ -1203,7 +1334,7 @@ contains
     bya = rz2*sin(fik + q*ugbac)
     xb = xa + bxa
     yb = ya + bya
-    rzbc = hypot(bxa + (xa - xc), bya + (ya - yc))
+    rzbc = norm2d(bxa + (xa - xc), bya + (ya - yc))
     ! E-DKNMA3-5: the axis of link 3 from the triangle's angle at C, C->B = C->A - P*angle C
     ! (the book's DUGL2(XC, YC, XB, YB) loses digits as CB shrinks and fails at B = C)
     fi3 = wrap_pi(fik + pi - q*angc)
@@ -1219,7 +1350,7 @@ contains
       return
     end if
     est = max(est, relv)
-    ev = relv*max(hypot(y1, y2), sb/sqrt(2.0_dp))
+    ev = relv*max(norm2d(y1, y2), sb/sqrt(2.0_dp))
     var = abs(y1)
     alar = dugl4(fi3, pi, y1)
     vac = abs(y2)
@@ -1227,7 +1358,7 @@ contains
     w3 = domega(rac, vac, alac - (fik + pi))
     prx = vc*cos(alc) + vac*cos(alac)
     pry = vc*sin(alc) + vac*sin(alac)
-    va3 = hypot(prx, pry)
+    va3 = norm2d(prx, pry)
     ala3 = dugl5(prx, pry)
     if (analog /= 1.0_dp) then
       aak = 2.0_dp*var*abs(w3)
@@ -1255,7 +1386,7 @@ contains
       bact = dugl3(fik + pi, pid2, y2)
       aa3x = aa*cos(ba) + aak*cos(bak) + aar*cos(bar)
       aa3y = aa*sin(ba) + aak*sin(bak) + aar*sin(bar)
-      aa3 = hypot(aa3x, aa3y)
+      aa3 = norm2d(aa3x, aa3y)
       ba3 = dugl5(aa3x, aa3y)
       e3 = domega(rac, aact, bact - (fik + pi))
     end if
@@ -1309,11 +1440,11 @@ contains
                  ier, relp)
     if (failed(ier)) return
     est = relp
-    eb = relp*max(hypot(bxa, bya), sb/2.0_dp)       ! absolute error of B
+    eb = relp*max(norm2d(bxa, bya), sb/2.0_dp)       ! absolute error of B
     xb = xa + bxa
     yb = ya + bya
-    rab = hypot(bxa, bya)
-    cb = hypot(bxa - dxc, bya - dyc)
+    rab = norm2d(bxa, bya)
+    cb = norm2d(bxa - dxc, bya - dyc)
     fi2 = dugl2(0.0_dp, 0.0_dp, bxa, bya)
     fi3 = dugl2(0.0_dp, 0.0_dp, bxa - dxc, bya - dyc)
     vbm = abs(wm)*rab
@@ -1330,18 +1461,18 @@ contains
       return
     end if
     est = max(est, relv)
-    ev = relv*max(hypot(y1, y2), sb/2.0_dp)
+    ev = relv*max(norm2d(y1, y2), sb/2.0_dp)
     vb2r = abs(y1)
     alb2r = dugl4(fim, pi, y1)
     vb3r = abs(y2)
     alb3r = dugl4(fin, pi, y2)
     vbx = vbm*cos(albm) + vb2r*cos(alb2r)
     vby = vbm*sin(albm) + vb2r*sin(alb2r)
-    vb = hypot(vbx, vby)
+    vb = norm2d(vbx, vby)
     alb = dugl5(vbx, vby)
     if (analog /= 1.0_dp) then
-      hm = hypot(wm*wm, em)                       ! = SQRT(WM**4 + EM**2), no overflow
-      hn = hypot(wn*wn, en)
+      hm = norm2d(wm*wm, em)                       ! = SQRT(WM**4 + EM**2), no overflow
+      hn = norm2d(wn*wn, en)
       abm = rab*hm
       abn = cb*hn
       bbn = acc_dir(fi3, wn, en)                    ! E-DKNMA4-3: book BBN = 0 if WN = 0
@@ -1369,7 +1500,7 @@ contains
       bb3r = dugl4(alb3r, pi, y2)
       abx = abm*cos(bbm) + ab2k*cos(bb2k) + ab2r*cos(bb2r)
       aby = abm*sin(bbm) + ab2k*sin(bb2k) + ab2r*sin(bb2r)
-      ab = hypot(abx, aby)
+      ab = norm2d(abx, aby)
       bb = dugl5(abx, aby)                          ! E-DKNMA4-2: book DUGL5(VBX, VBY)
     end if
     ier = settle(ier, est, [xb, yb, vb2r, vb3r, vb, ab2k, ab3k, ab2r, ab3r, ab])
@@ -1405,7 +1536,7 @@ contains
     vc2c3 = 0.0_dp; alc2c3 = 0.0_dp; vc2cm = 0.0_dp; alc2cm = 0.0_dp; vc = 0.0_dp; alc = 0.0_dp
     ac2c3k = 0.0_dp; bc2c3k = 0.0_dp; ac2cmk = 0.0_dp; bc2cmk = 0.0_dp; ac2c3r = 0.0_dp
     bc2c3r = 0.0_dp; ac2cmr = 0.0_dp; bc2cmr = 0.0_dp; ac = 0.0_dp; bc = 0.0_dp
-    rc = hypot(xc - xr, yc - yr)
+    rc = norm2d(xc - xr, yc - yr)
     vcm = abs(wm)*rc
     firc = dugl2(xr, yr, xc, yc)                  ! E-DKNMA5-2: book DUGL2(RC, PID2, WM)
     alcm = dugl3(firc, pid2, wm)
@@ -1427,7 +1558,7 @@ contains
     alc2cm = dugl4(fim, pi, y2)
     call dsmvkt(vcm, alcm, vc2cm, alc2cm, vc, alc)
     if (analog /= 1.0_dp) then
-      acm = rc*hypot(wm*wm, em)                   ! = RC*SQRT(WM**4 + EM**2), no overflow
+      acm = rc*norm2d(wm*wm, em)                   ! = RC*SQRT(WM**4 + EM**2), no overflow
       bcm = acc_dir(firc, wm, em)                   ! E-DKNMA5-4
       ac2c3k = 2.0_dp*vc2c3*abs(wm)
       bc2c3k = dugl3(alc2c3, pid2, wm)

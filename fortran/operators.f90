@@ -3,7 +3,7 @@
 ! validates the input (finite numbers, positive lengths, coincident points) before it
 ! calls these routines; guards below only keep a NaN from ever being produced.
 module operators
-  use prmtr, only: dp, pi, book_sign, printed_mode
+  use prmtr, only: dp, pi, book_sign, printed_mode, norm2d
   implicit none
   private
   public :: dintgr, dfrncl, dugl1, dugl2, dugl3, dugl4, dugl5, dugol, dmomnt, domega, &
@@ -159,7 +159,7 @@ contains
   pure subroutine dvkt(x1, y1, x2, y2, rz, fi)
     real(dp), intent(in) :: x1, y1, x2, y2
     real(dp), intent(out) :: rz, fi
-    rz = hypot(x2 - x1, y2 - y1)
+    rz = norm2d(x2 - x1, y2 - y1)
     fi = dugl2(x1, y1, x2, y2)
   end subroutine dvkt
 
@@ -171,7 +171,7 @@ contains
     real(dp) :: lx, ly
     lx = l1*cos(fi1) + l2*cos(fi2)
     ly = l1*sin(fi1) + l2*sin(fi2)
-    l = hypot(lx, ly)
+    l = norm2d(lx, ly)
     fi = dugl5(lx, ly)
   end subroutine dsmvkt
 

@@ -84,6 +84,14 @@ ON_ERROR_DOC = """
         from a failed earlier step, passes through), 6 RANGE (overflow).
 """
 
+OUT_DOC = """    out : ndarray, optional, keyword-only
+        For sweeps over arrays (routines without counted tables): a writeable
+        C-contiguous float64 array of shape ``(number of results,) + broadcast shape``.
+        Result k is computed into ``out[k]`` and returned as that row (a view), so a
+        loop of calls on the same shape allocates nothing.  Where a position fails, its
+        cells hold NaN with ``on_error="nan"``; after an error the contents are undefined.
+"""
+
 _SCALAR_TYPES = (float, np.floating)
 _FLOAT64 = np.dtype(np.float64)
 #: what the scalar path takes (a bool is an int; complex, strings, arrays go the long way)
@@ -249,6 +257,10 @@ class Routine:
                 raise TypeError(f"{self.name}: Fortran results {extra} are not declared")
             self._pick = [results.index(o.lower()) for o in self.outputs]
         self._identity = self._pick == list(range(len(results)))
+        if self.many is not None and not self._identity:
+            # the sweep writes result k to row k of one array (gen_drivers.py, sarkp_out)
+            raise TypeError(f"{self.name}: a sweep's outputs must be all of the Fortran "
+                            f"results, in their order {results}")
         self.fortran_inputs = fortran_in
         self.fortran_results = rets
 
@@ -311,12 +323,17 @@ class Routine:
         return nan if nan is not None and nan.any() else None
 
     # -- the call ------------------------------------------------------------------------
-    def __call__(self, args, on_error="raise"):
+    def __call__(self, args, on_error="raise", out=None):
         if on_error != "raise" and on_error != "nan":
             raise ValueError(f"{self.name}: on_error must be 'raise' or 'nan', "
                              f"not {on_error!r}")
         if self.sweeps_tables:
+            if out is not None:
+                raise TypeError(f"{self.name}: out= is for the array sweeps of routines "
+                                f"without counted tables; {self.name} returns its tables")
             return self._call_tables(args, on_error)
+        if out is not None:
+            return self._call_arrays(args, on_error, out)
         if not self._fixed and all(type(a) in _SCALARS for a in args):
             # Python or NumPy scalars: one call; their sum tells whether all are finite
             try:
@@ -384,7 +401,22 @@ class Routine:
         return (f"{', '.join(names) or 'a result'} would not be a finite double "
                 f"(overflow); the inputs are too far apart in magnitude")
 
-    def _call_arrays(self, args, on_error):
+    def _out_buffer(self, out, shape):
+        """The caller's ``out=``, checked: one row per result, each of the broadcast
+        shape, written in place (C order, float64)."""
+        want = (len(self.outputs),) + shape
+        if type(out) is not np.ndarray or out.dtype != _FLOAT64 or out.shape != want \
+                or not out.flags.c_contiguous or not out.flags.writeable:
+            got = (f"a {out.dtype} array of shape {out.shape}"
+                   + ("" if out.flags.c_contiguous else ", not C-contiguous")
+                   + ("" if out.flags.writeable else ", read-only")
+                   if isinstance(out, np.ndarray) else type(out).__name__)
+            raise ValueError(f"{self.name}: out must be a writeable C-contiguous float64 "
+                             f"array of shape {want} (a row for each of "
+                             f"{', '.join(self.outputs)}), not {got}")
+        return out
+
+    def _call_arrays(self, args, on_error, buffer=None):
         allow_nan = on_error == "nan"
         values, shapes = [], []
         for arg, a in zip(self.inputs, args):
@@ -416,8 +448,16 @@ class Routine:
                              + ", ".join(f"{a} {np.shape(v)}" for a, v in
                                          zip(self.inputs, values))) from None
         n = math.prod(shape)
+        # the results: the rows of one array, the caller's out= or a new one (issue 9:
+        # one allocation per call, none with out=); Fortran fills column k of its
+        # transpose, sarkp_out(i, k)
+        nres = len(self.outputs)
+        if buffer is None:
+            buffer = np.empty((nres,) + shape)
+        else:
+            buffer = self._out_buffer(buffer, shape)
         if n == 0:
-            empty = [np.zeros(shape) for _ in self.outputs]
+            empty = [buffer[i, ...] for i in range(nres)]
             return self._result(empty, np.zeros(shape, np.int32) if allow_nan else None)
         flat, incs = [], []
         for arg, a in zip(self.inputs, values):
@@ -438,17 +478,13 @@ class Routine:
             else:
                 flat.append((a if a.shape == shape else np.broadcast_to(a, shape)).reshape(n))
                 incs.append(1)
-        out = self.many(MODE_CODE.get(), n, incs, self._kinds, allow_nan, *flat)
-        bad = out[-1]
+        status, bad = self.many(MODE_CODE.get(), incs, self._kinds, allow_nan, *flat,
+                                buffer.reshape(nres, n).T)     # f2py takes n from it
         if bad[0]:
             self._raise_bad_input(int(bad[0]) - 1, int(bad[1]) - 1, flat, incs, shape)
-        status = out[-2].reshape(shape)
-        # integer results (DZBPL's tooth numbers) come back as floats: a failure holds NaN
-        out = [out[i] if out[i].dtype == _FLOAT64 else out[i].astype(float)
-               for i in self._pick]
-        if shape != (n,) or any(o.ndim != 1 for o in out):
-            out = [o.reshape(shape) if o.ndim == 1 else o.T.reshape(shape + o.shape[:-1])
-                   for o in out]
+        status = status.reshape(shape)
+        # integer results (DZBPL's tooth numbers) come as floats: a failure holds NaN
+        out = [buffer[i, ...] for i in range(nres)]
         if self._python_checked:                        # integer sets Fortran cannot screen
             for arg, a in zip(self.inputs, values):
                 if arg in self._python_checked:
@@ -696,15 +732,17 @@ def book_routine(name: str, *, listing: str, lines: str, chapter: str,
         defaults.setdefault("AAA", 1.0)
     params = [f"{arg}={defaults[arg]!r}" if arg in defaults else arg for arg in spec.inputs]
     arglist = ", ".join(spec.inputs)
-    source = [f"def {name}({', '.join(params)}, *, on_error='raise'):"]
+    sweeps = not spec.sweeps_tables                   # an array sweep: out= is offered
+    source = [f"def {name}({', '.join(params)}, *, on_error='raise'"
+              + (", out=None):" if sweeps else "):")]
     namespace = {"_spec": spec}
     if not spec.sweeps_tables and not spec._fixed:
         source += _fast_path(spec, namespace)
-    source.append(f"    return _spec(({arglist},), on_error)")
+    source.append(f"    return _spec(({arglist},), on_error{', out' if sweeps else ''})")
     # a real signature, so that help() and inspect show the book's names
     exec(compile("\n".join(source) + "\n", "<sarkp>", "exec"), namespace)
     function = namespace[name]
-    function.__doc__ = doc.rstrip() + "\n" + ON_ERROR_DOC
+    function.__doc__ = doc.rstrip() + "\n" + ON_ERROR_DOC + (OUT_DOC if sweeps else "")
     function.__module__ = "sarkp"
     function.spec = spec
     return function
@@ -715,7 +753,7 @@ def _fast_path(spec, namespace):
     and a computed result: one Fortran call and a tuple, nothing else.  Every other case
     (arrays, NaN, a failure, a warning) falls through to ``Routine.__call__``."""
     args = ", ".join(spec.inputs)
-    cond = ["on_error == 'raise'", "_t - _t == 0.0"]
+    cond = ["on_error == 'raise'", "out is None", "_t - _t == 0.0"]
     cond += [f"{a} > 0.0" for a in spec.inputs if a in spec.lengths]
     cond += [f"{a} >= 0.0" for a in spec.inputs if a in spec.nonnegative]
     cond += [f"{a} != 0.0" for a in spec.inputs if a in spec.nonzero]
