@@ -8,15 +8,17 @@ named) and writes module ``drv_<module>`` with, for each book routine NAME:
 * ``NAME_1(sarkp_mode, <the book's arguments>, <COMMON results>, sarkp_status)``: one call
   in the caller's mode;
 * ``NAME_n(sarkp_mode, sarkp_n, sarkp_inc, sarkp_kind, sarkp_nan, <inputs as arrays>,
-  sarkp_out, sarkp_status, sarkp_bad)``: a loop over ``sarkp_n`` positions, for
-  routines whose arguments are scalars or fixed-size arrays.  The results of position i go
-  to ``sarkp_out(i, k)``, k in the order of NAME_1's results (one array the caller owns:
-  the Python layer allocates it, or reuses the caller's ``out=``; no array per result).  Input k of position i is
-  element ``1 + (i-1)*sarkp_inc(k)``, so an input that is the same at every position is
-  passed once (``sarkp_inc(k) = 0``).  Each input is screened first, in the same loop (an
-  input passed once at the first position only), by its kind (``screen``: finite, length, non-negative, non-zero, branch); the first bad one
-  stops the loop and comes back in ``sarkp_bad`` = (input, element), and a NaN gives the
-  position status st_missing when ``sarkp_nan`` allows it.
+  sarkp_out, sarkp_status, sarkp_bad)``: a loop over ``sarkp_n`` positions, for routines
+  whose arguments are scalars or fixed-size arrays.  The results of position i go to
+  ``sarkp_out(i, k)``, k in the order of NAME_1's results: one array the caller owns (the
+  Python layer allocates it, or takes the caller's ``out=``), none per result.  Input k of
+  position i is element ``1 + (i-1)*sarkp_inc(k)``, so an input that is the same at every
+  position is passed once (``sarkp_inc(k) = 0``).  Each input is screened first, in the
+  same loop (an input passed once, at the first position only), by its kind (``screen``:
+  finite, length, non-negative, non-zero, branch); the first bad one stops the loop and
+  comes back in ``sarkp_bad(1:2)`` = (input, element); ``sarkp_bad(3)`` counts the
+  positions whose status is not st_ok.  A NaN gives the position status st_missing when
+  ``sarkp_nan`` allows it.
 
 Every driver sets the mode (prmtr's ``set_mode``) inside the same Fortran call.  The
 drivers release the GIL (f2py ``threadsafe``): the mode lives in thread-private variables
@@ -333,7 +335,7 @@ def sweep_driver(mod, p, variables):
         arg = p.args[a]
         w.append("    " + arg.decl(dims=arg.dims + ("*",)))
     w += [f"    real(dp), intent(inout) :: sarkp_out(sarkp_n, {len(results)})",
-          "    integer, intent(out) :: sarkp_status(sarkp_n), sarkp_bad(2)",
+          "    integer, intent(out) :: sarkp_status(sarkp_n), sarkp_bad(3)",
           "    integer :: sarkp_i, sarkp_state, sarkp_once"
           + (", sarkp_t, sarkp_j" if any(p.args[a].type == "real(dp)" for a in ins) else "")
           + (", sarkp_l" if any(p.args[a].dims for a in ins) else "")]
@@ -399,6 +401,7 @@ def sweep_driver(mod, p, variables):
         w.append(f"        if (.not. ({finite_test(real_out)})) sarkp_status(sarkp_i) = st_range")
         w.append("      end if")
     w.append("    end do")
+    w.append("    sarkp_bad(3) = count(sarkp_status /= st_ok)   ! 0: nothing to look at")
     w.append(f"  end subroutine {p.name}_n")
     return w
 
@@ -411,7 +414,7 @@ SCREEN = """
   integer function screen(x, kind, nan, k, j, bad)
     real(dp), intent(in) :: x
     integer, intent(in) :: kind, nan, k, j
-    integer, intent(inout) :: bad(2)
+    integer, intent(inout) :: bad(3)
     screen = 0
     if (x /= x) then
       screen = 1
@@ -431,7 +434,10 @@ SCREEN = """
         if (x /= 1.0_dp .and. x /= -1.0_dp) screen = 2
       end select
     end if
-    if (screen == 2 .and. bad(1) == 0) bad = [k, j]
+    if (screen == 2 .and. bad(1) == 0) then
+      bad(1) = k
+      bad(2) = j
+    end if
   end function screen
 """
 

@@ -86,10 +86,9 @@ def _valid_inputs(spec, rng):
 SWEEPABLE = [n for n in NAMES if not ROUTINES[n].spec.sweeps_tables]
 
 
-@pytest.mark.parametrize("name", SWEEPABLE)
-def test_scalar_and_array_paths_agree_bit_for_bit(name):
-    """Random valid inputs, seven positions (four that the routine computes, three that
-    it may reject): one array call equals seven scalar calls, values and status."""
+def _seven_rows(name):
+    """Up to seven rows of random valid inputs of a sweepable routine: four that it
+    computes, then up to three that it may reject."""
     routine, spec = ROUTINES[name], ROUTINES[name].spec
     rng = np.random.default_rng(sum(map(ord, name)))
     computed, other = [], []
@@ -101,7 +100,17 @@ def test_scalar_and_array_paths_agree_bit_for_bit(name):
             (computed if ok else other).append(row)
             if len(computed) >= 4 and len(other) >= 3:
                 break
-        rows = computed[:4] + other[:3]
+    return computed, computed[:4] + other[:3]
+
+
+@pytest.mark.parametrize("name", SWEEPABLE)
+def test_scalar_and_array_paths_agree_bit_for_bit(name):
+    """Random valid inputs, seven positions (four that the routine computes, three that
+    it may reject): one array call equals seven scalar calls, values and status."""
+    routine, spec = ROUTINES[name], ROUTINES[name].spec
+    computed, rows = _seven_rows(name)
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
         columns = [np.array([r[k] for r in rows]) for k in range(len(spec.inputs))]
         arrays = routine(*columns, on_error="nan")
         scalars = [routine(*r, on_error="nan") for r in rows]
@@ -113,6 +122,57 @@ def test_scalar_and_array_paths_agree_bit_for_bit(name):
         fast = routine(*row)
         assert (fast,) == tuple(one[:-1]) if spec.function else tuple(fast) == tuple(one[:-1])
     assert any(int(s) in (0, 3) for s in arrays.status), f"{name}: no valid position drawn"
+
+
+@pytest.mark.parametrize("name", SWEEPABLE)
+def test_out_is_written_in_place(name):
+    """out=: the results are the rows of the caller's array, equal bit for bit to those of
+    a call without it, whatever the array held before (failed positions too)."""
+    routine, spec = ROUTINES[name], ROUTINES[name].spec
+    _, rows = _seven_rows(name)
+    m = len(rows)
+    columns = [np.array([r[k] for r in rows]) for k in range(len(spec.inputs))]
+    # an m x m broadcast: the first input along the second axis, the rest along the first
+    columns = [c.reshape(((1, m) if k == 0 else (m, 1)) + c.shape[1:])
+               for k, c in enumerate(columns)]
+    with warnings.catch_warnings():
+        warnings.simplefilter("ignore")
+        fresh = routine(*columns, on_error="nan")
+        shape = np.shape(fresh.status)                           # (m, m), or (1, m)
+        buf = np.full((len(spec.outputs),) + shape, 12345.0)
+        again = routine(*columns, on_error="nan", out=buf)
+    values = again[:-1]
+    assert len(values) == len(spec.outputs)
+    for k, (a, b) in enumerate(zip(fresh[:-1], values)):
+        assert b.shape == shape and np.shares_memory(b, buf[k])
+        np.testing.assert_array_equal(a, b, err_msg=f"{name}.{spec.outputs[k]}")
+        np.testing.assert_array_equal(buf[k], a)
+    np.testing.assert_array_equal(fresh.status, again.status)
+
+
+@pytest.mark.parametrize("out, what", [
+    (np.empty((22, 5)), r"shape \(22, 4\)"),
+    (np.empty((22, 4), np.float32), "float32"),
+    (np.empty((4, 22)).T, "not C-contiguous"),
+    ([[0.0] * 4] * 22, "list"),
+])
+def test_bad_out_is_named(out, what):
+    xa = np.linspace(0.0, 0.1, 4)
+    with pytest.raises(ValueError, match=f"DKNMA1: out must be .*{what}"):
+        sarkp.DKNMA1(xa, 0.1, 0.4, 0.0, 0.35, 0.3, 0.3, 1.57, 0, 0, 0.9, 3.14, 0, 0, 1, 0,
+                     out=out)
+    frozen = np.empty((22, 4))
+    frozen.flags.writeable = False
+    with pytest.raises(ValueError, match="read-only"):
+        sarkp.DKNMA1(xa, 0.1, 0.4, 0.0, 0.35, 0.3, 0.3, 1.57, 0, 0, 0.9, 3.14, 0, 0, 1, 0,
+                     out=frozen)
+
+
+def test_out_with_scalar_inputs_and_no_out_for_tables():
+    buf = np.empty(2)
+    r = sarkp.DVKT(0.0, 0.0, 3.0, 4.0, out=buf)
+    assert (r.RZ, r.FI) == (5.0, math.atan2(4.0, 3.0)) and buf[0] == 5.0
+    assert "out" not in inspect.signature(sarkp.GELG).parameters
 
 
 @pytest.mark.parametrize("name", NAMES)

@@ -418,35 +418,40 @@ class Routine:
 
     def _call_arrays(self, args, on_error, buffer=None):
         allow_nan = on_error == "nan"
-        values, shapes = [], []
-        for arg, a in zip(self.inputs, args):
-            if type(a) is float:                        # passed to Fortran as it is
-                values.append(a)
+        # pass 1: Python numbers stay as they are (Fortran gets them once, inc 0); the
+        # rest become float64 arrays, whose shapes broadcast
+        values, arrays, shapes, fixed = list(args), [], set(), self._fixed
+        for k, a in enumerate(args):
+            t = type(a)
+            if t is float:
                 continue
-            if type(a) is int:
+            if t is int:
                 try:
-                    values.append(float(a))
+                    values[k] = float(a)
                 except OverflowError:
-                    raise ValueError(f"{self.name}: {arg} = {a} is an integer too large "
-                                     f"for a double") from None
+                    raise ValueError(f"{self.name}: {self.inputs[k]} = {a} is an integer "
+                                     f"too large for a double") from None
                 continue
-            if type(a) is not np.ndarray or a.dtype != _FLOAT64:
-                a = as_real_array(self.name, arg, a)
-            if arg in self._fixed:
-                k = self._fixed[arg]
-                if a.ndim < 1 or a.shape[-1] != k:
-                    raise ValueError(f"{self.name}: {arg} must hold {k} values (last axis "
-                                     f"of length {k}), not shape {a.shape}")
-                shapes.append(a.shape[:-1])
+            if t is not np.ndarray or a.dtype != _FLOAT64:
+                a = values[k] = as_real_array(self.name, self.inputs[k], a)
+            arrays.append(k)
+            if fixed and self.inputs[k] in fixed:
+                size = fixed[self.inputs[k]]
+                if a.ndim < 1 or a.shape[-1] != size:
+                    raise ValueError(f"{self.name}: {self.inputs[k]} must hold {size} values "
+                                     f"(last axis of length {size}), not shape {a.shape}")
+                shapes.add(a.shape[:-1])
             elif a.ndim:
-                shapes.append(a.shape)
-            values.append(a)
-        try:
-            shape = np.broadcast_shapes(*shapes)
-        except ValueError:
-            raise ValueError(f"{self.name}: the shapes of the inputs do not broadcast: "
-                             + ", ".join(f"{a} {np.shape(v)}" for a, v in
-                                         zip(self.inputs, values))) from None
+                shapes.add(a.shape)
+        if len(shapes) == 1:
+            (shape,) = shapes
+        else:
+            try:
+                shape = np.broadcast_shapes(*shapes)
+            except ValueError:
+                raise ValueError(f"{self.name}: the shapes of the inputs do not broadcast: "
+                                 + ", ".join(f"{a} {np.shape(v)}" for a, v in
+                                             zip(self.inputs, values))) from None
         n = math.prod(shape)
         # the results: the rows of one array, the caller's out= or a new one (issue 9:
         # one allocation per call, none with out=); Fortran fills column k of its
@@ -456,35 +461,36 @@ class Routine:
             buffer = np.empty((nres,) + shape)
         else:
             buffer = self._out_buffer(buffer, shape)
+        out = list(buffer) if buffer.ndim > 1 else [buffer[i, ...] for i in range(nres)]
         if n == 0:
-            empty = [buffer[i, ...] for i in range(nres)]
-            return self._result(empty, np.zeros(shape, np.int32) if allow_nan else None)
-        flat, incs = [], []
-        for arg, a in zip(self.inputs, values):
-            if type(a) is float:
-                flat.append(a)
-                incs.append(0)
-            elif arg in self._fixed:
-                k = self._fixed[arg]
+            return self._result(out, np.zeros(shape, np.int32) if allow_nan else None)
+        # pass 2: each array as Fortran walks it, one element per position (inc 1) or
+        # one for all (inc 0)
+        flat, incs = list(values), [0] * len(values)
+        for k in arrays:
+            a = values[k]
+            if fixed and self.inputs[k] in fixed:
+                size = fixed[self.inputs[k]]
                 if math.prod(a.shape[:-1]) == 1:
-                    flat.append(a.reshape(k, 1))
-                    incs.append(0)
+                    flat[k] = a.reshape(size, 1)
                 else:
-                    flat.append(np.broadcast_to(a, shape + (k,)).reshape(n, k).T)
-                    incs.append(1)
+                    flat[k] = np.broadcast_to(a, shape + (size,)).reshape(n, size).T
+                    incs[k] = 1
             elif a.size == 1:
-                flat.append(a.reshape(1))
-                incs.append(0)
+                if a.ndim != 1:
+                    flat[k] = a.reshape(1)
             else:
-                flat.append((a if a.shape == shape else np.broadcast_to(a, shape)).reshape(n))
-                incs.append(1)
+                if a.shape != shape:
+                    a = np.broadcast_to(a, shape)
+                flat[k] = a if a.ndim == 1 else a.reshape(n)
+                incs[k] = 1
         status, bad = self.many(MODE_CODE.get(), incs, self._kinds, allow_nan, *flat,
                                 buffer.reshape(nres, n).T)     # f2py takes n from it
         if bad[0]:
             self._raise_bad_input(int(bad[0]) - 1, int(bad[1]) - 1, flat, incs, shape)
         status = status.reshape(shape)
+        failures = bad[2]                               # positions whose status is not OK
         # integer results (DZBPL's tooth numbers) come as floats: a failure holds NaN
-        out = [buffer[i, ...] for i in range(nres)]
         if self._python_checked:                        # integer sets Fortran cannot screen
             for arg, a in zip(self.inputs, values):
                 if arg in self._python_checked:
@@ -501,7 +507,8 @@ class Routine:
                         failed_check = np.full(shape, -1, dtype=np.int8)
                     status = np.where(fails, check.status, status).astype(np.int32)
                     failed_check[fails] = k
-        if status.any():
+                    failures = True
+        if failures:
             def message(code, index):
                 if code == ST_RANGE:
                     return self._range_message(out, index)
