@@ -64,7 +64,8 @@ def main():
                  best_per_call(lambda: sarkp.DVKT(*a), 1, 5) / N_ARRAY, "per element"))
     inc, kind = np.ones(4, np.int32), sarkp.DVKT.spec._kinds
     rows.append((f"DVKT arrays of {N_ARRAY:.0e}, raw driver dvkt_n",
-                 best_per_call(lambda: drv.dvkt_n(mode, N_ARRAY, inc, kind, 0, *a), 1, 5)
+                 best_per_call(lambda: drv.dvkt_n(mode, inc, kind, 0, *a,
+                                                  np.empty((2, N_ARRAY)).T), 1, 5)
                  / N_ARRAY,
                  "per element"))
     rows.append((f"DVKT arrays of {N_ARRAY:.0e}, NumPy hypot+arctan2",

@@ -327,14 +327,21 @@ contains
     ! first order both angles move by 2u(d^2+l2^2+l3^2)/(d h); second order (flat triangle)
     ! by sqrt(2 dc), dc the larger move of the two cosines
     dc = 2.0_dp*uround*(d*d + l2*l2 + l3*l3)/(d*min(l2, l3))
-    if (h > 0.0_dp) then
-      dang = min(2.0_dp*uround*(d*d + l2*l2 + l3*l3)/(d*h), sqrt(2.0_dp*dc))
-    else
-      dang = sqrt(2.0_dp*dc)
-    end if
+    dang = huge(1.0_dp)
+    if (h > 0.0_dp) dang = 2.0_dp*uround*(d*d + l2*l2 + l3*l3)/(d*h)
+    if (.not. dang*dang <= 2.0_dp*dc) dang = sqrt(2.0_dp*dc)   ! min(first, second order)
     dang = dang + 16.0_dp*uround
     st = st_ok
   end subroutine tri_apex
+
+  ! x * 2**e, exactly: tri_apex's units back to the caller's (e = 0, the usual case, costs
+  ! no library call).
+  pure real(dp) function unscale(x, e)
+    real(dp), intent(in) :: x
+    integer, intent(in) :: e
+    unscale = x
+    if (e /= 0) unscale = scale(x, e)
+  end function unscale
 
   ! The four-argument DUGL1 that DKNMA1-DKNMA3 call (L2598, L2698, L2775) is not the book's
   ! II.3 DUGL1(X1, Y1, X2, Y2); the DKNMA comments name the helpers of textbook [1] (L2578).
@@ -413,7 +420,8 @@ contains
     real(dp), intent(in) :: xa, ya, xc, yc, rz2, rz3, p, aaa
     real(dp), intent(out) :: fi2, fi3, xb, yb
     integer, intent(out) :: ier
-    real(dp) :: rzac, fiac, ugbac, ugbca, q, dang
+    real(dp) :: rzac, fiac, ugbac, ugbca, q, dang, pa, h, pc, ux, uy
+    integer :: e
     fi2 = 0.0_dp; fi3 = 0.0_dp; xb = 0.0_dp; yb = 0.0_dp
     call dvkt(xa, ya, xc, yc, rzac, fiac)
     if (rzac == 0.0_dp) then
@@ -424,14 +432,26 @@ contains
       end if
       return
     end if
-    call tri_angles(rzac, rz2, rz3, ugbac, ugbca, dang, ier)
+    call tri_apex(rzac, rz2, rz3, pa, h, pc, e, dang, ier)
     if (failed(ier)) return
+    ugbac = atan2(h, pa)                          ! tri_angles' angles
+    ugbca = atan2(h, pc)
     q = book_sign(1.0_dp, p)
     fiac = dugol(fiac)
     fi2 = dugol(fiac - q*ugbac)
     fi3 = dugol(fiac + q*ugbca - q*pi)
-    xb = xa + rz2*cos(fi2)
-    yb = ya + rz2*sin(fi2)
+    if (printed_mode /= 0) then
+      xb = xa + rz2*cos(fi2)
+      yb = ya + rz2*sin(fi2)
+    else
+      ! corrected (issue 9): B from the apex, B - A = pa u - P h n (u the unit vector
+      ! A->C, n its normal), the same point without a cosine and a sine of FI2
+      ux = (xc - xa)/rzac
+      uy = (yc - ya)/rzac
+      h = q*h
+      xb = xa + unscale(pa*ux + h*uy, e)
+      yb = ya + unscale(pa*uy - h*ux, e)
+    end if
     ier = settle(ier, dang + 8.0_dp*uround*(1.0_dp + abs(fiac)), [xb, yb])
     if (failed(ier)) then
       fi2 = 0.0_dp; fi3 = 0.0_dp; xb = 0.0_dp; yb = 0.0_dp
@@ -1069,23 +1089,14 @@ contains
       fi3 = atan2(r3y, r3x)
       if (fi2 == -pi) fi2 = pi                    ! the range (-pi, pi] of DUGL2
       if (fi3 == -pi) fi3 = pi
-      l2s = rz2
-      l3s = rz3
-      if (e /= 0) then
-        l2s = scale(rz2, -e)
-        l3s = scale(rz3, -e)
-      end if
+      l2s = unscale(rz2, -e)
+      l3s = unscale(rz3, -e)
       c2 = r2x/l2s
       s2 = r2y/l2s
       c3 = r3x/l3s
       s3 = r3y/l3s
-      if (e /= 0) then
-        xb = xa + scale(r2x, e)
-        yb = ya + scale(r2y, e)
-      else
-        xb = xa + r2x
-        yb = ya + r2y
-      end if
+      xb = xa + unscale(r2x, e)
+      yb = ya + unscale(r2y, e)
       fik = pi                                    ! the rounding allowance below at its largest
     end if
     da = dang + 4.0_dp*uround*(2.0_dp + abs(fik))
