@@ -60,3 +60,17 @@ def test_thread_recipe_gives_the_one_call_result():
     exec(compile(textwrap.dedent(block), "README.md", "exec"), namespace)
     whole = namespace["kinematics"](namespace["fi"])
     assert np.array_equal(namespace["W3"], whole.W3)
+
+
+def test_out_recipe_writes_into_the_buffer():
+    """The README's out= recipe runs (its assert included) and equals a call without it."""
+    text = README.read_text(encoding="utf-8")
+    block = re.search(r"\* Sweeps over arrays take `out=`:.*?```python\n(.*?)```", text,
+                      re.S).group(1)
+    namespace = {"np": np, "sarkp": sarkp}
+    exec(compile(textwrap.dedent(block), "README.md", "exec"), namespace)
+    fi, buf, r = namespace["fi"], namespace["buf"], namespace["r"]
+    fresh = sarkp.DPRM1(0.1 * np.cos(fi), 0.1 * np.sin(fi), 0.4, 0.0, 0.35, 0.3, -1.0)
+    for k, name in enumerate(fresh._fields):
+        assert np.array_equal(getattr(r, name), getattr(fresh, name))
+        assert np.array_equal(buf[k], getattr(fresh, name))
