@@ -361,28 +361,35 @@ contains
     acc_dir = dugl3(fi, pi - atan2(abs(e), w*w), e)
   end function acc_dir
 
-  ! e(FI + K*PI/2) for K = -1, 1 or 2, from C = cos FI and S = sin FI.  The book forms the
-  ! angle sum (FI + PID2, FI + PI, DUGL3's FI +- PI/2) and takes its cosine and sine.
-  ! Corrected mode uses the exact identities instead (issue 9: one sincos per angle; the
-  ! rounding of the sum is gone too).  As-printed mode keeps the book's sequence: with
-  ! PI = 3.14159 the two differ by about 3e-6, which a printed figure can show.
-  pure subroutine turn(fi, c, s, k, ct, st)
-    real(dp), intent(in) :: fi, c, s
+  ! The unit vector e(BOOK) of an angle the book forms as BOOK = FI + K*PI/2 (FI + PID2,
+  ! FI - PI, DUGL3's FI +- PI/2, ...), given C = cos FI and S = sin FI.  As printed: the
+  ! cosine and sine of BOOK itself, the book's sequence (with PI = 3.14159 the two ways
+  ! differ by about 3e-6, which a printed figure can show).  Corrected: (C, S) turned by K
+  ! quarter turns, exactly, with no library call and no rounding of the sum (issue 9: one
+  ! sincos per angle).
+  pure subroutine turn(book, c, s, k, ct, st)
+    real(dp), intent(in) :: book, c, s
     integer, intent(in) :: k
     real(dp), intent(out) :: ct, st
     if (printed_mode /= 0) then
-      ct = cos(fi + k*pid2)
-      st = sin(fi + k*pid2)
-    else if (k == 1) then
+      ct = cos(book)
+      st = sin(book)
+      return
+    end if
+    select case (modulo(k, 4))
+    case (0)
+      ct = c
+      st = s
+    case (1)
       ct = -s
       st = c
-    else if (k == -1) then
-      ct = s
-      st = -c
-    else
+    case (2)
       ct = -c
       st = -s
-    end if
+    case default
+      ct = s
+      st = -c
+    end select
   end subroutine turn
 
   ! The Cartesian components m*e(FI) of a vector given as (modulus, direction); a zero
@@ -645,12 +652,21 @@ contains
     real(dp), intent(in) :: rz2, fi2, rz3, fi3, va, ala, vc, alc, aaa
     real(dp), intent(out) :: vba, alba, vbc, albc, vb, alb, w2, w3
     integer, intent(out) :: ier
-    real(dp) :: y1, y2, sb, rel
+    real(dp) :: y1, y2, sb, rel, c2, s2, c3, s3, n2x, n2y, n3x, n3y, vax, vay, vcx, vcy
+    real(dp) :: tx, ty, prx, pry
     vba = 0.0_dp; alba = 0.0_dp; vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp
     w2 = 0.0_dp; w3 = 0.0_dp
+    ! each direction's cosine and sine once (turn, components; issue 9)
+    c2 = cos(fi2)
+    s2 = sin(fi2)
+    c3 = cos(fi3)
+    s3 = sin(fi3)
+    call turn(fi2 + pid2, c2, s2, 1, n2x, n2y)      ! e(FI2 + PID2), e(FI3 + PID2)
+    call turn(fi3 + pid2, c3, s3, 1, n3x, n3y)
+    call components(va, ala, vax, vay)
+    call components(vc, alc, vcx, vcy)
     sb = abs(va) + abs(vc)
-    call solve2e(cos(fi2 + pid2), -cos(fi3 + pid2), sin(fi2 + pid2), -sin(fi3 + pid2), &
-                 vc*cos(alc) - va*cos(ala), vc*sin(alc) - va*sin(ala), &
+    call solve2e(n2x, -n3x, n2y, -n3y, vcx - vax, vcy - vay, &
                  4.0_dp*uround*(2.0_dp + max(abs(fi2), abs(fi3))), &
                  4.0_dp*uround*(1.0_dp + max(abs(ala), abs(alc)))*sb, sb, y1, y2, ier, rel)
     if (failed(ier)) return
@@ -658,7 +674,12 @@ contains
     vba = abs(y1)
     albc = dugl3(fi3, pid2, y2)
     vbc = abs(y2)
-    call dsmvkt(va, ala, vba, alba, vb, alb)
+    ! DSMVKT(VA, ALA, VBA, ALBA, VB, ALB) on the components already at hand
+    call turn(alba, c2, s2, quarter(y1), tx, ty)    ! e(ALBA)
+    prx = vax + vba*tx
+    pry = vay + vba*ty
+    vb = norm2d(prx, pry)
+    alb = dugl5(prx, pry)
     w2 = domega(rz2, vba, alba - fi2)
     w3 = domega(rz3, vbc, albc - fi3)
     ier = settle(ier, rel, [vba, vbc, vb, w2, w3])
@@ -816,15 +837,27 @@ contains
     real(dp), intent(in) :: aa, ba, ac, bc, rz2, fi2, rz3, fi3, w2, w3, aaa
     real(dp), intent(out) :: abat, bbat, abct, bbct, ab, bb, e2, e3
     integer, intent(out) :: ier
-    real(dp) :: y1, y2, a, b, an2, an3, sb, rel
+    real(dp) :: y1, y2, a, b, an2, an3, sb, rel, c2, s2, c3, s3, n2x, n2y, n3x, n3y
+    real(dp) :: m2x, m2y, m3x, m3y, aax, aay, acx, acy, tx, ty, prx, pry
     abat = 0.0_dp; bbat = 0.0_dp; abct = 0.0_dp; bbct = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp
     e2 = 0.0_dp; e3 = 0.0_dp
     an2 = w2**2*rz2
     an3 = w3**2*rz3
     sb = abs(aa) + abs(ac) + an2 + an3
-    call solve2e(cos(fi2 + pid2), -cos(fi3 + pid2), sin(fi2 + pid2), -sin(fi3 + pid2), &
-                 ac*cos(bc) + an3*cos(fi3 - pi) - aa*cos(ba) - an2*cos(fi2 - pi), &
-                 ac*sin(bc) + an3*sin(fi3 - pi) - aa*sin(ba) - an2*sin(fi2 - pi), &
+    ! each direction's cosine and sine once (turn, components; issue 9)
+    c2 = cos(fi2)
+    s2 = sin(fi2)
+    c3 = cos(fi3)
+    s3 = sin(fi3)
+    call turn(fi2 + pid2, c2, s2, 1, n2x, n2y)      ! e(FI2 + PID2), e(FI3 + PID2)
+    call turn(fi3 + pid2, c3, s3, 1, n3x, n3y)
+    call turn(fi2 - pi, c2, s2, -2, m2x, m2y)       ! e(FI2 - PI), e(FI3 - PI)
+    call turn(fi3 - pi, c3, s3, -2, m3x, m3y)
+    call components(aa, ba, aax, aay)
+    call components(ac, bc, acx, acy)
+    call solve2e(n2x, -n3x, n2y, -n3y, &
+                 acx + an3*m3x - aax - an2*m2x, &
+                 acy + an3*m3y - aay - an2*m2y, &
                  4.0_dp*uround*(2.0_dp + max(abs(fi2), abs(fi3))), &
                  4.0_dp*uround*(4.0_dp + max(abs(ba), abs(bc), abs(fi2), abs(fi3)))*sb, sb, &
                  y1, y2, ier, rel)
@@ -837,8 +870,18 @@ contains
     else
       abct = abs(y2)          ! E-DUSKR1-1: corrected
     end if
-    call dsmvkt(aa, ba, an2, fi2 - pi, a, b)
-    call dsmvkt(a, b, abat, bbat, ab, bb)
+    if (printed_mode /= 0) then
+      ! as printed: two DSMVKT, the partial sum AA + ABAN through its polar form
+      call dsmvkt(aa, ba, an2, fi2 - pi, a, b)
+      call dsmvkt(a, b, abat, bbat, ab, bb)
+    else
+      ! corrected (issue 9): the same vector AA + ABAN + ABAT summed by components
+      call turn(bbat, c2, s2, quarter(y1), tx, ty)  ! e(BBAT)
+      prx = aax + an2*m2x + abat*tx
+      pry = aay + an2*m2y + abat*ty
+      ab = norm2d(prx, pry)
+      bb = dugl5(prx, pry)
+    end if
     e2 = domega(rz2, abat, bbat - fi2)
     e3 = domega(rz3, abct, bbct - fi3)
     ier = settle(ier, rel, [abat, abct, ab, e2, e3])
@@ -1103,8 +1146,8 @@ contains
     est = da
     ! The velocity and acceleration systems have the columns e(FI2 + PI/2), -e(FI3 + PI/2)
     ! (L2615, L2640); each direction's cosine and sine is taken once (turn, components).
-    call turn(fi2, c2, s2, 1, n2x, n2y)
-    call turn(fi3, c3, s3, 1, n3x, n3y)
+    call turn(fi2 + pid2, c2, s2, 1, n2x, n2y)
+    call turn(fi3 + pid2, c3, s3, 1, n3x, n3y)
     call components(va, ala, vax, vay)
     call components(vc, alc, vcx, vcy)
     sb = abs(va) + abs(vc)
@@ -1120,7 +1163,7 @@ contains
     albc = dugl3(fi3, pi/2.0_dp, y2)
     vba = abs(y1)
     vbc = abs(y2)
-    call turn(fi2, c2, s2, quarter(y1), tx, ty)    ! e(ALBA)
+    call turn(alba, c2, s2, quarter(y1), tx, ty)    ! e(ALBA)
     prx = vax + vba*tx
     pry = vay + vba*ty
     vb = norm2d(prx, pry)
@@ -1132,8 +1175,8 @@ contains
       abcn = w3**2*rz3
       call components(aa, ba, aax, aay)
       call components(ac, bc, acx, acy)
-      call turn(fi2, c2, s2, 2, m2x, m2y)          ! e(FI2 + PI), e(FI3 + PI)
-      call turn(fi3, c3, s3, 2, m3x, m3y)
+      call turn(fi2 + pi, c2, s2, 2, m2x, m2y)      ! e(FI2 + PI), e(FI3 + PI)
+      call turn(fi3 + pi, c3, s3, 2, m3x, m3y)
       sb = abs(aa) + abs(ac) + aban + abcn
       call solve2e(n2x, -n3x, n2y, -n3y, &
                    acx + abcn*m3x - aax - aban*m2x, acy + abcn*m3y - aay - aban*m2y, da, &
@@ -1152,7 +1195,7 @@ contains
       bbct = dugl3(fi3, pi/2.0_dp, y2)
       abat = abs(y1)
       abct = abs(y2)
-      call turn(fi2, c2, s2, quarter(y1), tx, ty)  ! e(BBAT)
+      call turn(bbat, c2, s2, quarter(y1), tx, ty)  ! e(BBAT)
       prx = aax + aban*m2x + abat*tx
       pry = aay + aban*m2y + abat*ty
       ab = norm2d(prx, pry)
@@ -1193,8 +1236,9 @@ contains
     real(dp), intent(out) :: abat, bbat, abbm, bbbm, ab, bb, e2
     integer, intent(out) :: ier
     real(dp) :: cm, sm, dx, dy, so, yb1, xb1, c, y1, y2, vbx, vby, abx, aby, bxa, bya
-    real(dp) :: dc, da, sb, relv, rela, ev, est
-    integer :: st2
+    real(dp) :: dc, da, sb, relv, rela, ev, est, c2, s2, n2x, n2y, vax, vay, vmx, vmy, tx, ty
+    real(dp) :: ux, uy, kx, ky, wx, wy, m2x, m2y, amx, amy, aax, aay
+    integer :: st2, kbm
     xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp; vbbm = 0.0_dp
     albbm = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; aban = 0.0_dp; abk = 0.0_dp
     bbk = 0.0_dp; abat = 0.0_dp; bbat = 0.0_dp; abbm = 0.0_dp; bbbm = 0.0_dp; ab = 0.0_dp
@@ -1230,9 +1274,14 @@ contains
                         + (1.0_dp + abs(fim) + abs(eta))*(abs(dx) + abs(dy)))/rz2
     da = angle_sensitivity(c, dc) + 4.0_dp*uround*(2.0_dp + abs(fim) + abs(fi2))
     est = da
+    ! e(FI2) = (B - A)/RZ2; each direction's cosine and sine once (turn; issue 9)
+    c2 = bxa/rz2
+    s2 = bya/rz2
+    call turn(fi2 + pi/2.0_dp, c2, s2, 1, n2x, n2y)
+    call components(va, ala, vax, vay)
+    call components(vbm, albm, vmx, vmy)
     sb = abs(va) + abs(vbm)
-    call solve2e(cos(fi2 + pi/2.0_dp), -cm, sin(fi2 + pi/2.0_dp), -sm, &
-                 vbm*cos(albm) - va*cos(ala), vbm*sin(albm) - va*sin(ala), da, &
+    call solve2e(n2x, -cm, n2y, -sm, vmx - vax, vmy - vay, da, &
                  4.0_dp*uround*(1.0_dp + max(abs(ala), abs(albm)))*sb, sb, y1, y2, ier, relv)
     if (failed(ier)) then
       xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp
@@ -1244,8 +1293,11 @@ contains
     alba = dugl3(fi2, pi/2.0_dp, y1)
     vbbm = abs(y2)
     albbm = dugl4(fim, pi, y2)
-    vbx = va*cos(ala) + vba*cos(alba)
-    vby = va*sin(ala) + vba*sin(alba)
+    kbm = 0                                          ! ALBBM = FIM + KBM*PI/2
+    if (y2 < 0.0_dp) kbm = -2
+    call turn(alba, c2, s2, quarter(y1), tx, ty)     ! e(ALBA)
+    vbx = vax + vba*tx
+    vby = vay + vba*ty
     vb = norm2d(vbx, vby)
     alb = dugl5(vbx, vby)
     w2 = domega(rz2, vba, alba - fi2)
@@ -1254,9 +1306,14 @@ contains
       abk = 2.0_dp*vbbm*abs(wm)
       bbk = dugl3(albbm, pi/2.0_dp, wm)
       sb = abs(aa) + abs(abm) + aban + abk
-      call solve2e(cos(alba), -cos(albbm), sin(alba), -sin(albbm), &
-                   abm*cos(bbm) + abk*cos(bbk) - aa*cos(ba) - aban*cos(fi2 + pi), &
-                   abm*sin(bbm) + abk*sin(bbk) - aa*sin(ba) - aban*sin(fi2 + pi), da, &
+      call turn(albbm, cm, sm, kbm, ux, uy)            ! e(ALBBM)
+      call turn(bbk, cm, sm, kbm + quarter(wm), kx, ky) ! e(BBK)
+      call turn(fi2 + pi, c2, s2, 2, m2x, m2y)         ! e(FI2 + PI)
+      call components(abm, bbm, amx, amy)
+      call components(aa, ba, aax, aay)
+      call solve2e(tx, -ux, ty, -uy, &
+                   amx + abk*kx - aax - aban*m2x, &
+                   amy + abk*ky - aay - aban*m2y, da, &
                    4.0_dp*uround*(6.0_dp + max(abs(ba), abs(bbm), abs(fim), abs(fi2)))*sb &
                    + (2.0_dp*abs(y1)*ev + ev*ev)/rz2 + 2.0_dp*abs(wm)*ev, sb, y1, y2, st2, rela)
       ier = st2
@@ -1271,8 +1328,9 @@ contains
       bbat = dugl4(alba, pi, y1)
       abbm = abs(y2)
       bbbm = dugl4(albbm, pi, y2)
-      abx = abm*cos(bbm) + abk*cos(bbk) + abbm*cos(bbbm)
-      aby = abm*sin(bbm) + abk*sin(bbk) + abbm*sin(bbbm)
+      call turn(bbbm, cm, sm, kbm + quarter(y2) - 1, wx, wy)  ! e(BBBM)
+      abx = amx + abk*kx + abbm*wx
+      aby = amy + abk*ky + abbm*wy
       ab = norm2d(abx, aby)
       bb = dugl5(abx, aby)
       e2 = domega(rz2, abat, sin(bbat - fi2))          ! E-DKNMA2-4: book BBAT - FI2
