@@ -61,6 +61,13 @@
 ! E-DKNMA4-5 for the directions the book took from absolute coordinates); lengths of
 ! 1e-300 or 1e300 neither underflow nor overflow where the answer is a double.
 !
+! Corrected mode, for speed (issue 9; the same mathematics, no ERRATA entry): DPRM1 and
+! DKNMA1 take B from the triangle's apex (tri_apex) instead of a cosine and a sine of FI2,
+! and DKNMA1 its FI2, FI3 as the directions of B - A, B - C; DKNMA1, DKNMA2, DSKOR1 and
+! DUSKR1 take each direction's cosine and sine once and get e(FI + PI/2), e(FI + PI) by
+! the exact identities (turn), and sum vectors by components where the book goes through
+! DSMVKT's polar form and back.  As-printed mode keeps the book's sequence of operations.
+!
 ! ERRATA ids of this chapter: E-<ROUTINE>-<n>, listed in docs/ERRATA.md.
 module kinematics
   use prmtr, only: dp, pi, pid2, printed_mode, book_sign, st_ok, st_assembly, st_singular, &
