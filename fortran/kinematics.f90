@@ -1188,7 +1188,7 @@ contains
       call solve2e(n2x, -n3x, n2y, -n3y, &
                    acx + abcn*m3x - aax - aban*m2x, acy + abcn*m3y - aay - aban*m2y, da, &
                    4.0_dp*uround*(4.0_dp + max(abs(ba), abs(bc)))*sb &
-                   + (2.0_dp*abs(y1)*ev + ev*ev)/rz2 + (2.0_dp*abs(y2)*ev + ev*ev)/rz3, &
+                   + ev/rz2*(2.0_dp*abs(y1) + ev) + ev/rz3*(2.0_dp*abs(y2) + ev), &
                    sb, y1, y2, st2, rela)
       ier = st2
       if (failed(ier)) then
@@ -1322,7 +1322,7 @@ contains
                    amx + abk*kx - aax - aban*m2x, &
                    amy + abk*ky - aay - aban*m2y, da, &
                    4.0_dp*uround*(6.0_dp + max(abs(ba), abs(bbm), abs(fim), abs(fi2)))*sb &
-                   + (2.0_dp*abs(y1)*ev + ev*ev)/rz2 + 2.0_dp*abs(wm)*ev, sb, y1, y2, st2, rela)
+                   + ev/rz2*(2.0_dp*abs(y1) + ev) + 2.0_dp*abs(wm)*ev, sb, y1, y2, st2, rela)
       ier = st2
       if (failed(ier)) then
         xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp; vbbm = 0.0_dp

@@ -226,6 +226,37 @@ def test_kind1_link_ratios(ratio):
         assert all(math.isfinite(x) for x in v)
 
 
+@pytest.mark.parametrize("k", [-990, -500, -61, 61, 500, 600, 900])
+@pytest.mark.parametrize("mode", ["corrected", "as-printed"])
+def test_kind1_scales_by_powers_of_two(k, mode):
+    """A mechanism scaled by 2**k (exact in binary): positions, velocities and accelerations
+    scale by 2**k, angles, omegas and epsilons do not, from 1e-298 to 1e271.  Beyond 2**60
+    the triangle is solved in scaled units (tri_apex's exponent e /= 0).  At 2**600 the
+    acceleration's error estimate squared the velocities' error (1e-16 V)**2 and overflowed
+    (the position came back singular; now ev/RZ2*(2|Y1| + ev)).  The top is GELG's: like
+    LAPACK's DGESC2 it declines a right-hand side above about 1e291 times the pivot
+    (IER = -1), which DKNMA1's accelerations reach at 2**970."""
+    s = 2.0**k
+    a, c = (0.1 * math.cos(0.7), 0.1 * math.sin(0.7)), (0.4, 0.05)
+    args = dict(XA=a[0], YA=a[1], XC=c[0], YC=c[1], RZ2=0.35, RZ3=0.3, VA=0.3, ALA=2.3,
+                VC=0.0, ALC=0.0, AA=0.9, BA=3.8, AC=0.0, BC=0.0, P=1.0, ANALOG=0.0)
+    lengths = {"XA", "YA", "XC", "YC", "RZ2", "RZ3", "VA", "VC", "AA", "AC"}
+    scaled = {n: v * s if n in lengths else v for n, v in args.items()}
+    with sarkp.mode(mode):
+        base, big = K.DKNMA1(**scaled), K.DKNMA1(**args)
+        pb, pr = K.DPRM1(a[0] * s, a[1] * s, c[0] * s, c[1] * s, 0.35 * s, 0.3 * s, -1), \
+            K.DPRM1(a[0], a[1], c[0], c[1], 0.35, 0.3, -1)
+    for name in base._fields:
+        unit = s if name in {"XB", "YB", "VBA", "VBC", "VB", "ABCN", "ABAN", "ABAT", "ABCT",
+                             "AB"} else 1.0
+        assert getattr(base, name) / unit == pytest.approx(getattr(big, name), rel=1e-14,
+                                                           abs=1e-14), name
+    for name in pb._fields:
+        unit = s if name in {"XB", "YB"} else 1.0
+        assert getattr(pb, name) / unit == pytest.approx(getattr(pr, name), rel=1e-14,
+                                                         abs=1e-14), name
+
+
 # ---------------------------------------------------------------------------------------
 # kind 2 (RRP)
 # ---------------------------------------------------------------------------------------
