@@ -22,7 +22,7 @@ module gelg_mod
   use prmtr, only: dp, st_ok, st_singular, st_significance
   implicit none
   private
-  public :: gelg, gelg2, xerbla_calls, xerbla_last_routine, xerbla_last_info, lapack_probe
+  public :: gelg, gelg2, gelg2_lu, gelg2_solve, xerbla_calls, xerbla_last_routine, xerbla_last_info, lapack_probe
 
   integer :: xerbla_calls = 0                 ! how often LAPACK reported a bad argument
   character(len=32) :: xerbla_last_routine = ''
@@ -110,20 +110,36 @@ contains
   subroutine gelg2(a, c, st)
     real(dp), intent(inout) :: a(2, 2), c(2)
     integer, intent(out) :: st
-    real(dp), parameter :: prec = epsilon(1.0_dp), smlnum = tiny(1.0_dp)/epsilon(1.0_dp)
-    real(dp) :: amax, xmax, smin, t, temp
-    integer :: i, j, ipv, jpv
-
-    st = st_singular
-    amax = max(abs(a(1, 1)), abs(a(2, 1)), abs(a(1, 2)), abs(a(2, 2)))
-    if (.not. (amax > 0.0_dp) .or. amax > huge(amax)) then   ! zero, NaN or inf matrix
+    real(dp) :: amax
+    integer :: ipv, jpv
+    call gelg2_lu(a, ipv, jpv, amax, st)
+    if (st /= st_ok) then
       c = 0.0_dp
       return
     end if
-    ! DGETC2, step 1: the pivot is the last largest element in row order
-    xmax = 0.0_dp
+    call gelg2_solve(a, ipv, jpv, amax, c, st)
+  end subroutine gelg2
+
+  ! gelg2's elimination (DGETC2): A is overwritten by its factors, IPV, JPV are the pivot's
+  ! row and column, AMAX the largest |a| for GELG's EPS test.  st_singular (A unusable) or
+  ! st_ok.  A system solved twice with one matrix (DKNMA1's velocities and accelerations)
+  ! factors it once: the factors do not depend on the right-hand side, so the results are
+  ! bit for bit those of two gelg2 calls.
+  subroutine gelg2_lu(a, ipv, jpv, amax, st)
+    real(dp), intent(inout) :: a(2, 2)
+    integer, intent(out) :: ipv, jpv, st
+    real(dp), intent(out) :: amax
+    real(dp), parameter :: prec = epsilon(1.0_dp), smlnum = tiny(1.0_dp)/epsilon(1.0_dp)
+    real(dp) :: xmax, smin, t
+    integer :: i, j
+
+    st = st_singular
     ipv = 1
     jpv = 1
+    amax = max(abs(a(1, 1)), abs(a(2, 1)), abs(a(1, 2)), abs(a(2, 2)))
+    if (.not. (amax > 0.0_dp) .or. amax > huge(amax)) return   ! zero, NaN or inf matrix
+    ! DGETC2, step 1: the pivot is the last largest element in row order
+    xmax = 0.0_dp
     do i = 1, 2
       do j = 1, 2
         if (abs(a(i, j)) >= xmax) then
@@ -134,15 +150,12 @@ contains
       end do
     end do
     smin = max(prec*xmax, smlnum)
-    if (ipv /= 1) then                       ! swap the rows, and the right-hand sides
+    if (ipv /= 1) then                       ! swap the rows (the right-hand sides in the solve)
       do j = 1, 2
         t = a(1, j)
         a(1, j) = a(2, j)
         a(2, j) = t
       end do
-      t = c(1)
-      c(1) = c(2)
-      c(2) = t
     end if
     if (jpv /= 1) then                       ! swap the columns (undone on the solution)
       do i = 1, 2
@@ -151,15 +164,27 @@ contains
         a(i, 2) = t
       end do
     end if
-    if (abs(a(1, 1)) < smin) then            ! DGETC2 INFO = 1: GELG's IER = -1
-      c = 0.0_dp
-      return
-    end if
+    if (abs(a(1, 1)) < smin) return          ! DGETC2 INFO = 1: GELG's IER = -1
     a(2, 1) = a(2, 1)/a(1, 1)
     if (a(1, 2) /= 0.0_dp) a(2, 2) = a(2, 2) + a(2, 1)*(-a(1, 2))   ! DGER
-    if (abs(a(2, 2)) < smin) then            ! DGETC2 INFO = 2
-      c = 0.0_dp
-      return
+    if (abs(a(2, 2)) < smin) return          ! DGETC2 INFO = 2
+    st = st_ok
+  end subroutine gelg2_lu
+
+  ! gelg2's solve (DGESC2) with the factors of gelg2_lu; the status as for gelg2.
+  subroutine gelg2_solve(a, ipv, jpv, amax, c, st)
+    real(dp), intent(in) :: a(2, 2), amax
+    integer, intent(in) :: ipv, jpv
+    real(dp), intent(inout) :: c(2)
+    integer, intent(out) :: st
+    real(dp), parameter :: smlnum = tiny(1.0_dp)/epsilon(1.0_dp)
+    real(dp) :: t, temp
+
+    st = st_singular
+    if (ipv /= 1) then
+      t = c(1)
+      c(1) = c(2)
+      c(2) = t
     end if
     ! DGESC2: L, the scaling test (a scaled solution is GELG's IER = -1), then U
     c(2) = c(2) - a(2, 1)*c(1)
@@ -187,7 +212,7 @@ contains
     else
       st = st_ok
     end if
-  end subroutine gelg2
+  end subroutine gelg2_solve
 
   subroutine lapack_probe(info)
     ! Call LAPACK with an invalid argument on purpose (DGETRF with M = -1) and return

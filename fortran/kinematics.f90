@@ -73,10 +73,16 @@ module kinematics
   use prmtr, only: dp, pi, pid2, printed_mode, book_sign, st_ok, st_assembly, st_singular, &
                    st_significance, st_range, st_digits, norm2d
   use operators, only: dugl1, dugl2, dugl3, dugl4, dugl5, dugol, domega, dvkt, dsmvkt
-  use gelg_mod, only: gelg2
+  use gelg_mod, only: gelg2_lu, gelg2_solve
   implicit none
   private
   real(dp), parameter :: uround = epsilon(1.0_dp)/2     ! unit roundoff, 2**-53
+  ! A 2x2 system's matrix after GELG's elimination (factor2), with what solve2e's error
+  ! estimate needs of it: |A|_F and det A of the entries as given.
+  type :: system2
+    real(dp) :: lu(2, 2), amax, na, det
+    integer :: ipv, jpv, st
+  end type system2
   public :: dprm1, dprm2, dprm3, dprm4, dprm5
   public :: dskor1, dskor2, dskor3, dskor4, dskor5
   public :: duskr1, duskr2, duskr3, duskr4, duskr5
@@ -89,26 +95,9 @@ contains
   ! private helpers
   ! ============================================================================
 
-  ! GELG(Y, X, 2, 1, 0.0001, IER) on the system
-  !   a11*y1 + a12*y2 = b1,  a21*y1 + a22*y2 = b2      (X(i,j) = aij, as the book fills X)
-  ! and the GELG code mapped to a status.
-  subroutine solve2(a11, a12, a21, a22, b1, b2, y1, y2, st)
-    real(dp), intent(in) :: a11, a12, a21, a22, b1, b2
-    real(dp), intent(out) :: y1, y2
-    integer, intent(out) :: st
-    real(dp) :: x(2, 2), y(2)
-    x(1, 1) = a11
-    x(2, 1) = a21
-    x(1, 2) = a12
-    x(2, 2) = a22
-    y(1) = b1
-    y(2) = b2
-    call gelg2(x, y, st)
-    y1 = y(1)
-    y2 = y(2)
-  end subroutine solve2
-
-  ! solve2 plus the error estimate of the dead-centre policy (module header).  The matrix
+  ! GELG(Y, X, 2, 1, 0.0001, IER) on the system a11*y1 + a12*y2 = b1, a21*y1 + a22*y2 = b2
+  ! (X(i,j) = aij, as the book fills X), the GELG code mapped to a status, plus the error
+  ! estimate of the dead-centre policy (module header).  The matrix
   ! entries are components of unit vectors whose directions are known to +-da (radians);
   ! the right-hand side is known to +-db (absolute, as a vector) and sb is the size of the
   ! data it was built from (the sum of the moduli of its terms).  By the perturbation bound
@@ -122,31 +111,60 @@ contains
     real(dp), intent(in) :: a11, a12, a21, a22, b1, b2, da, db, sb
     real(dp), intent(out) :: y1, y2, rel
     integer, intent(out) :: st
-    real(dp) :: na, det, ny, den
+    type(system2) :: f
+    call factor2(a11, a12, a21, a22, f)
+    call solve2f(f, b1, b2, da, db, sb, y1, y2, st, rel)
+  end subroutine solve2e
+
+  ! solve2e in two steps, for two systems with one matrix (DKNMA1's velocities and
+  ! accelerations): factor2 does GELG's elimination once, solve2f each right-hand side;
+  ! the results are bit for bit those of two solve2e calls.
+  subroutine factor2(a11, a12, a21, a22, f)
+    real(dp), intent(in) :: a11, a12, a21, a22
+    type(system2), intent(out) :: f
+    f%lu(1, 1) = a11
+    f%lu(2, 1) = a21
+    f%lu(1, 2) = a12
+    f%lu(2, 2) = a22
+    call gelg2_lu(f%lu, f%ipv, f%jpv, f%amax, f%st)
+    f%na = sqrt(a11**2 + a12**2 + a21**2 + a22**2)
+    f%det = a11*a22 - a12*a21
+  end subroutine factor2
+
+  subroutine solve2f(f, b1, b2, da, db, sb, y1, y2, st, rel)
+    type(system2), intent(in) :: f
+    real(dp), intent(in) :: b1, b2, da, db, sb
+    real(dp), intent(out) :: y1, y2, rel
+    integer, intent(out) :: st
+    real(dp) :: ny, den, y(2)
     rel = huge(1.0_dp)
+    y1 = 0.0_dp; y2 = 0.0_dp
     if (.not. (abs(b1) <= huge(b1) .and. abs(b2) <= huge(b2))) then
-      y1 = 0.0_dp; y2 = 0.0_dp
       st = st_range                               ! a term of the right-hand side overflowed
       return
     end if
-    call solve2(a11, a12, a21, a22, b1, b2, y1, y2, st)
+    st = f%st
     if (failed(st)) return
+    y(1) = b1
+    y(2) = b2
+    call gelg2_solve(f%lu, f%ipv, f%jpv, f%amax, y, st)
+    if (failed(st)) return
+    y1 = y(1)
+    y2 = y(2)
     st = st_ok
-    na = sqrt(a11**2 + a12**2 + a21**2 + a22**2)
-    det = a11*a22 - a12*a21
-    if (det == 0.0_dp) then
+    if (f%det == 0.0_dp) then
       st = st_singular
       y1 = 0.0_dp; y2 = 0.0_dp
       return
     end if
     ny = norm2d(y1, y2)
-    den = max(ny, sb/na)
+    den = max(ny, sb/f%na)
     if (den == 0.0_dp) then
       rel = 0.0_dp                                ! no data: y = 0 exactly
     else
-      rel = na/abs(det)*((2.0_dp*da + 4.0_dp*uround*na)*ny + db)/den
+      rel = f%na/abs(f%det)*((2.0_dp*da + 4.0_dp*uround*f%na)*ny + db)/den
     end if
-  end subroutine solve2e
+  end subroutine solve2f
 
   ! The kind-5 system  y1*e(FIM + T2) - y2*e(FIM) = b  written in the frame of the guide
   ! (b1, b2 = components of b along e(FIM), e(FIM + pi/2)):  y1*cos(T2) - y2 = b1,
@@ -1091,6 +1109,7 @@ contains
     real(dp) :: vax, vay, vcx, vcy, aax, aay, acx, acy
     real(dp) :: pa, h, pc, ux, uy, r2x, r2y, r3x, r3y, l2s, l3s
     integer :: st2, e
+    type(system2) :: sys
     xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; fi3 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp
     vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; w3 = 0.0_dp
     abcn = 0.0_dp; aban = 0.0_dp; abat = 0.0_dp; bbat = 0.0_dp; abct = 0.0_dp; bbct = 0.0_dp
@@ -1158,7 +1177,8 @@ contains
     call components(va, ala, vax, vay)
     call components(vc, alc, vcx, vcy)
     sb = abs(va) + abs(vc)
-    call solve2e(n2x, -n3x, n2y, -n3y, vcx - vax, vcy - vay, da, &
+    call factor2(n2x, -n3x, n2y, -n3y, sys)     ! one matrix for both systems (L2615, L2640)
+    call solve2f(sys, vcx - vax, vcy - vay, da, &
                  4.0_dp*uround*(1.0_dp + max(abs(ala), abs(alc)))*sb, sb, y1, y2, ier, relv)
     if (failed(ier)) then
       xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; fi3 = 0.0_dp
@@ -1185,8 +1205,7 @@ contains
       call turn(fi2 + pi, c2, s2, 2, m2x, m2y)      ! e(FI2 + PI), e(FI3 + PI)
       call turn(fi3 + pi, c3, s3, 2, m3x, m3y)
       sb = abs(aa) + abs(ac) + aban + abcn
-      call solve2e(n2x, -n3x, n2y, -n3y, &
-                   acx + abcn*m3x - aax - aban*m2x, acy + abcn*m3y - aay - aban*m2y, da, &
+      call solve2f(sys, acx + abcn*m3x - aax - aban*m2x, acy + abcn*m3y - aay - aban*m2y, da, &
                    4.0_dp*uround*(4.0_dp + max(abs(ba), abs(bc)))*sb &
                    + ev/rz2*(2.0_dp*abs(y1) + ev) + ev/rz3*(2.0_dp*abs(y2) + ev), &
                    sb, y1, y2, st2, rela)

@@ -122,3 +122,23 @@ def test_two_by_two_path_is_bit_for_bit_gelg():
             assert cc.tobytes() == ref.R.tobytes(), (a[k], c[k], cc, ref.R)
         kinds[st] += 1
     assert min(kinds.values()) > 1000          # every outcome was exercised
+
+
+def test_one_elimination_for_two_right_hand_sides():
+    """DKNMA1 solves its velocities and accelerations with one matrix: gelg2_lu once, then
+    gelg2_solve for each right-hand side, is bit for bit two gelg2 calls (solution and
+    status), on the same edge cases (near-singular, singular, zeros, ties)."""
+    rng = np.random.default_rng(11)
+    a, c = _systems(rng, 5000)
+    c2 = rng.standard_normal(c.shape) * 10.0 ** rng.integers(-3, 4, (len(c), 1))
+    for k in range(len(a)):
+        lu = np.asfortranarray(a[k])
+        ipv, jpv, amax, st_lu = _sarkp.gelg_mod.gelg2_lu(lu)
+        for rhs in (c[k], c2[k]):
+            ref, got = rhs.copy(), rhs.copy()
+            st_ref = _sarkp.gelg_mod.gelg2(np.asfortranarray(a[k]), ref)
+            if st_lu == 0:
+                st = _sarkp.gelg_mod.gelg2_solve(lu, ipv, jpv, amax, got)
+            else:
+                st, got = st_lu, np.zeros(2)
+            assert st == st_ref and got.tobytes() == ref.tobytes(), (a[k], rhs)
