@@ -63,7 +63,8 @@
 !
 ! Corrected mode, for speed (issue 9; the same mathematics, no ERRATA entry): DPRM1 and
 ! DKNMA1 take B from the triangle's apex (tri_apex) instead of a cosine and a sine of FI2,
-! and DKNMA1 its FI2, FI3 as the directions of B - A, B - C; DKNMA1, DKNMA2, DSKOR1 and
+! and FI2, FI3 as the directions of B - A, B - C (DPRM1 in the book's ranges, up to 3 pi);
+! DKNMA1 eliminates its one 2x2 matrix once (factor2); DKNMA1, DKNMA2, DSKOR1 and
 ! DUSKR1 take each direction's cosine and sine once and get e(FI + PI/2), e(FI + PI) by
 ! the exact identities (turn), and sum vectors by components where the book goes through
 ! DSMVKT's polar form and back.  As-printed mode keeps the book's sequence of operations.
@@ -452,10 +453,15 @@ contains
     real(dp), intent(in) :: xa, ya, xc, yc, rz2, rz3, p, aaa
     real(dp), intent(out) :: fi2, fi3, xb, yb
     integer, intent(out) :: ier
-    real(dp) :: rzac, fiac, ugbac, ugbca, q, dang, pa, h, pc, ux, uy
+    real(dp) :: rzac, fiac, ugbac, ugbca, q, dang, pa, h, pc, ux, uy, r2x, r2y, r3x, r3y
     integer :: e
     fi2 = 0.0_dp; fi3 = 0.0_dp; xb = 0.0_dp; yb = 0.0_dp
-    call dvkt(xa, ya, xc, yc, rzac, fiac)
+    if (printed_mode /= 0) then
+      call dvkt(xa, ya, xc, yc, rzac, fiac)
+    else
+      rzac = norm2d(xc - xa, yc - ya)
+      fiac = 2.0_dp*pi                            ! not needed; its bound for the estimate
+    end if
     if (rzac == 0.0_dp) then
       if (rz2 == rz3) then
         ier = st_singular                         ! A = C, AB = CB: B anywhere on a circle
@@ -466,23 +472,38 @@ contains
     end if
     call tri_apex(rzac, rz2, rz3, pa, h, pc, e, dang, ier)
     if (failed(ier)) return
-    ugbac = atan2(h, pa)                          ! tri_angles' angles
-    ugbca = atan2(h, pc)
     q = book_sign(1.0_dp, p)
-    fiac = dugol(fiac)
-    fi2 = dugol(fiac - q*ugbac)
-    fi3 = dugol(fiac + q*ugbca - q*pi)
     if (printed_mode /= 0) then
+      ugbac = atan2(h, pa)                        ! tri_angles' angles
+      ugbca = atan2(h, pc)
+      fiac = dugol(fiac)
+      fi2 = dugol(fiac - q*ugbac)
+      fi3 = dugol(fiac + q*ugbca - q*pi)
       xb = xa + rz2*cos(fi2)
       yb = ya + rz2*sin(fi2)
     else
-      ! corrected (issue 9): B from the apex, B - A = pa u - P h n (u the unit vector
-      ! A->C, n its normal), the same point without a cosine and a sine of FI2
+      ! Corrected (issue 9): B from the apex, B - A = pa u - P h n and B - C = -pc u - P h n
+      ! (u the unit vector A->C, n its normal; units of 2**e), and FI2, FI3 as their
+      ! directions: two arctangents where the book's way takes three.  The book's values
+      ! are FIAC - P*angle A and FIAC + P*(angle C - pi), DUGOL'd once: for P = +1 the
+      ! direction in [0, 2 pi); for P = -1 the sum turns counter-clockwise from FIAC by at
+      ! most pi and passes 2 pi (stays above it, up to 3 pi) exactly when A->C points below
+      ! the x axis and the direction found is below pi.
       ux = (xc - xa)/rzac
       uy = (yc - ya)/rzac
       h = q*h
-      xb = xa + unscale(pa*ux + h*uy, e)
-      yb = ya + unscale(pa*uy - h*ux, e)
+      r2x = pa*ux + h*uy
+      r2y = pa*uy - h*ux
+      r3x = -pc*ux + h*uy
+      r3y = -pc*uy - h*ux
+      fi2 = dugol(atan2(r2y, r2x))
+      fi3 = dugol(atan2(r3y, r3x))
+      if (q < 0.0_dp .and. uy < 0.0_dp) then
+        if (fi2 < pi) fi2 = fi2 + 2.0_dp*pi
+        if (fi3 < pi) fi3 = fi3 + 2.0_dp*pi
+      end if
+      xb = xa + unscale(r2x, e)
+      yb = ya + unscale(r2y, e)
     end if
     ier = settle(ier, dang + 8.0_dp*uround*(1.0_dp + abs(fiac)), [xb, yb])
     if (failed(ier)) then

@@ -226,6 +226,31 @@ def test_kind1_link_ratios(ratio):
         assert all(math.isfinite(x) for x in v)
 
 
+def test_dprm1_keeps_the_books_angle_ranges():
+    """Corrected DPRM1 takes FI2, FI3 as the directions of B - A, B - C (two arctangents);
+    the values must stay the book's: FIAC - P*angle A and FIAC + P*(angle C - pi), DUGOL'd
+    once (L1497-1500), so up to 3 pi for P = -1.  Against those formulas evaluated here
+    with the cosine law, on 20000 random triangles with A->C in every direction."""
+    rng = np.random.default_rng(17)
+    n = 20000
+    xa, ya, ang = rng.uniform(-1, 1, n), rng.uniform(-1, 1, n), rng.uniform(-np.pi, np.pi, n)
+    d = rng.uniform(0.2, 2.0, n)
+    xc, yc = xa + d * np.cos(ang), ya + d * np.sin(ang)
+    d = np.hypot(xc - xa, yc - ya)
+    rz2 = rng.uniform(0.2, 2.0, n)
+    rz3 = rng.uniform(np.abs(d - rz2) + 1e-3, d + rz2 - 1e-3)
+    p = rng.choice([-1.0, 1.0], n)
+    r = K.DPRM1(xa, ya, xc, yc, rz2, rz3, p)
+    dugol = lambda f: np.where(f < 0, f + 2 * np.pi, f)                  # noqa: E731
+    fiac = dugol(np.arctan2(yc - ya, xc - xa))
+    a = np.arccos((d**2 + rz2**2 - rz3**2) / (2 * d * rz2))
+    c = np.arccos((d**2 + rz3**2 - rz2**2) / (2 * d * rz3))
+    fi2, fi3 = dugol(fiac - p * a), dugol(fiac + p * c - p * np.pi)
+    assert (fi3 > 2 * np.pi).sum() > 1000 and (fi2 > 2 * np.pi).sum() > 1000
+    np.testing.assert_allclose(r.FI2, fi2, rtol=0, atol=1e-11)  # arccos near 0 or pi
+    np.testing.assert_allclose(r.FI3, fi3, rtol=0, atol=1e-11)
+
+
 @pytest.mark.parametrize("k", [-990, -500, -61, 61, 500, 600, 900])
 @pytest.mark.parametrize("mode", ["corrected", "as-printed"])
 def test_kind1_scales_by_powers_of_two(k, mode):
