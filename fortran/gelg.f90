@@ -110,25 +110,25 @@ contains
   subroutine gelg2(a, c, st)
     real(dp), intent(inout) :: a(2, 2), c(2)
     integer, intent(out) :: st
-    real(dp) :: amax
+    real(dp) :: amax, r(2)
     integer :: ipv, jpv
-    call gelg2_lu(a, ipv, jpv, amax, st)
+    call gelg2_lu(a, ipv, jpv, amax, r, st)
     if (st /= st_ok) then
       c = 0.0_dp
       return
     end if
-    call gelg2_solve(a, ipv, jpv, amax, c, st)
+    call gelg2_solve(a, ipv, jpv, amax, r, c, st)
   end subroutine gelg2
 
   ! gelg2's elimination (DGETC2): A is overwritten by its factors, IPV, JPV are the pivot's
-  ! row and column, AMAX the largest |a| for GELG's EPS test.  st_singular (A unusable) or
-  ! st_ok.  A system solved twice with one matrix (DKNMA1's velocities and accelerations)
+  ! row and column, AMAX the largest |a| for GELG's EPS test, R the reciprocals of the
+  ! pivots that DGESC2 multiplies by.  st_singular (A unusable) or st_ok.  A system solved twice with one matrix (DKNMA1's velocities and accelerations)
   ! factors it once: the factors do not depend on the right-hand side, so the results are
   ! bit for bit those of two gelg2 calls.
-  subroutine gelg2_lu(a, ipv, jpv, amax, st)
+  subroutine gelg2_lu(a, ipv, jpv, amax, r, st)
     real(dp), intent(inout) :: a(2, 2)
     integer, intent(out) :: ipv, jpv, st
-    real(dp), intent(out) :: amax
+    real(dp), intent(out) :: amax, r(2)
     real(dp), parameter :: prec = epsilon(1.0_dp), smlnum = tiny(1.0_dp)/epsilon(1.0_dp)
     real(dp) :: xmax, smin, t
     integer :: i, j
@@ -136,6 +136,7 @@ contains
     st = st_singular
     ipv = 1
     jpv = 1
+    r = 0.0_dp
     amax = max(abs(a(1, 1)), abs(a(2, 1)), abs(a(1, 2)), abs(a(2, 2)))
     if (.not. (amax > 0.0_dp) .or. amax > huge(amax)) return   ! zero, NaN or inf matrix
     ! DGETC2, step 1: the pivot is the last largest element in row order
@@ -168,17 +169,19 @@ contains
     a(2, 1) = a(2, 1)/a(1, 1)
     if (a(1, 2) /= 0.0_dp) a(2, 2) = a(2, 2) + a(2, 1)*(-a(1, 2))   ! DGER
     if (abs(a(2, 2)) < smin) return          ! DGETC2 INFO = 2
+    r(1) = 1.0_dp/a(1, 1)
+    r(2) = 1.0_dp/a(2, 2)
     st = st_ok
   end subroutine gelg2_lu
 
   ! gelg2's solve (DGESC2) with the factors of gelg2_lu; the status as for gelg2.
-  subroutine gelg2_solve(a, ipv, jpv, amax, c, st)
-    real(dp), intent(in) :: a(2, 2), amax
+  subroutine gelg2_solve(a, ipv, jpv, amax, r, c, st)
+    real(dp), intent(in) :: a(2, 2), amax, r(2)
     integer, intent(in) :: ipv, jpv
     real(dp), intent(inout) :: c(2)
     integer, intent(out) :: st
     real(dp), parameter :: smlnum = tiny(1.0_dp)/epsilon(1.0_dp)
-    real(dp) :: t, temp
+    real(dp) :: t
 
     st = st_singular
     if (ipv /= 1) then
@@ -192,11 +195,9 @@ contains
       c = 0.0_dp
       return
     end if
-    temp = 1.0_dp/a(2, 2)
-    c(2) = c(2)*temp
-    temp = 1.0_dp/a(1, 1)
-    c(1) = c(1)*temp
-    c(1) = c(1) - c(2)*(a(1, 2)*temp)
+    c(2) = c(2)*r(2)
+    c(1) = c(1)*r(1)
+    c(1) = c(1) - c(2)*(a(1, 2)*r(1))
     if (jpv /= 1) then
       t = c(1)
       c(1) = c(2)

@@ -81,7 +81,7 @@ module kinematics
   ! A 2x2 system's matrix after GELG's elimination (factor2), with what solve2e's error
   ! estimate needs of it: |A|_F and det A of the entries as given.
   type :: system2
-    real(dp) :: lu(2, 2), amax, na, det
+    real(dp) :: lu(2, 2), amax, r(2), na, det, nadet
     integer :: ipv, jpv, st
   end type system2
   public :: dprm1, dprm2, dprm3, dprm4, dprm5
@@ -127,9 +127,11 @@ contains
     f%lu(2, 1) = a21
     f%lu(1, 2) = a12
     f%lu(2, 2) = a22
-    call gelg2_lu(f%lu, f%ipv, f%jpv, f%amax, f%st)
+    call gelg2_lu(f%lu, f%ipv, f%jpv, f%amax, f%r, f%st)
     f%na = sqrt(a11**2 + a12**2 + a21**2 + a22**2)
     f%det = a11*a22 - a12*a21
+    f%nadet = 0.0_dp
+    if (f%det /= 0.0_dp) f%nadet = f%na/abs(f%det)  ! |A^-1|_F
   end subroutine factor2
 
   subroutine solve2f(f, b1, b2, da, db, sb, y1, y2, st, rel)
@@ -148,7 +150,7 @@ contains
     if (failed(st)) return
     y(1) = b1
     y(2) = b2
-    call gelg2_solve(f%lu, f%ipv, f%jpv, f%amax, y, st)
+    call gelg2_solve(f%lu, f%ipv, f%jpv, f%amax, f%r, y, st)
     if (failed(st)) return
     y1 = y(1)
     y2 = y(2)
@@ -163,7 +165,7 @@ contains
     if (den == 0.0_dp) then
       rel = 0.0_dp                                ! no data: y = 0 exactly
     else
-      rel = f%na/abs(f%det)*((2.0_dp*da + 4.0_dp*uround*f%na)*ny + db)/den
+      rel = f%nadet*((2.0_dp*da + 4.0_dp*uround*f%na)*ny + db)/den
     end if
   end subroutine solve2f
 

@@ -133,12 +133,12 @@ def test_one_elimination_for_two_right_hand_sides():
     c2 = rng.standard_normal(c.shape) * 10.0 ** rng.integers(-3, 4, (len(c), 1))
     for k in range(len(a)):
         lu = np.asfortranarray(a[k])
-        ipv, jpv, amax, st_lu = _sarkp.gelg_mod.gelg2_lu(lu)
+        ipv, jpv, amax, r, st_lu = _sarkp.gelg_mod.gelg2_lu(lu)
         for rhs in (c[k], c2[k]):
             ref, got = rhs.copy(), rhs.copy()
             st_ref = _sarkp.gelg_mod.gelg2(np.asfortranarray(a[k]), ref)
             if st_lu == 0:
-                st = _sarkp.gelg_mod.gelg2_solve(lu, ipv, jpv, amax, got)
+                st = _sarkp.gelg_mod.gelg2_solve(lu, ipv, jpv, amax, r, got)
             else:
                 st, got = st_lu, np.zeros(2)
             assert st == st_ref and got.tobytes() == ref.tobytes(), (a[k], rhs)
