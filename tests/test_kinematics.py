@@ -253,9 +253,10 @@ def test_dprm1_keeps_the_books_angle_ranges():
 
 @pytest.mark.parametrize("k", [-990, -500, -61, 61, 500, 600, 900])
 @pytest.mark.parametrize("mode", ["corrected", "as-printed"])
-def test_kind1_scales_by_powers_of_two(k, mode):
+def test_kinds_1_and_2_scale_by_powers_of_two(k, mode):
     """A mechanism scaled by 2**k (exact in binary): positions, velocities and accelerations
-    scale by 2**k, angles, omegas and epsilons do not, from 1e-298 to 1e271.  Beyond 2**60
+    scale by 2**k, angles, omegas and epsilons do not, from 1e-298 to 1e271 (DKNMA1, DPRM1,
+    DKNMA2).  Beyond 2**60
     the triangle is solved in scaled units (tri_apex's exponent e /= 0).  At 2**600 the
     acceleration's error estimate squared the velocities' error (1e-16 V)**2 and overflowed
     (the position came back singular; now ev/RZ2*(2|Y1| + ev)).  The top is GELG's: like
@@ -279,6 +280,20 @@ def test_kind1_scales_by_powers_of_two(k, mode):
     for name in pb._fields:
         unit = s if name in {"XB", "YB"} else 1.0
         assert getattr(pb, name) / unit == pytest.approx(getattr(pr, name), rel=1e-14,
+                                                         abs=1e-14), name
+    # DKNMA2 (its acceleration estimate had the same overflow), a case with the slider
+    # moving against the guide (ALBBM = FIM - pi) and the guide turning (WM /= 0)
+    args2 = dict(XA=0.1, YA=0.3, XK=0.0, YK=0.0, FIM=0.2, RZ2=0.5, RZ3=0.1, ETA=0.3, VA=0.4,
+                 ALA=1.0, WM=0.5, VBM=0.2, ALBM=0.7, AA=0.3, BA=2.0, ABM=0.1, BBM=0.4, P=1.0,
+                 ANALOG=0.0)
+    lengths2 = {"XA", "YA", "XK", "YK", "RZ2", "RZ3", "VA", "VBM", "AA", "ABM"}
+    with sarkp.mode(mode):
+        k2 = K.DKNMA2(**{n: v * s if n in lengths2 else v for n, v in args2.items()})
+        r2 = K.DKNMA2(**args2)
+    for name in r2._fields:
+        unit = s if name in {"XB", "YB", "VBA", "VBBM", "VB", "ABAN", "ABK", "ABAT", "ABBM",
+                             "AB"} else 1.0
+        assert getattr(k2, name) / unit == pytest.approx(getattr(r2, name), rel=1e-14,
                                                          abs=1e-14), name
 
 
