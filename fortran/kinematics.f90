@@ -291,8 +291,8 @@ contains
 
   ! The apex B of the triangle with base d = AC and sides l2 = AB, l3 = CB, in the frame of
   ! the base: pa = projection of AB on AC, pc = d - pa that of CB on CA, h = the height
-  ! (>= 0).  tri_angles' angles are atan2(h, pa) and atan2(h, pc); corrected DKNMA1 uses
-  ! the apex itself (issue 9: no angle and back).  pa, h, pc are in units of 2**e (the
+  ! (>= 0).  tri_angles' angles are atan2(h, pa) and atan2(h, pc); corrected DPRM1 and
+  ! DKNMA1 use the apex itself (issue 9: no angle and back).  pa, h, pc are in units of 2**e (the
   ! sides are scaled by a power of 2 first, see below).  dang and st as for tri_angles.
   subroutine tri_apex(d0, l20, l30, pa, h, pc, e, dang, st)
     real(dp), intent(in) :: d0, l20, l30
@@ -392,7 +392,7 @@ contains
   ! The unit vector e(BOOK) of an angle the book forms as BOOK = FI + K*PI/2 (FI + PID2,
   ! FI - PI, DUGL3's FI +- PI/2, ...), given C = cos FI and S = sin FI.  As printed: the
   ! cosine and sine of BOOK itself, the book's sequence (with PI = 3.14159 the two ways
-  ! differ by about 3e-6, which a printed figure can show).  Corrected: (C, S) turned by K
+  ! differ by up to 3e-6, which a printed figure can show).  Corrected: (C, S) turned by K
   ! quarter turns, exactly, with no library call and no rounding of the sum (issue 9: one
   ! sincos per angle).
   pure subroutine turn(book, c, s, k, ct, st)
