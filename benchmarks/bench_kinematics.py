@@ -100,11 +100,38 @@ def best(fn, repeat=REPEAT, timer=time.process_time, min_time=0.05):
     """Best time of one call of ``fn`` over ``repeat`` repeats of at least ``min_time``.
     The default timer is this process's CPU time: time spent waiting for one of the two
     shared cores does not count (the threads benchmark passes time.perf_counter)."""
+    t, number = calibrated(fn, timer, min_time)
+    return min(t.repeat(repeat, number)) / number
+
+
+def calibrated(fn, timer=time.process_time, min_time=0.05):
+    """A warmed-up timeit.Timer of ``fn`` and the number of calls that take ``min_time``."""
     t = timeit.Timer(fn, timer=timer)
     t.timeit(1)                                               # warm up
-    one = max(t.timeit(1), 1e-7)
-    number = max(1, int(min_time / one))
-    return min(t.repeat(repeat, number)) / number
+    return t, max(1, int(min_time / max(t.timeit(1), 1e-7)))
+
+
+def one_position_calls(g=FOURBAR, phi=0.3):
+    """The fourbar at one crank angle: DKNMA1 and DPRM1 on arrays of one position (the
+    fixed cost of a sweep) and on Python floats (the scalar calls), by name."""
+    one = np.array([phi])
+    xa, ya, ala, ba = g["roa"] * np.cos(one), g["roa"] * np.sin(one), one + PID2, one + PI
+    fx, fy, fal, fb = (float(v[0]) for v in (xa, ya, ala, ba))
+    return {
+        "sarkp DKNMA1, arrays of 1": lambda: K.DKNMA1(
+            xa, ya, g["xc"], g["yc"], g["rab"], g["rcb"], W1 * g["roa"], ala, 0.0, 0.0,
+            W1**2 * g["roa"], ba, 0.0, 0.0, 1.0, 0.0),
+        "sarkp DPRM1, arrays of 1": lambda: K.DPRM1(
+            xa, ya, g["xc"], g["yc"], g["rab"], g["rcb"], -1.0),
+        "sarkp DKNMA1, scalar call": lambda: K.DKNMA1(
+            fx, fy, g["xc"], g["yc"], g["rab"], g["rcb"], W1 * g["roa"], fal, 0.0, 0.0,
+            W1**2 * g["roa"], fb, 0.0, 0.0, 1.0, 0.0),
+        "sarkp DPRM1, scalar call": lambda: K.DPRM1(
+            fx, fy, g["xc"], g["yc"], g["rab"], g["rcb"], -1.0),
+        "raw driver dknma1_1, scalar call": lambda: _DRV.dknma1_1(
+            0, fx, fy, g["xc"], g["yc"], g["rab"], g["rcb"], W1 * g["roa"], fal, 0.0, 0.0,
+            W1**2 * g["roa"], fb, 0.0, 0.0, 1.0, 0.0),
+    }
 
 
 def crank_angles(n):
@@ -695,31 +722,19 @@ def main():
         best(lambda: fourbar_dknma(p360, 3, _NP, out=buf360)), "call", 360)
     add(mech, "sarkp split, 360 positions (three calls)", "full",
         best(lambda: fourbar_split(p360, 3, _NP)), "call", 360)
-    g = FOURBAR
-    one = np.array([0.3])
-    a1 = dict(XA=g["roa"] * np.cos(one), YA=g["roa"] * np.sin(one), ALA=one + PID2,
-              BA=one + PI)
+    calls = one_position_calls()
     add(mech, "sarkp DKNMA1, arrays of 1 (fixed cost)", "full",
-        best(lambda: K.DKNMA1(a1["XA"], a1["YA"], g["xc"], g["yc"], g["rab"], g["rcb"],
-                              W1 * g["roa"], a1["ALA"], 0.0, 0.0, W1**2 * g["roa"], a1["BA"],
-                              0.0, 0.0, 1.0, 0.0)), "call", 1)
+        best(calls["sarkp DKNMA1, arrays of 1"]), "call", 1)
     add(mech, "sarkp DPRM1, arrays of 1 (fixed cost)", "positions",
-        best(lambda: K.DPRM1(a1["XA"], a1["YA"], g["xc"], g["yc"], g["rab"], g["rcb"], -1.0)),
-        "call", 1)
+        best(calls["sarkp DPRM1, arrays of 1"]), "call", 1)
     add(mech, "raw driver dknma1_n, n = 1", "full",
-        best(lambda: fourbar_raw_dknma(one)), "call", 1)
-    s = {k: float(v[0]) for k, v in a1.items()}
-    add(mech, "sarkp DKNMA1, scalar call", "full",
-        best(lambda: K.DKNMA1(s["XA"], s["YA"], g["xc"], g["yc"], g["rab"], g["rcb"],
-                              W1 * g["roa"], s["ALA"], 0.0, 0.0, W1**2 * g["roa"], s["BA"],
-                              0.0, 0.0, 1.0, 0.0)), "call", 1)
-    add(mech, "sarkp DPRM1, scalar call", "positions",
-        best(lambda: K.DPRM1(s["XA"], s["YA"], g["xc"], g["yc"], g["rab"], g["rcb"], -1.0)),
+        best(lambda: fourbar_raw_dknma(np.array([0.3]))), "call", 1)
+    add(mech, "sarkp DKNMA1, scalar call", "full", best(calls["sarkp DKNMA1, scalar call"]),
+        "call", 1)
+    add(mech, "sarkp DPRM1, scalar call", "positions", best(calls["sarkp DPRM1, scalar call"]),
         "call", 1)
     add(mech, "raw driver dknma1_1, scalar call", "full",
-        best(lambda: _DRV.dknma1_1(0, s["XA"], s["YA"], g["xc"], g["yc"], g["rab"], g["rcb"],
-                                   W1 * g["roa"], s["ALA"], 0.0, 0.0, W1**2 * g["roa"],
-                                   s["BA"], 0.0, 0.0, 1.0, 0.0)), "call", 1)
+        best(calls["raw driver dknma1_1, scalar call"]), "call", 1)
     add("-", "sarkp DVKT, scalar call", "-",
         best(lambda: sarkp.DVKT(0.1, 0.2, 3.0, 4.0)), "call", 1)
     ps = phi[:N_SCALAR]
@@ -859,26 +874,19 @@ def head_to_head(cloop, ref0, rounds=HEAD_ROUNDS):
     (as ``best`` does, at least 0.05 s of calls), and each path keeps its best round.  A
     slow spell of the shared host then falls on all of them alike, which timing one path
     after the other (the main table) does not ensure.  Returns {name: seconds per call}."""
-    g, phi, p360 = FOURBAR, crank_angles(N), crank_angles(360)
+    phi, p360 = crank_angles(N), crank_angles(360)
     nres = len(K.DKNMA1.spec.outputs)
     buf, buf360 = np.empty((nres, N)), np.empty((nres, 360))
-    one = np.array([0.3])
-    xa1, ya1, ala1, ba1 = g["roa"] * np.cos(one), g["roa"] * np.sin(one), one + PID2, one + PI
-    s = {k: float(v[0]) for k, v in dict(XA=xa1, YA=ya1, ALA=ala1, BA=ba1).items()}
+    calls = one_position_calls()
     paths = {
         "sarkp DKNMA1, array": lambda: fourbar_dknma(phi, 3, _NP),
         "sarkp DKNMA1, array, out=": lambda: fourbar_dknma(phi, 3, _NP, out=buf),
         "sarkp DPRM1, array": lambda: fourbar_split(phi, 1, _NP),
         "sarkp DKNMA1, 360 positions": lambda: fourbar_dknma(p360, 3, _NP),
         "sarkp DKNMA1, 360 positions, out=": lambda: fourbar_dknma(p360, 3, _NP, out=buf360),
-        "sarkp DKNMA1, arrays of 1": lambda: K.DKNMA1(
-            xa1, ya1, g["xc"], g["yc"], g["rab"], g["rcb"], W1 * g["roa"], ala1, 0.0, 0.0,
-            W1**2 * g["roa"], ba1, 0.0, 0.0, 1.0, 0.0),
-        "sarkp DKNMA1, scalar call": lambda: K.DKNMA1(
-            s["XA"], s["YA"], g["xc"], g["yc"], g["rab"], g["rcb"], W1 * g["roa"], s["ALA"],
-            0.0, 0.0, W1**2 * g["roa"], s["BA"], 0.0, 0.0, 1.0, 0.0),
-        "sarkp DPRM1, scalar call": lambda: K.DPRM1(
-            s["XA"], s["YA"], g["xc"], g["yc"], g["rab"], g["rcb"], -1.0),
+        "sarkp DKNMA1, arrays of 1": calls["sarkp DKNMA1, arrays of 1"],
+        "sarkp DKNMA1, scalar call": calls["sarkp DKNMA1, scalar call"],
+        "sarkp DPRM1, scalar call": calls["sarkp DPRM1, scalar call"],
         "sarkp DVKT, scalar call": lambda: sarkp.DVKT(0.1, 0.2, 3.0, 4.0),
     }
     if cloop is not None:
@@ -895,10 +903,7 @@ def head_to_head(cloop, ref0, rounds=HEAD_ROUNDS):
         pass
     timers, numbers = {}, {}
     for name, fn in paths.items():
-        t = timeit.Timer(fn, timer=time.process_time)
-        t.timeit(1)                                                   # warm up
-        numbers[name] = max(1, int(0.05 / max(t.timeit(1), 1e-7)))
-        timers[name] = t
+        timers[name], numbers[name] = calibrated(fn)
     found = {name: math.inf for name in paths}
     for _ in range(rounds):
         for name, t in timers.items():
