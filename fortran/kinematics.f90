@@ -362,6 +362,22 @@ contains
     st = st_ok
   end subroutine tri_apex
 
+  ! The apex of tri_apex as vectors, in its units of 2**e: B - A = pa u + side h n and
+  ! B - C = -pc u + side h n, where u = (dx, dy)/d is the unit vector A->C and n is u turned
+  ! by +pi/2; side = +1 puts B on the left of A->C.
+  pure subroutine apex_vectors(dx, dy, d, pa, h, pc, side, r2x, r2y, r3x, r3y)
+    real(dp), intent(in) :: dx, dy, d, pa, h, pc, side
+    real(dp), intent(out) :: r2x, r2y, r3x, r3y
+    real(dp) :: ux, uy, sh
+    ux = dx/d
+    uy = dy/d
+    sh = side*h
+    r2x = pa*ux - sh*uy
+    r2y = pa*uy + sh*ux
+    r3x = -pc*ux - sh*uy
+    r3y = -pc*uy + sh*ux
+  end subroutine apex_vectors
+
   ! x * 2**e, exactly: tri_apex's units back to the caller's (e = 0, the usual case, costs
   ! no library call).
   pure real(dp) function unscale(x, e)
@@ -455,7 +471,7 @@ contains
     real(dp), intent(in) :: xa, ya, xc, yc, rz2, rz3, p, aaa
     real(dp), intent(out) :: fi2, fi3, xb, yb
     integer, intent(out) :: ier
-    real(dp) :: rzac, fiac, ugbac, ugbca, q, dang, pa, h, pc, ux, uy, r2x, r2y, r3x, r3y
+    real(dp) :: rzac, fiac, ugbac, ugbca, q, dang, pa, h, pc, r2x, r2y, r3x, r3y
     integer :: e
     fi2 = 0.0_dp; fi3 = 0.0_dp; xb = 0.0_dp; yb = 0.0_dp
     if (printed_mode /= 0) then
@@ -491,16 +507,10 @@ contains
       ! direction in [0, 2 pi); for P = -1 the sum turns counter-clockwise from FIAC by at
       ! most pi and passes 2 pi (stays above it, up to 3 pi) exactly when A->C points below
       ! the x axis and the direction found is below pi.
-      ux = (xc - xa)/rzac
-      uy = (yc - ya)/rzac
-      h = q*h
-      r2x = pa*ux + h*uy
-      r2y = pa*uy - h*ux
-      r3x = -pc*ux + h*uy
-      r3y = -pc*uy - h*ux
+      call apex_vectors(xc - xa, yc - ya, rzac, pa, h, pc, -q, r2x, r2y, r3x, r3y)
       fi2 = dugol(atan2(r2y, r2x))
       fi3 = dugol(atan2(r3y, r3x))
-      if (q < 0.0_dp .and. uy < 0.0_dp) then
+      if (q < 0.0_dp .and. (yc - ya)/rzac < 0.0_dp) then   ! A->C below the x axis
         if (fi2 < pi) fi2 = fi2 + 2.0_dp*pi
         if (fi3 < pi) fi3 = fi3 + 2.0_dp*pi
       end if
@@ -1130,7 +1140,7 @@ contains
     real(dp) :: rac, fik, ugbac, ugbca, y1, y2, prx, pry, q, dang, da, sb, relv, rela, ev
     real(dp) :: est, c2, s2, c3, s3, n2x, n2y, n3x, n3y, m2x, m2y, m3x, m3y, tx, ty
     real(dp) :: vax, vay, vcx, vcy, aax, aay, acx, acy
-    real(dp) :: pa, h, pc, ux, uy, r2x, r2y, r3x, r3y, l2s, l3s
+    real(dp) :: pa, h, pc, r2x, r2y, r3x, r3y, l2s, l3s
     integer :: st2, e
     type(system2) :: sys
     xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; fi3 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp
@@ -1170,13 +1180,7 @@ contains
       ! or sine of them (the unit vectors e(FI2), e(FI3) are (B - A)/RZ2, (B - C)/RZ3).
       call tri_apex(rac, rz2, rz3, pa, h, pc, e, dang, ier)
       if (failed(ier)) return
-      ux = (xc - xa)/rac
-      uy = (yc - ya)/rac
-      h = q*h
-      r2x = pa*ux - h*uy                          ! (B - A)/2**e
-      r2y = pa*uy + h*ux
-      r3x = -pc*ux - h*uy                         ! (B - C)/2**e
-      r3y = -pc*uy + h*ux
+      call apex_vectors(xc - xa, yc - ya, rac, pa, h, pc, q, r2x, r2y, r3x, r3y)
       fi2 = atan2(r2y, r2x)
       fi3 = atan2(r3y, r3x)
       if (fi2 == -pi) fi2 = pi                    ! the range (-pi, pi] of DUGL2
