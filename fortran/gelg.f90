@@ -32,6 +32,13 @@ contains
 
   subroutine gelg(r, a, m, n, eps, ier)
     !sarkp ier-is-output
+    !: R : table(M, N) real -- Right-hand sides.
+    !: A : table(M, M) real destroyed -- Coefficient matrix (destroyed in Fortran; here a copy is).
+    !: M : integer 1..2147483646 -- Order of the system (M >= 1); must match the shapes of R
+    !:     and A.
+    !: N : integer 1..2147483646 -- Number of right-hand sides (the book's gloss "method of
+    !:     computation" is wrong: ERRATA E-GELG-1); must match the shape of R.
+    !: EPS : real >= 0 -- Relative pivot tolerance, >= 0.
     integer, intent(in) :: m, n
     real(dp), intent(inout) :: r(m, n)
     real(dp), intent(inout) :: a(m, m)

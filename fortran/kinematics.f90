@@ -468,6 +468,13 @@ contains
   ! up to 3*pi for P = -1, as printed (Fig. 91 prints FICB = 3.14..3.84).
   ! ERRATA: none in the code.  Cosine-law ARCOS replaced by tri_angles (same angles).
   subroutine dprm1(xa, ya, xc, yc, rz2, rz3, p, aaa, fi2, fi3, xb, yb, ier)
+    !: XA, YA : real -- Centre of the external revolute A (link 2), m.
+    !: XC, YC : real -- Centre of the external revolute C (link 3), m.
+    !: RZ2, RZ3 : length -- Link lengths AB and CB, m (> 0).
+    !: P : branch -- Assembly branch (L1477): -1 when A, B, C go clockwise, i.e. B on the
+    !:     left of the directed line A -> C; +1 the mirror image. Note: ``DKNMA1`` uses the
+    !:     opposite sign.
+    !: AAA : flag -- The book's print flag; unused (no report for this routine).
     real(dp), intent(in) :: xa, ya, xc, yc, rz2, rz3, p, aaa
     real(dp), intent(out) :: fi2, fi3, xb, yb
     integer, intent(out) :: ier
@@ -532,6 +539,15 @@ contains
   ! O' by projection on e(FIM) (the book's TAN(FIM) formula, same point, fails at FIM = pi/2).
   ! ERRATA: none in the code.
   subroutine dprm2(xa, ya, xk, yk, fim, rz2, rz3, t, aaa, xb, yb, fi2, ier)
+    !: XA, YA : real -- Centre of the external revolute A, m.
+    !: XK, YK : real -- Any point of the guide axis, m.
+    !: FIM : real -- Direction of the guide, rad. It also selects the branch (L1543, "FIM is
+    !:     chosen along AB from A to B"): B lies ahead, in the direction FIM, of the foot of
+    !:     the perpendicular from A; pass ``FIM + pi`` for the other branch.
+    !: RZ2 : length -- Length AB, m (> 0).
+    !: RZ3, T : real >= 0; real -- Linear (m, >= 0) and angular (rad) size of the slider:
+    !:     the offset of B from the guide axis is ``RZ3*sin(T)``.
+    !: AAA : flag -- The book's print flag; unused.
     real(dp), intent(in) :: xa, ya, xk, yk, fim, rz2, rz3, t, aaa
     real(dp), intent(out) :: xb, yb, fi2
     integer, intent(out) :: ier
@@ -584,6 +600,15 @@ contains
   ! FICA = direction C->A in (-pi, pi]; FI3 within pi/2 of FICA.
   ! ERRATA: E-DPRM3-1 (OCR FIZ for FI3).
   subroutine dprm3(xa, ya, xc, yc, rz2, t, p, aaa, rzac, fi3, fica, ier)
+    !: XA, YA : real -- Centre of the revolute A of slider 2, m.
+    !: XC, YC : real -- Centre of the revolute C of link 3, m.
+    !: RZ2, T : real >= 0; real -- Linear (m, >= 0) and angular (rad) size of link 2: A is
+    !:     ``RZ2*sin(T)`` from the axis of link 3 (with T = pi/2, RZ2 is that perpendicular,
+    !:     L1563).
+    !: P : branch -- Assembly branch (L1565): ``FI3 = FICA + P*angle BCA``; -1 puts A on the
+    !:     left of the axis direction FI3, +1 on the right. ``DKNMA3`` uses the opposite
+    !:     sign.
+    !: AAA : flag -- The book's print flag; unused.
     real(dp), intent(in) :: xa, ya, xc, yc, rz2, t, p, aaa
     real(dp), intent(out) :: rzac, fi3, fica
     integer, intent(out) :: ier
@@ -631,6 +656,14 @@ contains
   ! Parallel guides: st_singular.
   subroutine dprm4(xvm, yvm, xa, ya, fim, xvn, yvn, xc, yc, fin, rz2, t2, rz3, t3, aaa, &
                    xb, yb, rvbm, fivbm, rvbn, fivbn, ier)
+    !: XVM, YVM : real -- Instantaneous centre of rotation of link M (carrying guide M), m.
+    !: XA, YA, FIM : real -- A point of the axis of guide M (m) and its direction (rad).
+    !: XVN, YVN : real -- Instantaneous centre of rotation of link N, m.
+    !: XC, YC, FIN : real -- A point of the axis of guide N (m) and its direction (rad).
+    !: RZ2, T2 : real >= 0; real -- B is ``RZ2*sin(T2)`` from guide M along its left normal,
+    !:     direction FIM + pi/2.
+    !: RZ3, T3 : real >= 0; real -- The same for guide N.
+    !: AAA : flag -- The book's print flag; unused.
     real(dp), intent(in) :: xvm, yvm, xa, ya, fim, xvn, yvn, xc, yc, fin, rz2, t2, rz3, t3, aaa
     real(dp), intent(out) :: xb, yb, rvbm, fivbm, rvbn, fivbn
     integer, intent(out) :: ier
@@ -674,6 +707,11 @@ contains
   ! then T2 = ETA2).  SIN(T2) = 0 (slot parallel to the guide): st_singular.
   ! For a fixed guide dS2/dt and -dS3/dt are the signed VC2CM, VC2C3 of DSKOR5.
   subroutine dprm5(xa, ya, fim, xc, yc, t2, aaa, xk, yk, s2, s3, ier)
+    !: XA, YA, FIM : real -- A point of the axis of guide M (m) and its direction (rad);
+    !:     link 2 slides on it.
+    !: XC, YC : real -- Centre of the revolute C of block 3, m.
+    !: T2 : real -- Angular size of link 2: block 3 slides in link 2 along FIM + T2, rad.
+    !: AAA : flag -- Print flag; unused.
     real(dp), intent(in) :: xa, ya, fim, xc, yc, t2, aaa
     real(dp), intent(out) :: xk, yk, s2, s3
     integer, intent(out) :: ier
@@ -707,6 +745,12 @@ contains
   ! ERRATA: none in the code.  Dead centre (FI2 = FI3 mod pi): st_singular.
   subroutine dskor1(rz2, fi2, rz3, fi3, va, ala, vc, alc, aaa, vba, alba, vbc, albc, vb, alb, &
                     w2, w3, ier)
+    !: RZ2, FI2 : length; real -- Length AB (m, > 0) and direction A -> B (rad), from
+    !:     ``DPRM1``.
+    !: RZ3, FI3 : length; real -- Length CB and direction C -> B.
+    !: VA, ALA : real -- Velocity of A: modulus (m/s) and direction (rad).
+    !: VC, ALC : real -- Velocity of C (0, 0 for a fixed pivot).
+    !: AAA : flag -- Print flag; unused.
     real(dp), intent(in) :: rz2, fi2, rz3, fi3, va, ala, vc, alc, aaa
     real(dp), intent(out) :: vba, alba, vbc, albc, vb, alb, w2, w3
     integer, intent(out) :: ier
@@ -754,6 +798,13 @@ contains
   ! E-DSKOR2-2 (OCR DOMECA).  AB perpendicular to the guide: st_singular.
   subroutine dskor2(va, ala, vbm, albm, rz2, fi2, fim, aaa, vba, alba, vbbm, albbm, vb, alb, &
                     w2, ier)
+    !: VA, ALA : real -- Velocity of A: modulus (m/s), direction (rad).
+    !: VBM, ALBM : real -- Velocity of the point of the guide link under B (0, 0 for a fixed
+    !:     guide).
+    !: RZ2, FI2 : length; real -- Length AB (m, > 0) and direction A -> B (rad), from
+    !:     ``DPRM2``.
+    !: FIM : real -- Direction of the guide, rad.
+    !: AAA : flag -- Print flag; unused.
     real(dp), intent(in) :: va, ala, vbm, albm, rz2, fi2, fim, aaa
     real(dp), intent(out) :: vba, alba, vbbm, albbm, vb, alb, w2
     integer, intent(out) :: ier
@@ -785,6 +836,13 @@ contains
   ! ERRATA: none in the code.  Singular only for A = C.
   subroutine dskor3(xa, ya, xc, yc, va, ala, vc, alc, fi3, aaa, va3a, ala3a, va3c, ala3c, &
                     va3, ala3, w3, ier)
+    !: XA, YA, XC, YC : real -- Joints A (slider pivot) and C (pivot of link 3), m.
+    !: VA, ALA : real -- Velocity of A: modulus (m/s), direction (rad).
+    !: VC, ALC : real -- Velocity of C.
+    !: FI3 : real -- Direction of the axis of link 3, rad, as ``DPRM3`` returned it (the
+    !:     sign of W3 is taken from ALA3C - FI3, as printed: FI3 must be within pi/2 of
+    !:     FICA).
+    !: AAA : flag -- Print flag; unused.
     real(dp), intent(in) :: xa, ya, xc, yc, va, ala, vc, alc, fi3, aaa
     real(dp), intent(out) :: va3a, ala3a, va3c, ala3c, va3, ala3, w3
     integer, intent(out) :: ier
@@ -823,6 +881,12 @@ contains
   ! E-DSKOR4-4 (OCR 8, 0, 0, 1 for 0.0001).  Parallel guides: st_singular.
   subroutine dskor4(rvbm, fivbm, fim, rvbn, fivbn, fin, wm, wn, aaa, vbbm, albbm, vbbn, albbn, &
                     vb, alb, ier)
+    !: RVBM, FIVBM : real >= 0; real -- Distance (m) and direction (rad) of B from the
+    !:     centre VM of link M (``DPRM4``).
+    !: FIM : real -- Direction of guide M, rad.
+    !: RVBN, FIVBN, FIN : real >= 0; real; real -- The same for link N.
+    !: WM, WN : real -- Signed angular velocities of links M and N, rad/s.
+    !: AAA : flag -- Print flag; unused.
     real(dp), intent(in) :: rvbm, fivbm, fim, rvbn, fivbn, fin, wm, wn, aaa
     real(dp), intent(out) :: vbbm, albbm, vbbn, albbn, vb, alb
     integer, intent(out) :: ier
@@ -856,6 +920,13 @@ contains
   ! ERRATA: E-DSKOR5-1 (ALC3CM = for ALC2CM =).  SIN(T2) = 0: st_singular.
   subroutine dskor5(xc3, yc3, xvm, yvm, fim, t2, wm, vc3, alc3, aaa, vc2c3, alc2c3, vc2cm, &
                     alc2cm, vc2, alc2, ier)
+    !: XC3, YC3 : real -- Centre of the revolute C of block 3, m.
+    !: XVM, YVM : real -- Instantaneous centre of rotation of link M, m.
+    !: FIM : real -- Direction of guide M, rad.
+    !: T2 : real -- Angular size of link 2: block 3 slides along FIM + T2, rad.
+    !: WM : real -- Signed angular velocity of link M, rad/s.
+    !: VC3, ALC3 : real -- Velocity of C: modulus (m/s), direction (rad).
+    !: AAA : flag -- Print flag; unused.
     real(dp), intent(in) :: xc3, yc3, xvm, yvm, fim, t2, wm, vc3, alc3, aaa
     real(dp), intent(out) :: vc2c3, alc2c3, vc2cm, alc2cm, vc2, alc2
     integer, intent(out) :: ier
@@ -892,6 +963,11 @@ contains
   ! it, Fig. 91 was computed with it), E-DUSKR1-2 (OCR 8.0001), E-DUSKR1-3 (OCR DOMEQA).
   subroutine duskr1(aa, ba, ac, bc, rz2, fi2, rz3, fi3, w2, w3, aaa, abat, bbat, abct, bbct, &
                     ab, bb, e2, e3, ier)
+    !: AA, BA : real -- Acceleration of A: modulus (m/s**2), direction (rad).
+    !: AC, BC : real -- Acceleration of C.
+    !: RZ2, FI2, RZ3, FI3 : length; real; length; real -- As for ``DSKOR1``.
+    !: W2, W3 : real -- Angular velocities of links 2, 3 (from ``DSKOR1``), rad/s.
+    !: AAA : flag -- Print flag; unused.
     real(dp), intent(in) :: aa, ba, ac, bc, rz2, fi2, rz3, fi3, w2, w3, aaa
     real(dp), intent(out) :: abat, bbat, abct, bbct, ab, bb, e2, e3
     integer, intent(out) :: ier
@@ -957,6 +1033,16 @@ contains
   ! ERRATA: E-DUSKR2-1 (OCR F12, 1ER, DSMVKI).
   subroutine duskr2(aa, ba, abm, bvm, abk, bvk, rz2, fi2, w2, fim, aaa, abat, vbat, abvm, &
                     bvbm, e2, ab, bb, ier)
+    !: AA, BA : real -- Acceleration of A: modulus (m/s**2), direction (rad).
+    !: ABM, BVM : real -- Acceleration of the point of the guide link under B (0, 0 for a
+    !:     fixed guide).
+    !: ABK, BVK : real -- Coriolis acceleration of B relative to the guide, supplied by the
+    !:     caller: ``2*|WM|*VBBM`` at ``DUGL3(ALBBM, pi/2, WM)`` (0, 0 for a non-rotating
+    !:     guide).
+    !: RZ2, FI2 : length; real -- Length AB (m, > 0) and direction A -> B, rad.
+    !: W2 : real -- Angular velocity of AB (from ``DSKOR2``), rad/s.
+    !: FIM : real -- Direction of the guide, rad.
+    !: AAA : flag -- Print flag; unused.
     real(dp), intent(in) :: aa, ba, abm, bvm, abk, bvk, rz2, fi2, w2, fim, aaa
     real(dp), intent(out) :: abat, vbat, abvm, bvbm, e2, ab, bb
     integer, intent(out) :: ier
@@ -993,6 +1079,14 @@ contains
   ! ERRATA: E-DUSKR3-1 (OCR BAZAR, BAZAK for BA3AR, BA3AK; DSMVWT).
   subroutine duskr3(aa, ba, ac, bc, fi3, w3, rzac, fica, aa3ak, ba3ak, aaa, aa3ar, ba3ar, &
                     aa3ct, ba3ct, e3, aa3, ba3, ier)
+    !: AA, BA, AC, BC : real -- Accelerations of A and C: modulus (m/s**2), direction (rad).
+    !: FI3, W3 : real -- Direction of the axis of link 3 (rad) and its angular velocity
+    !:     (rad/s).
+    !: RZAC, FICA : length; real -- AC (m, > 0) and the direction C -> A (rad), from
+    !:     ``DPRM3``.
+    !: AA3AK, BA3AK : real -- Coriolis acceleration of A3 relative to A, supplied by the
+    !:     caller: ``2*|W3|*VA3A`` at ``DUGL3(ALA3A, pi/2, W3)`` (IV.15, L2529).
+    !: AAA : flag -- Print flag; unused.
     real(dp), intent(in) :: aa, ba, ac, bc, fi3, w3, rzac, fica, aa3ak, ba3ak, aaa
     real(dp), intent(out) :: aa3ar, ba3ar, aa3ct, ba3ct, e3, aa3, ba3
     integer, intent(out) :: ier
@@ -1032,6 +1126,14 @@ contains
   ! (DSMVKT(ABM, BVM, ...) for BBM).
   subroutine duskr4(rvbm, fivbm, fim, rvbn, fivbn, fin, wm, em, wn, en, abbmk, bbbmk, abbnk, &
                     bbbnk, aaa, abbmr, bbbmr, abbnr, bbbnr, ab, bb, ier)
+    !: RVBM, FIVBM, FIM, RVBN, FIVBN, FIN : real >= 0; real; real; real >= 0; real; real -- As
+    !:     for ``DSKOR4``.
+    !: WM, EM : real -- Angular velocity (rad/s) and acceleration (rad/s**2) of link M.
+    !: WN, EN : real -- The same for link N.
+    !: ABBMK, BBBMK : real -- Coriolis acceleration of B relative to guide M, supplied by
+    !:     the caller: ``2*|WM|*VBBM`` at ``DUGL3(ALBBM, pi/2, WM)``.
+    !: ABBNK, BBBNK : real -- The same for guide N.
+    !: AAA : flag -- Print flag; unused.
     real(dp), intent(in) :: rvbm, fivbm, fim, rvbn, fivbn, fin, wm, em, wn, en, abbmk, bbbmk
     real(dp), intent(in) :: abbnk, bbbnk, aaa
     real(dp), intent(out) :: abbmr, bbbmr, abbnr, bbbnr, ab, bb
@@ -1080,6 +1182,17 @@ contains
   ! E-DUSKR5-2 (OCR WM * / *4 for WM ** 4).
   subroutine duskr5(xc3, yc3, xvm, yvm, fim, wm, em, t2, ac3, bc3, ac2mk, bc2mk, ac23k, bc23k, &
                     aaa, ac2c3r, bc2c3r, ac2cmr, bc2cmr, ac2, bc2, ier)
+    !: XC3, YC3 : real -- Centre of the revolute C, m.
+    !: XVM, YVM : real -- Centre of rotation of link M, m.
+    !: FIM : real -- Direction of guide M, rad.
+    !: WM, EM : real -- Angular velocity and acceleration of link M.
+    !: T2 : real -- Slot direction of link 2 relative to the guide, rad.
+    !: AC3, BC3 : real -- Acceleration of C: modulus (m/s**2), direction (rad).
+    !: AC2MK, BC2MK : real -- Coriolis acceleration of C2 relative to the guide:
+    !:     ``2*|WM|*VC2CM`` at ``DUGL3(ALC2CM, pi/2, WM)``.
+    !: AC23K, BC23K : real -- Coriolis acceleration of C2 relative to C3: ``2*|WM|*VC2C3``
+    !:     at ``DUGL3(ALC2C3, pi/2, WM)``.
+    !: AAA : flag -- Print flag; unused.
     real(dp), intent(in) :: xc3, yc3, xvm, yvm, fim, wm, em, t2, ac3, bc3, ac2mk, bc2mk
     real(dp), intent(in) :: ac23k, bc23k, aaa
     real(dp), intent(out) :: ac2c3r, bc2c3r, ac2cmr, bc2cmr, ac2, bc2
@@ -1132,6 +1245,15 @@ contains
   subroutine dknma1(xa, ya, xc, yc, rz2, rz3, va, ala, vc, alc, aa, ba, ac, bc, p, analog, &
                     xb, yb, fi2, fi3, vba, alba, vbc, albc, vb, alb, w2, w3, abcn, aban, &
                     abat, bbat, abct, bbct, ab, bb, e2, e3, ier)
+    !: XA, YA, XC, YC : real -- External revolutes A and C, m.
+    !: RZ2, RZ3 : length -- AB and CB, m (> 0).
+    !: VA, ALA, VC, ALC : real -- Velocities of A and C: modulus, direction.
+    !: AA, BA, AC, BC : real -- Accelerations of A and C: modulus, direction.
+    !: P : branch -- Assembly branch, the OPPOSITE sign of ``DPRM1``: +1 puts B on the left
+    !:     of the directed line A -> C (A, B, C clockwise). ``DKNMA1(P) = DPRM1(-P)``.
+    !: ANALOG : real = 0.0 -- 1.0: stop after the velocities (the book's way of skipping the
+    !:     acceleration work, e.g. for velocity analogues); the acceleration outputs are
+    !:     then 0. Anything else: compute the accelerations too.
     real(dp), intent(in) :: xa, ya, xc, yc, rz2, rz3, va, ala, vc, alc, aa, ba, ac, bc, p
     real(dp), intent(in) :: analog
     real(dp), intent(out) :: xb, yb, fi2, fi3, vba, alba, vbc, albc, vb, alb, w2, w3
@@ -1283,6 +1405,38 @@ contains
   subroutine dknma2(xa, ya, xk, yk, fim, rz2, rz3, eta, va, ala, wm, vbm, albm, aa, ba, abm, &
                     bbm, p, analog, xb, yb, fi2, vba, alba, vbbm, albbm, vb, alb, w2, aban, &
                     abk, bbk, abat, bbat, abbm, bbbm, ab, bb, e2, ier)
+    !: XA : real -- External revolute A, m.
+    !: YA : real -- External revolute A, m.
+    !: XK : real -- A point of the guide axis (m) and the guide direction (rad).
+    !: YK : real -- A point of the guide axis (m) and the guide direction (rad).
+    !: FIM : real -- A point of the guide axis (m) and the guide direction (rad).
+    !: RZ2 : length -- AB, m (> 0).
+    !: RZ3 : real >= 0 -- B is ``RZ3*sin(ETA)`` from the guide axis along its LEFT normal
+    !:     e(FIM + pi/2) (``DPRM2`` offsets towards A; the two agree when A is on the left
+    !:     or the offset is 0).
+    !: ETA : real -- B is ``RZ3*sin(ETA)`` from the guide axis along its LEFT normal e(FIM +
+    !:     pi/2) (``DPRM2`` offsets towards A; the two agree when A is on the left or the
+    !:     offset is 0).
+    !: VA : real -- Velocity of A.
+    !: ALA : real -- Velocity of A.
+    !: WM : real -- Angular velocity of the guide link (for the Coriolis acceleration),
+    !:     rad/s.
+    !: VBM : real -- Velocity and acceleration of the guide point under B (0 for a fixed
+    !:     guide).
+    !: ALBM : real -- Velocity and acceleration of the guide point under B (0 for a fixed
+    !:     guide).
+    !: AA : real -- Acceleration of A.
+    !: BA : real -- Acceleration of A.
+    !: ABM : real -- Velocity and acceleration of the guide point under B (0 for a fixed
+    !:     guide).
+    !: BBM : real -- Velocity and acceleration of the guide point under B (0 for a fixed
+    !:     guide).
+    !: P : branch -- Branch: +1 puts B ahead of the foot of the perpendicular from A along
+    !:     FIM, -1 behind: ``DKNMA2(FIM, P=1) = DPRM2(FIM)``, ``DKNMA2(FIM, P=-1) =
+    !:     DPRM2(FIM + pi)``.
+    !: ANALOG : real = 0.0 -- 1.0: stop after the velocities (the book's way of skipping the
+    !:     acceleration work, e.g. for velocity analogues); the acceleration outputs are
+    !:     then 0. Anything else: compute the accelerations too.
     real(dp), intent(in) :: xa, ya, xk, yk, fim, rz2, rz3, eta, va, ala, wm, vbm, albm, aa
     real(dp), intent(in) :: ba, abm, bbm, p, analog
     real(dp), intent(out) :: xb, yb, fi2, vba, alba, vbbm, albbm, vb, alb, w2, aban, abk, bbk
@@ -1411,6 +1565,17 @@ contains
   subroutine dknma3(xa, ya, xc, yc, rz2, eta, va, ala, vc, alc, aa, ba, ac, bc, p, analog, &
                     xb, yb, rzbc, fi3, var, alar, vac, alac, w3, va3, ala3, aak, bak, aar, &
                     bar, aact, bact, aa3, ba3, e3, aacn, ier)
+    !: XA, YA : real -- Revolute A of the slider 2, m.
+    !: XC, YC : real -- Revolute C of link 3, m.
+    !: RZ2, ETA : real >= 0; real -- B is the point of the axis of link 3 with AB = RZ2 and
+    !:     angle ABC = ETA (with ETA = pi/2, B is the foot of the perpendicular from A and
+    !:     RZ2 the offset).
+    !: VA, ALA, VC, ALC, AA, BA, AC, BC : real -- Velocities and accelerations of A and C.
+    !: P : branch -- Branch, the OPPOSITE sign of ``DPRM3``: +1 turns AB counter-clockwise
+    !:     from AC. ``DKNMA3(P) = DPRM3(-P)``.
+    !: ANALOG : real = 0.0 -- 1.0: stop after the velocities (the book's way of skipping the
+    !:     acceleration work, e.g. for velocity analogues); the acceleration outputs are
+    !:     then 0. Anything else: compute the accelerations too.
     real(dp), intent(in) :: xa, ya, xc, yc, rz2, eta, va, ala, vc, alc, aa, ba, ac, bc, p
     real(dp), intent(in) :: analog
     real(dp), intent(out) :: xb, yb, rzbc, fi3, var, alar, vac, alac, w3, va3, ala3, aak, bak
@@ -1536,6 +1701,15 @@ contains
   subroutine dknma4(fim, xa, ya, fin, xc, yc, rz2, eta2, rz3, eta3, wm, wn, em, en, analog, &
                     xb, yb, vb2r, alb2r, vb3r, alb3r, vb, alb, ab2k, bb2k, ab3k, bb3k, ab2r, &
                     bb2r, ab3r, bb3r, ab, bb, ier)
+    !: FIM, XA, YA : real -- Direction of guide M and a point of its axis (its centre of
+    !:     rotation).
+    !: FIN, XC, YC : real -- The same for guide N.
+    !: RZ2, ETA2, RZ3, ETA3 : real >= 0; real; real >= 0; real -- Offsets ``RZ2*sin(ETA2)``,
+    !:     ``RZ3*sin(ETA3)`` of B along the left normals.
+    !: WM, WN, EM, EN : real -- Angular velocities and accelerations of links M and N.
+    !: ANALOG : real = 0.0 -- 1.0: stop after the velocities (the book's way of skipping the
+    !:     acceleration work, e.g. for velocity analogues); the acceleration outputs are
+    !:     then 0. Anything else: compute the accelerations too.
     real(dp), intent(in) :: fim, xa, ya, fin, xc, yc, rz2, eta2, rz3, eta3, wm, wn, em, en
     real(dp), intent(in) :: analog
     real(dp), intent(out) :: xb, yb, vb2r, alb2r, vb3r, alb3r, vb, alb, ab2k, bb2k, ab3k, bb3k
@@ -1647,6 +1821,26 @@ contains
   subroutine dknma5(xa, ya, fim, xc, yc, rz3, eta2, eta3, xr, yr, wm, em, vc3, alc3, ac3, bc3, &
                     analog, vc2c3, alc2c3, vc2cm, alc2cm, vc, alc, ac2c3k, bc2c3k, ac2cmk, &
                     bc2cmk, ac2c3r, bc2c3r, ac2cmr, bc2cmr, ac, bc, ier)
+    !: XA : real -- A point of the guide axis; accepted and not used, as printed.
+    !: YA : real -- A point of the guide axis; accepted and not used, as printed.
+    !: FIM : real -- Direction of guide M, rad.
+    !: XC : real -- Revolute C of block 3, m.
+    !: YC : real -- Revolute C of block 3, m.
+    !: RZ3 : real -- Sizes of block 3; accepted and not used, as printed.
+    !: ETA2 : real -- Slot direction of link 2 relative to the guide (T2 of ``DSKOR5``),
+    !:     rad.
+    !: ETA3 : real -- Sizes of block 3; accepted and not used, as printed.
+    !: XR : real -- Centre of rotation of link M, m.
+    !: YR : real -- Centre of rotation of link M, m.
+    !: WM : real -- Angular velocity and acceleration of link M.
+    !: EM : real -- Angular velocity and acceleration of link M.
+    !: VC3 : real -- Velocity and acceleration of C.
+    !: ALC3 : real -- Velocity and acceleration of C.
+    !: AC3 : real -- Velocity and acceleration of C.
+    !: BC3 : real -- Velocity and acceleration of C.
+    !: ANALOG : real = 0.0 -- 1.0: stop after the velocities (the book's way of skipping the
+    !:     acceleration work, e.g. for velocity analogues); the acceleration outputs are
+    !:     then 0. Anything else: compute the accelerations too.
     real(dp), intent(in) :: xa, ya, fim, xc, yc, rz3, eta2, eta3, xr, yr, wm, em, vc3, alc3
     real(dp), intent(in) :: ac3, bc3, analog
     real(dp), intent(out) :: vc2c3, alc2c3, vc2cm, alc2cm, vc, alc, ac2c3k, bc2c3k, ac2cmk

@@ -23,6 +23,13 @@ contains
   ! first three points, h (5 y1 + 8 y2 - y3)/12 (error h**4 y'''/24), so every point is
   ! 4th order (E-DINTGR-4, numerical); as-printed keeps the trapezoid.  M = 2: trapezoid.
   subroutine dintgr(m, h, nomer, y, fint)
+    !: M : integer 2..2147483646 -- Number of points; must equal ``len(Y)`` (at least 2).
+    !: H : real != 0 -- Step of the table, non-zero (the printed header names it ``N``:
+    !:     ERRATA E-DINTGR-1).
+    !: NOMER : integer 1..3 -- Method, numbered as the listing's code does (L443-447): 1
+    !:     Simpson, 2 trapezoids, 3 rectangles. The prose at L431 numbers them the other way
+    !:     round (1 rectangles, 3 Simpson); the code is followed (ERRATA E-DINTGR-2).
+    !: Y : table(M) real -- The values of the integrand at the M points.
     integer, intent(in) :: m, nomer
     real(dp), intent(in) :: h
     real(dp), intent(in) :: y(m)
@@ -57,6 +64,9 @@ contains
   ! the first point the forward difference (Y(2) - Y(1))/H, of the same (first) order as
   ! the backward differences at the others (E-DFRNCL-1, numerical); as-printed keeps 0.
   subroutine dfrncl(m, h, fdif, y)
+    !: M : integer 2..2147483646 -- Number of points; must equal ``len(Y)`` (at least 2).
+    !: H : real != 0 -- Step of the table, non-zero.
+    !: Y : table(M) real -- The function values.
     integer, intent(in) :: m
     real(dp), intent(in) :: h
     real(dp), intent(out) :: fdif(m)
@@ -73,6 +83,8 @@ contains
   ! Coincident points have no direction: the book divides 0 by 0; here 0 is returned.
   ! A direction a hair below 0 wraps to 2*PI in rounding; it is 0 then (E-DUGOL-1).
   pure real(dp) function dugl1(x1, y1, x2, y2)
+    !: X1, Y1 : real -- Start of the segment.
+    !: X2, Y2 : real -- End of the segment.
     real(dp), intent(in) :: x1, y1, x2, y2
     dugl1 = dugol(dugl2(x1, y1, x2, y2))
   end function dugl1
@@ -84,6 +96,7 @@ contains
   ! E-DUGL2-1).  Adding +0 turns a -0.0 into +0.0, so Y2 = Y1 still gives +pi, as
   ! FORTRAN IV's SIGN did.  Coincident points give 0 (the Python layer raises first).
   pure real(dp) function dugl2(x1, y1, x2, y2)
+    !: X1, Y1, X2, Y2 : real -- Start and end of the segment.
     real(dp), intent(in) :: x1, y1, x2, y2
     if (x2 == x1 .and. y2 == y1) then
       dugl2 = 0.0_dp
@@ -94,6 +107,10 @@ contains
 
   ! II.5, L590-599.  UGOL1 + sign(VEL) * |UGOLD|  (VEL = 0 counts as positive).
   pure real(dp) function dugl3(ugol1, ugold, vel)
+    !: UGOL1 : real -- Base angle, radians.
+    !: UGOLD : real -- Added angle; only its magnitude is used.
+    !: VEL : real -- The parameter whose sign decides; zero (and -0.0, as on the ES EVM)
+    !:     counts as positive.
     real(dp), intent(in) :: ugol1, ugold, vel
     dugl3 = ugol1 + book_sign(ugold, vel)
   end function dugl3
@@ -103,6 +120,9 @@ contains
   ! "psi = phi for v >= 0", so VEL > 0 goes where VEL = 0 goes.  The listing subtracts
   ! where Table 2 adds (E-DUGL4-2): the listing is kept.
   pure real(dp) function dugl4(ugol1, ugold, vel)
+    !: UGOL1 : real -- Angle of the assumed direction, radians.
+    !: UGOLD : real -- Angle subtracted when VEL < 0 (usually PI).
+    !: VEL : real -- The solved magnitude whose sign decides.
     real(dp), intent(in) :: ugol1, ugold, vel
     if (vel < 0.0_dp) then
       dugl4 = ugol1 - ugold
@@ -114,6 +134,7 @@ contains
   ! II.7, L614-628.  Direction from the projections, in (-pi/2, 3*pi/2).
   ! PRX = 0 gives +-pi/2 by the sign of PRY (+pi/2 for the zero vector).
   pure real(dp) function dugl5(prx, pry)
+    !: PRX, PRY : real -- Projections on the x and y axes.
     real(dp), intent(in) :: prx, pry
     if (prx == 0.0_dp) then
       dugl5 = book_sign(pi/2.0_dp, pry)
@@ -128,6 +149,7 @@ contains
   ! FI in (-ulp, 0) would round to FI + 2*PI = 2*PI, outside [0, 2*PI): 0 is returned,
   ! the same direction to within |FI| (E-DUGOL-1).
   pure real(dp) function dugol(fi)
+    !: FI : real -- Angle, radians.
     real(dp), intent(in) :: fi
     if (fi < 0.0_dp) then
       dugol = fi + 2.0_dp*pi
@@ -139,6 +161,9 @@ contains
 
   ! II.9, L641-644.  z-component of r x F: R*F*sin(G - FI), written as printed.
   pure real(dp) function dmomnt(r, fi, f, g)
+    !: R, FI : real -- Magnitude and direction of the arm (radius vector of the point of
+    !:     application).
+    !: F, G : real -- Magnitude and direction of the force.
     real(dp), intent(in) :: r, fi, f, g
     dmomnt = r*cos(fi)*f*sin(g) - r*sin(fi)*f*cos(g)
   end function dmomnt
@@ -146,6 +171,10 @@ contains
   ! II.10, L648-660.  Angular velocity (or acceleration) |VEKTOR/RAZMER| with the sign of
   ! UGOL (normally the vector's direction minus the link's).
   pure real(dp) function domega(razmer, vektor, ugol)
+    !: RAZMER : length -- Link length, > 0.
+    !: VEKTOR : real -- Relative velocity (or tangential acceleration); only its magnitude
+    !:     is used.
+    !: UGOL : real -- The angle whose sign gives the sense of rotation ("logical flag").
     real(dp), intent(in) :: razmer, vektor, ugol
     if (razmer == 0.0_dp) then
       domega = 0.0_dp
@@ -157,6 +186,7 @@ contains
   ! II.11, L664-680.  Length and signed direction of (X1,Y1) -> (X2,Y2).  The book's own
   ! guard: coincident points give RZ = 0 and FI = 0.
   pure subroutine dvkt(x1, y1, x2, y2, rz, fi)
+    !: X1, Y1, X2, Y2 : real -- Start and end of the segment.
     real(dp), intent(in) :: x1, y1, x2, y2
     real(dp), intent(out) :: rz, fi
     rz = norm2d(x2 - x1, y2 - y1)
@@ -166,6 +196,9 @@ contains
   ! II.12, L684-700.  Sum of two vectors given by magnitude and direction (a negative
   ! magnitude means the reversed direction); L >= 0, FI = DUGL5 of the projections.
   pure subroutine dsmvkt(l1, fi1, l2, fi2, l, fi)
+    !: L1, FI1 : real -- First vector: magnitude (negative means reversed) and direction,
+    !:     radians.
+    !: L2, FI2 : real -- Second vector.
     real(dp), intent(in) :: l1, fi1, l2, fi2
     real(dp), intent(out) :: l, fi
     real(dp) :: lx, ly

@@ -138,6 +138,17 @@ contains
   ! ERRATA: E-DSNTZR-1 (names F11/F13 = FI1/FI3), E-DSNTZR-2 (dead F11 = F11(K) lines),
   ! E-DSNTZR-3 (8th argument), E-DSNTZR-4 (atan2), E-SYN-1 (no division by yC2 - yC1).
   subroutine dsntzr(lo, l3, fi1, fi3, aaa, l1, l2, fi11, gmin_turn, gmax_turn, ier)
+    !: LO : table(3) real -- Four-bar: the frame length AD three times. Crank-slider: the
+    !:     three positions of the slider pin along the guide (abscissae measured from the
+    !:     crank pivot).
+    !: L3 : real -- Four-bar: the rocker length DC. Crank-slider: the offset of the slider
+    !:     pin (the guide is the line at distance L3 in the direction FI3); any sign.
+    !: FI1 : table(3) real -- Crank angles of the three positions; only the differences
+    !:     count.
+    !: FI3 : table(3) real -- Four-bar: the rocker angles. Crank-slider: three equal angles
+    !:     giving the direction of the offset (1.570 in the book's example, L1366).
+    !: AAA : flag -- 0 prints the book's report (L1006-1017); anything else is silent
+    !:     (default).
     real(dp), intent(in) :: lo(3), l3, fi1(3), fi3(3), aaa
     real(dp), intent(out) :: l1, l2, fi11, gmin_turn, gmax_turn
     integer, intent(out) :: ier
@@ -215,6 +226,17 @@ contains
   ! (vertical bisector: YC2 = YC1 in the book's own example), E-DSNTZ1-4, E-DSNTZ1-6,
   ! E-SYN-1, E-SYN-2.
   subroutine dsntz1(kw3, fi31, fi32, l3, xd, q, aaa, l1, l2, lo, gmin_turn, gmax_turn, ier)
+    !: KW3 : real -- Coefficient of speed change of the rocker, omega_return / omega_work (>
+    !:     1).
+    !: FI31, FI32 : real -- Rocker angles of the two extreme positions: C1 (crank and
+    !:     coupler stretched out) and C2 (folded).
+    !: L3 : length -- Rocker length DC (> 0).
+    !: XD : real -- Abscissa of the rocker pivot D = (XD, 0); the crank pivot A is on the x
+    !:     axis.
+    !: Q : real -- Assembly variant, by its sign only (0 acts as +1): -1 takes the smaller
+    !:     XA (A "between O and D" in the book's example, L1055), +1 the other intersection.
+    !: AAA : flag -- 0 prints the book's report (L1097-1103); anything else is silent
+    !:     (default).
     real(dp), intent(in) :: kw3, fi31, fi32, l3, xd, q, aaa
     real(dp), intent(out) :: l1, l2, lo, gmin_turn, gmax_turn
     integer, intent(out) :: ier
@@ -295,6 +317,13 @@ contains
   ! ERRATA: E-DSNTZ2-1 (KC1A + TAN = KC1A = TAN), E-DSNTZ2-4 (PSI <= 0), E-SYN-1.
   subroutine dsntz2(kw3, fi3, l3, xd, gmin, gmax, aaa, l1, l2, lo, xa, ya, gmin_turn, &
                     gmax_turn, ier)
+    !: KW3 : real -- Coefficient of speed change of the rocker (> 1).
+    !: FI3 : real -- Rocker angle of the first (stretched-out) extreme position.
+    !: L3 : length -- Rocker length DC (> 0).
+    !: XD : real -- Abscissa of the rocker pivot D = (XD, 0).
+    !: GMIN, GMAX : real -- Transmission angles at the two extreme positions.
+    !: AAA : flag -- 0 prints the book's report with XA and YA (L1169-1179); else silent
+    !:     (default).
     real(dp), intent(in) :: kw3, fi3, l3, xd, gmin, gmax, aaa
     real(dp), intent(out) :: l1, l2, lo, xa, ya, gmin_turn, gmax_turn
     integer, intent(out) :: ier
@@ -361,6 +390,15 @@ contains
   ! ERRATA: E-DSNTZ3-1, E-DSNTZ3-2, E-DSNTZ3-3 (GELG call missing M = 2), E-SYN-1.
   subroutine dsntz3(xb1, yb1, xb2, yb2, xc1, yc1, xc2, yc2, fi1, alc1, aaa, l1, l3, lo, &
                     gmin_turn, gmax_turn, ier)
+    !: XB1, YB1, XB2, YB2 : real -- The crank pin B in the two positions.
+    !: XC1, YC1, XC2, YC2 : real -- The rocker pin C in the two positions (|B1C1| should
+    !:     equal |B2C2|; not checked, the routine does not use the coupler length).
+    !: FI1 : real -- Crank rotation from position 1 to position 2. With the listing's line
+    !:     direction the crank turns from B1 to B2 clockwise by FI1 (i.e. by -FI1 in the
+    !:     counter-clockwise sense; verified in tests).
+    !: ALC1 : real -- Direction of the velocity of C in position 1.
+    !: AAA : flag -- 0 prints the book's report (L1256-1262); anything else is silent
+    !:     (default).
     real(dp), intent(in) :: xb1, yb1, xb2, yb2, xc1, yc1, xc2, yc2, fi1, alc1, aaa
     real(dp), intent(out) :: l1, l3, lo, gmin_turn, gmax_turn
     integer, intent(out) :: ier
@@ -434,6 +472,18 @@ contains
   ! then LO = (L3 - H)/(1 + LAMBDA), L1 = LAMBDA*LO.  No printed example.
   ! ERRATA: E-DSNTZK-1 (statement order), E-DSNTZK-2 (S and H glosses).
   subroutine dsntzk(kw3, s, h, q, aaa, l1, lo, l3, gmin_turn, gmax_turn, ier)
+    !: KW3 : real -- Coefficient of speed change of the output (> 1).
+    !: S : length -- Stroke (> 0): the chord swept by the end of the oscillating slotted
+    !:     link, or the stroke 2 L3 of a slider driven by the end of the rotating one along
+    !:     a line through the link's pivot perpendicular to the centre line. The listing's
+    !:     comment says "stroke of the slotted link", the prose (L1399) "stroke of the
+    !:     driven link" (ERRATA E-DSNTZK-2).
+    !: H : real >= 0 -- Reserve (>= 0): how much longer the slotted link is than the largest
+    !:     distance LO + L1 from its pivot to the crank pin.
+    !: Q : real -- 0 for a rotating slotted link, any other value for an oscillating one
+    !:     (L1401).
+    !: AAA : flag -- 0 prints the book's report (L1432-1435); anything else is silent
+    !:     (default).
     real(dp), intent(in) :: kw3, s, h, q, aaa
     real(dp), intent(out) :: l1, lo, l3, gmin_turn, gmax_turn
     integer, intent(out) :: ier

@@ -744,12 +744,16 @@ def test_dead_centre_raises():
         K.DKNMA1(0, 0, 2, 0, 1.0, 1.0, 1.0, math.pi / 2, 0, 0, 0, 0, 0, 0, 1)
 
 
-def test_errors_never_nan_in_fortran():
+def test_failed_calls_give_nan_from_the_drivers():
+    """The drivers set the results of a failed call to NaN, in one place (the routines
+    leave them as they are); the status says why."""
     f = sarkp._sarkp.drv_kinematics
-    out = f.dprm1_1(0, 0.0, 0.0, 3.0, 0.0, 1.0, 1.0, 1.0, 1.0)
-    assert out[-1] == sarkp.library.ST_ASSEMBLY and all(x == 0.0 for x in out[:-1])
-    out = f.dskor1_1(0, 1.0, 0.0, 1.0, math.pi, 1.0, 0.5, 0.0, 0.0, 1.0)
-    assert out[-1] == sarkp.library.ST_SINGULAR and all(x == 0.0 for x in out[:-1])
+    *out, status, bad = f.dprm1_1(0, 0.0, 0.0, 3.0, 0.0, 1.0, 1.0, 1.0, 1.0)
+    assert (status, bad) == (sarkp.Status.ASSEMBLY, 0) and all(math.isnan(x) for x in out)
+    *out, status, bad = f.dskor1_1(0, 1.0, 0.0, 1.0, math.pi, 1.0, 0.5, 0.0, 0.0, 1.0)
+    assert (status, bad) == (sarkp.Status.SINGULAR, 0) and all(math.isnan(x) for x in out)
+    *out, status, bad = f.dprm1_1(0, 0.0, 0.0, 3.0, 0.0, -1.0, 1.0, 1.0, 1.0)
+    assert bad == 5 and all(math.isnan(x) for x in out)     # RZ2 < 0: screened, not run
 
 
 def test_non_grashof_sweep_loses_assembly():

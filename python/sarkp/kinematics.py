@@ -51,15 +51,14 @@ that a mechanism far from the origin keeps its digits.
 from __future__ import annotations
 
 
-from .library import book_routine
+from . import _wrap_kinematics as _w
+from .library import describe
 
 
 __all__ = ["DPRM1", "DPRM2", "DPRM3", "DPRM4", "DPRM5",
            "DSKOR1", "DSKOR2", "DSKOR3", "DSKOR4", "DSKOR5",
            "DUSKR1", "DUSKR2", "DUSKR3", "DUSKR4", "DUSKR5",
            "DKNMA1", "DKNMA2", "DKNMA3", "DKNMA4", "DKNMA5"]
-
-_P = {"P": (-1, 1)}
 
 _RAISES_ASSEMBLY = """    AssemblyError
         The links do not reach: the group cannot be assembled in this position."""
@@ -83,38 +82,15 @@ def _raises(assembly=None, singular=None, warns=True):
     return text + "\n"
 
 
-_ANALOG_DOC = """    ANALOG : float or array_like
-        1.0: stop after the velocities (the book's way of skipping the acceleration
-        work, e.g. for velocity analogues); the acceleration outputs are then 0.
-        Anything else: compute the accelerations too."""
-
 # ---------------------------------------------------------------------------------------
 # positions
 # ---------------------------------------------------------------------------------------
 
-DPRM1 = book_routine(
-    "DPRM1", listing="IV.1", lines="L1479-1505",
-    inputs=("XA", "YA", "XC", "YC", "RZ2", "RZ3", "P", "AAA"),
-    outputs=("FI2", "FI3", "XB", "YB"),
-    chapter="kinematics", lengths=("RZ2", "RZ3"), integers=_P,
+DPRM1 = describe(
+    _w.DPRM1, listing="IV.1", lines="L1479-1505",
     doc="""Positions of a kind-1 group (RRR): the internal joint B of links AB and CB.
 
     Listing IV.1 (L1479-1505), operator function PRM1 (Table 7, Fig. 14).
-
-    Parameters
-    ----------
-    XA, YA : float or array_like
-        Centre of the external revolute A (link 2), m.
-    XC, YC : float or array_like
-        Centre of the external revolute C (link 3), m.
-    RZ2, RZ3 : float or array_like
-        Link lengths AB and CB, m (> 0).
-    P : {-1, 1}
-        Assembly branch (L1477): -1 when A, B, C go clockwise, i.e. B on the left of the
-        directed line A -> C; +1 the mirror image.  Note: ``DKNMA1`` uses the opposite
-        sign.
-    AAA : float, optional
-        The book's print flag; unused (no report for this routine).
 
     Returns
     -------
@@ -125,34 +101,13 @@ DPRM1 = book_routine(
 """ + _raises(assembly=True, singular="A = C with RZ2 = RZ3 (B anywhere on a circle).",
               warns=False))
 
-DPRM2 = book_routine(
-    "DPRM2", listing="IV.2", lines="L1531-1558",
-    inputs=("XA", "YA", "XK", "YK", "FIM", "RZ2", "RZ3", "T", "AAA"),
-    outputs=("XB", "YB", "FI2"),
-    chapter="kinematics", lengths=("RZ2",), nonnegative=("RZ3",),
+DPRM2 = describe(
+    _w.DPRM2, listing="IV.2", lines="L1531-1558",
     doc="""Positions of a kind-2 group (RRP): link AB with a slider B on a guide.
 
     Listing IV.2 (L1531-1558), operator function PRM2 (Table 8, Fig. 15).  The guide
     axis passes through K with direction FIM; B is ``RZ3*sin(T)`` from the guide axis,
     on the side of A.
-
-    Parameters
-    ----------
-    XA, YA : float or array_like
-        Centre of the external revolute A, m.
-    XK, YK : float or array_like
-        Any point of the guide axis, m.
-    FIM : float or array_like
-        Direction of the guide, rad.  It also selects the branch (L1543, "FIM is chosen
-        along AB from A to B"): B lies ahead, in the direction FIM, of the foot of the
-        perpendicular from A; pass ``FIM + pi`` for the other branch.
-    RZ2 : float or array_like
-        Length AB, m (> 0).
-    RZ3, T : float or array_like
-        Linear (m, >= 0) and angular (rad) size of the slider: the offset of B from the
-        guide axis is ``RZ3*sin(T)``.
-    AAA : float, optional
-        The book's print flag; unused.
 
     Returns
     -------
@@ -163,30 +118,12 @@ DPRM2 = book_routine(
               singular="A lies on the guide axis and the offset is not 0 (side undefined).",
               warns=False))
 
-DPRM3 = book_routine(
-    "DPRM3", listing="IV.3", lines="L1577-1598",
-    inputs=("XA", "YA", "XC", "YC", "RZ2", "T", "P", "AAA"),
-    outputs=("RZAC", "FI3", "FICA"),
-    chapter="kinematics", nonnegative=("RZ2",), integers=_P,
+DPRM3 = describe(
+    _w.DPRM3, listing="IV.3", lines="L1577-1598",
     doc="""Positions of a kind-3 group (RPR, slotted lever): direction of link 3.
 
     Listing IV.3 (L1577-1598), operator function PRM3 (Table 9, Fig. 16).  The slider 2
     pivoted at A slides along link 3, which turns about C.
-
-    Parameters
-    ----------
-    XA, YA : float or array_like
-        Centre of the revolute A of slider 2, m.
-    XC, YC : float or array_like
-        Centre of the revolute C of link 3, m.
-    RZ2, T : float or array_like
-        Linear (m, >= 0) and angular (rad) size of link 2: A is ``RZ2*sin(T)`` from the
-        axis of link 3 (with T = pi/2, RZ2 is that perpendicular, L1563).
-    P : {-1, 1}
-        Assembly branch (L1565): ``FI3 = FICA + P*angle BCA``; -1 puts A on the left of
-        the axis direction FI3, +1 on the right.  ``DKNMA3`` uses the opposite sign.
-    AAA : float, optional
-        The book's print flag; unused.
 
     Returns
     -------
@@ -197,35 +134,14 @@ DPRM3 = book_routine(
 """ + _raises(assembly=True, singular="A = C with a zero offset (axis undefined).",
               warns=False))
 
-DPRM4 = book_routine(
-    "DPRM4", listing="IV.4", lines="L1622-1657",
-    inputs=("XVM", "YVM", "XA", "YA", "FIM", "XVN", "YVN", "XC", "YC", "FIN",
-            "RZ2", "T2", "RZ3", "T3", "AAA"),
-    outputs=("XB", "YB", "RVBM", "FIVBM", "RVBN", "FIVBN"),
-    chapter="kinematics", nonnegative=("RZ2", "RZ3"),
+DPRM4 = describe(
+    _w.DPRM4, listing="IV.4", lines="L1622-1657",
     doc="""Positions of a kind-4 group (PRP): the joint B of two sliders on two guides.
 
     Listing IV.4 (L1622-1657), operator function PRM4 (Table 10, Fig. 17).  Corrected:
     the printed ``X(1,2) = TAN(FIM)`` lost its minus sign (E-DPRM4-1) and the line
     ``X(2,2) = -TAN(FIN)`` is missing (E-DPRM4-2).  Guides at +-pi/2 work (the lines are
     written without TAN).
-
-    Parameters
-    ----------
-    XVM, YVM : float or array_like
-        Instantaneous centre of rotation of link M (carrying guide M), m.
-    XA, YA, FIM : float or array_like
-        A point of the axis of guide M (m) and its direction (rad).
-    XVN, YVN : float or array_like
-        Instantaneous centre of rotation of link N, m.
-    XC, YC, FIN : float or array_like
-        A point of the axis of guide N (m) and its direction (rad).
-    RZ2, T2 : float or array_like
-        B is ``RZ2*sin(T2)`` from guide M along its left normal, direction FIM + pi/2.
-    RZ3, T3 : float or array_like
-        The same for guide N.
-    AAA : float, optional
-        The book's print flag; unused.
 
     Returns
     -------
@@ -234,27 +150,14 @@ DPRM4 = book_routine(
         centres VM and VN, as ``DSKOR4``/``DUSKR4`` take them.
 """ + _raises(singular="The guides are parallel."))
 
-DPRM5 = book_routine(
-    "DPRM5", listing="extension (none in the book, L1659)", lines="L1659",
-    inputs=("XA", "YA", "FIM", "XC", "YC", "T2", "AAA"),
-    outputs=("XK", "YK", "S2", "S3"),
-    chapter="kinematics", doc="""Positions of a kind-5 group (RPP) -- an extension, not a book routine.
+DPRM5 = describe(
+    _w.DPRM5, listing="extension (none in the book, L1659)", lines="L1659",
+    doc="""Positions of a kind-5 group (RPP) -- an extension, not a book routine.
 
     The book prints no position routine for kind 5: "the coordinates of the joint centre
     C and of the guide fully determine the linear and angular coordinates of the links"
     (L1659; Table 33, L6287, lists DPRM1-DPRM4).  Both links turn with link M; this
     routine returns where they are along their guides.
-
-    Parameters
-    ----------
-    XA, YA, FIM : float or array_like
-        A point of the axis of guide M (m) and its direction (rad); link 2 slides on it.
-    XC, YC : float or array_like
-        Centre of the revolute C of block 3, m.
-    T2 : float or array_like
-        Angular size of link 2: block 3 slides in link 2 along FIM + T2, rad.
-    AAA : float, optional
-        Print flag; unused.
 
     Returns
     -------
@@ -270,27 +173,11 @@ DPRM5 = book_routine(
 # velocities
 # ---------------------------------------------------------------------------------------
 
-DSKOR1 = book_routine(
-    "DSKOR1", listing="IV.5", lines="L1692-1719",
-    inputs=("RZ2", "FI2", "RZ3", "FI3", "VA", "ALA", "VC", "ALC", "AAA"),
-    outputs=("VBA", "ALBA", "VBC", "ALBC", "VB", "ALB", "W2", "W3"),
-    chapter="kinematics", lengths=("RZ2", "RZ3"),
+DSKOR1 = describe(
+    _w.DSKOR1, listing="IV.5", lines="L1692-1719",
     doc="""Velocities of a kind-1 group (RRR): ``v_A + v_BA = v_C + v_BC``.
 
     Listing IV.5 (L1692-1719), operator function SKOR1 (Table 11, Fig. 19).
-
-    Parameters
-    ----------
-    RZ2, FI2 : float or array_like
-        Length AB (m, > 0) and direction A -> B (rad), from ``DPRM1``.
-    RZ3, FI3 : float or array_like
-        Length CB and direction C -> B.
-    VA, ALA : float or array_like
-        Velocity of A: modulus (m/s) and direction (rad).
-    VC, ALC : float or array_like
-        Velocity of C (0, 0 for a fixed pivot).
-    AAA : float, optional
-        Print flag; unused.
 
     Returns
     -------
@@ -300,28 +187,12 @@ DSKOR1 = book_routine(
         of links 2 and 3, rad/s.
 """ + _raises(singular="Dead centre: AB and CB are collinear (FI2 = FI3 mod pi)."))
 
-DSKOR2 = book_routine(
-    "DSKOR2", listing="IV.6", lines="L1740-1774",
-    inputs=("VA", "ALA", "VBM", "ALBM", "RZ2", "FI2", "FIM", "AAA"),
-    outputs=("VBA", "ALBA", "VBBM", "ALBBM", "VB", "ALB", "W2"),
-    chapter="kinematics", lengths=("RZ2",),
+DSKOR2 = describe(
+    _w.DSKOR2, listing="IV.6", lines="L1740-1774",
     doc="""Velocities of a kind-2 group (RRP): ``v_A + v_BA = v_BM + v_BBM``.
 
     Listing IV.6 (L1740-1774), operator function SKOR2 (Table 12, Fig. 20).  The printed
     header lacks the outputs VBA, ALBA that every call in the book passes (E-DSKOR2-1).
-
-    Parameters
-    ----------
-    VA, ALA : float or array_like
-        Velocity of A: modulus (m/s), direction (rad).
-    VBM, ALBM : float or array_like
-        Velocity of the point of the guide link under B (0, 0 for a fixed guide).
-    RZ2, FI2 : float or array_like
-        Length AB (m, > 0) and direction A -> B (rad), from ``DPRM2``.
-    FIM : float or array_like
-        Direction of the guide, rad.
-    AAA : float, optional
-        Print flag; unused.
 
     Returns
     -------
@@ -330,28 +201,12 @@ DSKOR2 = book_routine(
         FIM or FIM - pi); absolute velocity of B; signed angular velocity of AB, rad/s.
 """ + _raises(singular="AB is perpendicular to the guide (dead centre)."))
 
-DSKOR3 = book_routine(
-    "DSKOR3", listing="IV.7", lines="L1805-1854",
-    inputs=("XA", "YA", "XC", "YC", "VA", "ALA", "VC", "ALC", "FI3", "AAA"),
-    outputs=("VA3A", "ALA3A", "VA3C", "ALA3C", "VA3", "ALA3", "W3"),
-    chapter="kinematics", doc="""Velocities of a kind-3 group (RPR): ``v_A3 = v_A + v_A3A = v_C + v_A3C``.
+DSKOR3 = describe(
+    _w.DSKOR3, listing="IV.7", lines="L1805-1854",
+    doc="""Velocities of a kind-3 group (RPR): ``v_A3 = v_A + v_A3A = v_C + v_A3C``.
 
     Listing IV.7 (L1805-1854), operator function SKOR3 (Table 13, Fig. 21).  A3 is the
     point of link 3 that coincides with A.
-
-    Parameters
-    ----------
-    XA, YA, XC, YC : float or array_like
-        Joints A (slider pivot) and C (pivot of link 3), m.
-    VA, ALA : float or array_like
-        Velocity of A: modulus (m/s), direction (rad).
-    VC, ALC : float or array_like
-        Velocity of C.
-    FI3 : float or array_like
-        Direction of the axis of link 3, rad, as ``DPRM3`` returned it (the sign of W3
-        is taken from ALA3C - FI3, as printed: FI3 must be within pi/2 of FICA).
-    AAA : float, optional
-        Print flag; unused.
 
     Returns
     -------
@@ -360,28 +215,12 @@ DSKOR3 = book_routine(
         (perpendicular to CA), absolute; signed angular velocity of links 2 and 3, rad/s.
 """ + _raises(singular="A = C."))
 
-DSKOR4 = book_routine(
-    "DSKOR4", listing="IV.8", lines="L1879-1918",
-    inputs=("RVBM", "FIVBM", "FIM", "RVBN", "FIVBN", "FIN", "WM", "WN", "AAA"),
-    outputs=("VBBM", "ALBBM", "VBBN", "ALBBN", "VB", "ALB"),
-    chapter="kinematics", nonnegative=("RVBM", "RVBN"),
+DSKOR4 = describe(
+    _w.DSKOR4, listing="IV.8", lines="L1879-1918",
     doc="""Velocities of a kind-4 group (PRP): ``v_BM + v_BBM = v_BN + v_BBN``.
 
     Listing IV.8 (L1879-1918), operator function SKOR4 (Table 14, Fig. 22).  Corrected:
     the printed right-hand side uses ``ABS(WM)`` where ``ABS(WN)`` belongs (E-DSKOR4-3).
-
-    Parameters
-    ----------
-    RVBM, FIVBM : float or array_like
-        Distance (m) and direction (rad) of B from the centre VM of link M (``DPRM4``).
-    FIM : float or array_like
-        Direction of guide M, rad.
-    RVBN, FIVBN, FIN : float or array_like
-        The same for link N.
-    WM, WN : float or array_like
-        Signed angular velocities of links M and N, rad/s.
-    AAA : float, optional
-        Print flag; unused.
 
     Returns
     -------
@@ -390,31 +229,12 @@ DSKOR4 = book_routine(
         FIN - pi) and the absolute velocity of B.
 """ + _raises(singular="The guides are parallel."))
 
-DSKOR5 = book_routine(
-    "DSKOR5", listing="IV.9", lines="L1947-1978",
-    inputs=("XC3", "YC3", "XVM", "YVM", "FIM", "T2", "WM", "VC3", "ALC3", "AAA"),
-    outputs=("VC2C3", "ALC2C3", "VC2CM", "ALC2CM", "VC2", "ALC2"),
-    chapter="kinematics", doc="""Velocities of a kind-5 group (RPP): ``v_C2 = v_C3 + v_C2C3 = v_CM + v_C2CM``.
+DSKOR5 = describe(
+    _w.DSKOR5, listing="IV.9", lines="L1947-1978",
+    doc="""Velocities of a kind-5 group (RPP): ``v_C2 = v_C3 + v_C2C3 = v_CM + v_C2CM``.
 
     Listing IV.9 (L1947-1978), operator function SKOR5 (Table 15, Fig. 23).  C2 is the
     point of link 2 at C; links M, 2 and 3 all turn with WM.
-
-    Parameters
-    ----------
-    XC3, YC3 : float or array_like
-        Centre of the revolute C of block 3, m.
-    XVM, YVM : float or array_like
-        Instantaneous centre of rotation of link M, m.
-    FIM : float or array_like
-        Direction of guide M, rad.
-    T2 : float or array_like
-        Angular size of link 2: block 3 slides along FIM + T2, rad.
-    WM : float or array_like
-        Signed angular velocity of link M, rad/s.
-    VC3, ALC3 : float or array_like
-        Velocity of C: modulus (m/s), direction (rad).
-    AAA : float, optional
-        Print flag; unused.
 
     Returns
     -------
@@ -427,11 +247,8 @@ DSKOR5 = book_routine(
 # accelerations
 # ---------------------------------------------------------------------------------------
 
-DUSKR1 = book_routine(
-    "DUSKR1", listing="IV.10", lines="L2017-2051",
-    inputs=("AA", "BA", "AC", "BC", "RZ2", "FI2", "RZ3", "FI3", "W2", "W3", "AAA"),
-    outputs=("ABAT", "BBAT", "ABCT", "BBCT", "AB", "BB", "E2", "E3"),
-    chapter="kinematics", lengths=("RZ2", "RZ3"),
+DUSKR1 = describe(
+    _w.DUSKR1, listing="IV.10", lines="L2017-2051",
     doc="""Accelerations of a kind-1 group (RRR).
 
     Listing IV.10 (L2017-2051), operator function USKR1 (Table 16, Fig. 24):
@@ -441,19 +258,6 @@ DUSKR1 = book_routine(
     E-DUSKR1-1).  Corrected mode fixes it; as-printed mode keeps it, because the book's
     Fig. 91 (ch. 10) was computed with it (there ABCT = ABAT and E3 = +-|E2|*RZ2/RZ3).
 
-    Parameters
-    ----------
-    AA, BA : float or array_like
-        Acceleration of A: modulus (m/s**2), direction (rad).
-    AC, BC : float or array_like
-        Acceleration of C.
-    RZ2, FI2, RZ3, FI3 : float or array_like
-        As for ``DSKOR1``.
-    W2, W3 : float or array_like
-        Angular velocities of links 2, 3 (from ``DSKOR1``), rad/s.
-    AAA : float, optional
-        Print flag; unused.
-
     Returns
     -------
     DUSKR1(ABAT, BBAT, ABCT, BBCT, AB, BB, E2, E3)
@@ -461,34 +265,13 @@ DUSKR1 = book_routine(
         of B, and the signed angular accelerations of links 2, 3, rad/s**2.
 """ + _raises(singular="Dead centre: AB and CB are collinear."))
 
-DUSKR2 = book_routine(
-    "DUSKR2", listing="IV.11", lines="L2077-2119",
-    inputs=("AA", "BA", "ABM", "BVM", "ABK", "BVK", "RZ2", "FI2", "W2", "FIM", "AAA"),
-    outputs=("ABAT", "VBAT", "ABVM", "BVBM", "E2", "AB", "BB"),
-    chapter="kinematics", lengths=("RZ2",),
+DUSKR2 = describe(
+    _w.DUSKR2, listing="IV.11", lines="L2077-2119",
     doc="""Accelerations of a kind-2 group (RRP).
 
     Listing IV.11 (L2077-2119), operator function USKR2 (Table 17, Fig. 25):
     ``a_A + a^n_BA + a^t_BA = a_BM + a^k + a^r``.  ``VBAT`` and ``BVBM`` are directions
     (the author's names, kept).
-
-    Parameters
-    ----------
-    AA, BA : float or array_like
-        Acceleration of A: modulus (m/s**2), direction (rad).
-    ABM, BVM : float or array_like
-        Acceleration of the point of the guide link under B (0, 0 for a fixed guide).
-    ABK, BVK : float or array_like
-        Coriolis acceleration of B relative to the guide, supplied by the caller:
-        ``2*|WM|*VBBM`` at ``DUGL3(ALBBM, pi/2, WM)`` (0, 0 for a non-rotating guide).
-    RZ2, FI2 : float or array_like
-        Length AB (m, > 0) and direction A -> B, rad.
-    W2 : float or array_like
-        Angular velocity of AB (from ``DSKOR2``), rad/s.
-    FIM : float or array_like
-        Direction of the guide, rad.
-    AAA : float, optional
-        Print flag; unused.
 
     Returns
     -------
@@ -498,29 +281,12 @@ DUSKR2 = book_routine(
         acceleration of B.
 """ + _raises(singular="AB is perpendicular to the guide."))
 
-DUSKR3 = book_routine(
-    "DUSKR3", listing="IV.12", lines="L2150-2184",
-    inputs=("AA", "BA", "AC", "BC", "FI3", "W3", "RZAC", "FICA", "AA3AK", "BA3AK", "AAA"),
-    outputs=("AA3AR", "BA3AR", "AA3CT", "BA3CT", "E3", "AA3", "BA3"),
-    chapter="kinematics", lengths=("RZAC",),
+DUSKR3 = describe(
+    _w.DUSKR3, listing="IV.12", lines="L2150-2184",
     doc="""Accelerations of a kind-3 group (RPR).
 
     Listing IV.12 (L2150-2184), operator function USKR3 (Table 18, Fig. 26):
     ``a_A3 = a_A + a^k + a^r = a_C + a^n_A3C + a^t_A3C``.
-
-    Parameters
-    ----------
-    AA, BA, AC, BC : float or array_like
-        Accelerations of A and C: modulus (m/s**2), direction (rad).
-    FI3, W3 : float or array_like
-        Direction of the axis of link 3 (rad) and its angular velocity (rad/s).
-    RZAC, FICA : float or array_like
-        AC (m, > 0) and the direction C -> A (rad), from ``DPRM3``.
-    AA3AK, BA3AK : float or array_like
-        Coriolis acceleration of A3 relative to A, supplied by the caller:
-        ``2*|W3|*VA3A`` at ``DUGL3(ALA3A, pi/2, W3)`` (IV.15, L2529).
-    AAA : float, optional
-        Print flag; unused.
 
     Returns
     -------
@@ -530,12 +296,8 @@ DUSKR3 = book_routine(
         A3.
 """ + _raises(singular="The axis of link 3 is perpendicular to CA (only at the assembly limit)."))
 
-DUSKR4 = book_routine(
-    "DUSKR4", listing="IV.13", lines="L2221-2275",
-    inputs=("RVBM", "FIVBM", "FIM", "RVBN", "FIVBN", "FIN", "WM", "EM", "WN", "EN",
-            "ABBMK", "BBBMK", "ABBNK", "BBBNK", "AAA"),
-    outputs=("ABBMR", "BBBMR", "ABBNR", "BBBNR", "AB", "BB"),
-    chapter="kinematics", nonnegative=("RVBM", "RVBN"),
+DUSKR4 = describe(
+    _w.DUSKR4, listing="IV.13", lines="L2221-2275",
     doc="""Accelerations of a kind-4 group (PRP).
 
     Listing IV.13 (L2221-2275), operator function USKR4 (Table 19, Fig. 27):
@@ -544,22 +306,6 @@ DUSKR4 = book_routine(
     direction of the guide point's acceleration has a stray ``PID2 +`` that turns it by
     pi (E-DUSKR4-1, E-DUSKR4-2).  Note the order WM, EM, WN, EN (``DKNMA4``: WM, WN, EM, EN).
 
-    Parameters
-    ----------
-    RVBM, FIVBM, FIM, RVBN, FIVBN, FIN : float or array_like
-        As for ``DSKOR4``.
-    WM, EM : float or array_like
-        Angular velocity (rad/s) and acceleration (rad/s**2) of link M.
-    WN, EN : float or array_like
-        The same for link N.
-    ABBMK, BBBMK : float or array_like
-        Coriolis acceleration of B relative to guide M, supplied by the caller:
-        ``2*|WM|*VBBM`` at ``DUGL3(ALBBM, pi/2, WM)``.
-    ABBNK, BBBNK : float or array_like
-        The same for guide N.
-    AAA : float, optional
-        Print flag; unused.
-
     Returns
     -------
     DUSKR4(ABBMR, BBBMR, ABBNR, BBBNR, AB, BB)
@@ -567,40 +313,14 @@ DUSKR4 = book_routine(
         of B.
 """ + _raises(singular="The guides are parallel."))
 
-DUSKR5 = book_routine(
-    "DUSKR5", listing="IV.14", lines="L2308-2378",
-    inputs=("XC3", "YC3", "XVM", "YVM", "FIM", "WM", "EM", "T2", "AC3", "BC3",
-            "AC2MK", "BC2MK", "AC23K", "BC23K", "AAA"),
-    outputs=("AC2C3R", "BC2C3R", "AC2CMR", "BC2CMR", "AC2", "BC2"),
-    chapter="kinematics", doc="""Accelerations of a kind-5 group (RPP).
+DUSKR5 = describe(
+    _w.DUSKR5, listing="IV.14", lines="L2308-2378",
+    doc="""Accelerations of a kind-5 group (RPP).
 
     Listing IV.14 (L2308-2378), operator function USKR5 (Table 20, Fig. 28):
     ``a_C2 = a_C3 + a^k_23 + a^r_23 = a_CM + a^k_2M + a^r_2M``.  Corrected: the stray
     ``PID2 +`` of DUSKR4 is here too (E-DUSKR5-1).  Note the order FIM, WM, EM, T2
     (``DSKOR5``: FIM, T2, WM).
-
-    Parameters
-    ----------
-    XC3, YC3 : float or array_like
-        Centre of the revolute C, m.
-    XVM, YVM : float or array_like
-        Centre of rotation of link M, m.
-    FIM : float or array_like
-        Direction of guide M, rad.
-    WM, EM : float or array_like
-        Angular velocity and acceleration of link M.
-    T2 : float or array_like
-        Slot direction of link 2 relative to the guide, rad.
-    AC3, BC3 : float or array_like
-        Acceleration of C: modulus (m/s**2), direction (rad).
-    AC2MK, BC2MK : float or array_like
-        Coriolis acceleration of C2 relative to the guide: ``2*|WM|*VC2CM`` at
-        ``DUGL3(ALC2CM, pi/2, WM)``.
-    AC23K, BC23K : float or array_like
-        Coriolis acceleration of C2 relative to C3: ``2*|WM|*VC2C3`` at
-        ``DUGL3(ALC2C3, pi/2, WM)``.
-    AAA : float, optional
-        Print flag; unused.
 
     Returns
     -------
@@ -613,34 +333,13 @@ DUSKR5 = book_routine(
 # combined
 # ---------------------------------------------------------------------------------------
 
-_K1_IN = ("XA", "YA", "XC", "YC", "RZ2", "RZ3", "VA", "ALA", "VC", "ALC", "AA", "BA",
-          "AC", "BC", "P", "ANALOG")
-_K1_OUT = ("XB", "YB", "FI2", "FI3", "VBA", "ALBA", "VBC", "ALBC", "VB", "ALB", "W2", "W3",
-           "ABCN", "ABAN", "ABAT", "BBAT", "ABCT", "BBCT", "AB", "BB", "E2", "E3")
-DKNMA1 = book_routine(
-    "DKNMA1", listing="IV.16", lines="L2553-2658",
-    inputs=_K1_IN, outputs=_K1_OUT,
-    chapter="kinematics", lengths=("RZ2", "RZ3"), integers=_P, defaults={"ANALOG": 0.0},
+DKNMA1 = describe(
+    _w.DKNMA1, listing="IV.16", lines="L2553-2658",
     doc="""Kind-1 group (RRR): positions, velocities and accelerations in one call.
 
     Listing IV.16 (L2553-2658), operator function KNMA1 of textbook [1] (L2551).  The
     printed call of a four-argument ``DUGL1`` that the book never defines is read from
     the geometry as the direction C -> A (E-DKNMA1-2).
-
-    Parameters
-    ----------
-    XA, YA, XC, YC : float or array_like
-        External revolutes A and C, m.
-    RZ2, RZ3 : float or array_like
-        AB and CB, m (> 0).
-    VA, ALA, VC, ALC : float or array_like
-        Velocities of A and C: modulus, direction.
-    AA, BA, AC, BC : float or array_like
-        Accelerations of A and C: modulus, direction.
-    P : {-1, 1}
-        Assembly branch, the OPPOSITE sign of ``DPRM1``: +1 puts B on the left of the
-        directed line A -> C (A, B, C clockwise).  ``DKNMA1(P) = DPRM1(-P)``.
-""" + _ANALOG_DOC + """
 
     Returns
     -------
@@ -651,44 +350,13 @@ DKNMA1 = book_routine(
         ``DUSKR1`` (corrected: here ABCT = |y2| as printed).
 """ + _raises(assembly=True, singular="Dead centre (AB, CB collinear) or A = C."))
 
-_K2_IN = ("XA", "YA", "XK", "YK", "FIM", "RZ2", "RZ3", "ETA", "VA", "ALA", "WM", "VBM",
-          "ALBM", "AA", "BA", "ABM", "BBM", "P", "ANALOG")
-_K2_OUT = ("XB", "YB", "FI2", "VBA", "ALBA", "VBBM", "ALBBM", "VB", "ALB", "W2", "ABAN",
-           "ABK", "BBK", "ABAT", "BBAT", "ABBM", "BBBM", "AB", "BB", "E2")
-DKNMA2 = book_routine(
-    "DKNMA2", listing="IV.17", lines="L2660-2747",
-    inputs=_K2_IN, outputs=_K2_OUT,
-    chapter="kinematics", lengths=("RZ2",), nonnegative=("RZ3",), integers=_P, defaults={"ANALOG": 0.0},
+DKNMA2 = describe(
+    _w.DKNMA2, listing="IV.17", lines="L2660-2747",
     doc="""Kind-2 group (RRP): positions, velocities and accelerations in one call.
 
     Listing IV.17 (L2660-2747), operator function KNMA2 of textbook [1].  Corrected: the
     side of A relative to the guide (E-DKNMA2-3) and the sign of E2 when W2 < 0
     (E-DKNMA2-4).
-
-    Parameters
-    ----------
-    XA, YA : float or array_like
-        External revolute A, m.
-    XK, YK, FIM : float or array_like
-        A point of the guide axis (m) and the guide direction (rad).
-    RZ2 : float or array_like
-        AB, m (> 0).
-    RZ3, ETA : float or array_like
-        B is ``RZ3*sin(ETA)`` from the guide axis along its LEFT normal e(FIM + pi/2)
-        (``DPRM2`` offsets towards A; the two agree when A is on the left or the offset
-        is 0).
-    VA, ALA : float or array_like
-        Velocity of A.
-    WM : float or array_like
-        Angular velocity of the guide link (for the Coriolis acceleration), rad/s.
-    VBM, ALBM, ABM, BBM : float or array_like
-        Velocity and acceleration of the guide point under B (0 for a fixed guide).
-    AA, BA : float or array_like
-        Acceleration of A.
-    P : {-1, 1}
-        Branch: +1 puts B ahead of the foot of the perpendicular from A along FIM, -1
-        behind: ``DKNMA2(FIM, P=1) = DPRM2(FIM)``, ``DKNMA2(FIM, P=-1) = DPRM2(FIM + pi)``.
-""" + _ANALOG_DOC + """
 
     Returns
     -------
@@ -700,34 +368,12 @@ DKNMA2 = book_routine(
         guide; absolute acceleration of B; angular acceleration of AB.
 """ + _raises(assembly=True, singular="AB perpendicular to the guide."))
 
-_K3_IN = ("XA", "YA", "XC", "YC", "RZ2", "ETA", "VA", "ALA", "VC", "ALC", "AA", "BA",
-          "AC", "BC", "P", "ANALOG")
-_K3_OUT = ("XB", "YB", "RZBC", "FI3", "VAR", "ALAR", "VAC", "ALAC", "W3", "VA3", "ALA3",
-           "AAK", "BAK", "AAR", "BAR", "AACT", "BACT", "AA3", "BA3", "E3", "AACN")
-DKNMA3 = book_routine(
-    "DKNMA3", listing="IV.18", lines="L2749-2829",
-    inputs=_K3_IN, outputs=_K3_OUT,
-    chapter="kinematics", nonnegative=("RZ2",), integers=_P, defaults={"ANALOG": 0.0},
+DKNMA3 = describe(
+    _w.DKNMA3, listing="IV.18", lines="L2749-2829",
     doc="""Kind-3 group (RPR, slotted lever): positions, velocities, accelerations.
 
     Listing IV.18 (L2749-2829), operator function KNMA3 of textbook [1].  The printed
     header lost two outputs, ALAR and VAC (E-DKNMA3-1); BAR is corrected (E-DKNMA3-3).
-
-    Parameters
-    ----------
-    XA, YA : float or array_like
-        Revolute A of the slider 2, m.
-    XC, YC : float or array_like
-        Revolute C of link 3, m.
-    RZ2, ETA : float or array_like
-        B is the point of the axis of link 3 with AB = RZ2 and angle ABC = ETA (with
-        ETA = pi/2, B is the foot of the perpendicular from A and RZ2 the offset).
-    VA, ALA, VC, ALC, AA, BA, AC, BC : float or array_like
-        Velocities and accelerations of A and C.
-    P : {-1, 1}
-        Branch, the OPPOSITE sign of ``DPRM3``: +1 turns AB counter-clockwise from AC.
-        ``DKNMA3(P) = DPRM3(-P)``.
-""" + _ANALOG_DOC + """
 
     Returns
     -------
@@ -740,14 +386,8 @@ DKNMA3 = book_routine(
         tangential accelerations; absolute acceleration of A3; E3; ``AACN = W3**2*AC``.
 """ + _raises(assembly=True, singular="A = C or B = C."))
 
-_K4_IN = ("FIM", "XA", "YA", "FIN", "XC", "YC", "RZ2", "ETA2", "RZ3", "ETA3", "WM", "WN",
-          "EM", "EN", "ANALOG")
-_K4_OUT = ("XB", "YB", "VB2R", "ALB2R", "VB3R", "ALB3R", "VB", "ALB", "AB2K", "BB2K",
-           "AB3K", "BB3K", "AB2R", "BB2R", "AB3R", "BB3R", "AB", "BB")
-DKNMA4 = book_routine(
-    "DKNMA4", listing="IV.19", lines="L2831-2929",
-    inputs=_K4_IN, outputs=_K4_OUT,
-    chapter="kinematics", nonnegative=("RZ2", "RZ3"), defaults={"ANALOG": 0.0},
+DKNMA4 = describe(
+    _w.DKNMA4, listing="IV.19", lines="L2831-2929",
     doc="""Kind-4 group (PRP): positions, velocities and accelerations in one call.
 
     Listing IV.19 (L2831-2929), operator function KNMA4 of textbook [1].  The guide links
@@ -755,18 +395,6 @@ DKNMA4 = book_routine(
     pivots, or the guides do not turn).  Corrected: ``BB`` from the acceleration, not the
     velocity, components (E-DKNMA4-2); the guide points' acceleration direction when
     WM = 0 or WN = 0 (E-DKNMA4-3).  Note the order WM, WN, EM, EN.
-
-    Parameters
-    ----------
-    FIM, XA, YA : float or array_like
-        Direction of guide M and a point of its axis (its centre of rotation).
-    FIN, XC, YC : float or array_like
-        The same for guide N.
-    RZ2, ETA2, RZ3, ETA3 : float or array_like
-        Offsets ``RZ2*sin(ETA2)``, ``RZ3*sin(ETA3)`` of B along the left normals.
-    WM, WN, EM, EN : float or array_like
-        Angular velocities and accelerations of links M and N.
-""" + _ANALOG_DOC + """
 
     Returns
     -------
@@ -776,39 +404,13 @@ DKNMA4 = book_routine(
         relative accelerations; absolute acceleration of B.
 """ + _raises(singular="The guides are parallel."))
 
-_K5_IN = ("XA", "YA", "FIM", "XC", "YC", "RZ3", "ETA2", "ETA3", "XR", "YR", "WM", "EM",
-          "VC3", "ALC3", "AC3", "BC3", "ANALOG")
-_K5_OUT = ("VC2C3", "ALC2C3", "VC2CM", "ALC2CM", "VC", "ALC", "AC2C3K", "BC2C3K",
-           "AC2CMK", "BC2CMK", "AC2C3R", "BC2C3R", "AC2CMR", "BC2CMR", "AC", "BC")
-DKNMA5 = book_routine(
-    "DKNMA5", listing="IV.20", lines="L2931-3002",
-    inputs=_K5_IN, outputs=_K5_OUT,
-    chapter="kinematics", defaults={"ANALOG": 0.0},
+DKNMA5 = describe(
+    _w.DKNMA5, listing="IV.20", lines="L2931-3002",
     doc="""Kind-5 group (RPP): velocities and accelerations in one call (no positions).
 
     Listing IV.20 (L2931-3002), operator function KNMA5 of textbook [1].  Corrected: the
     direction from the centre of link M to C (E-DKNMA5-2) and the direction of that
     point's acceleration (E-DKNMA5-4).
-
-    Parameters
-    ----------
-    XA, YA : float or array_like
-        A point of the guide axis; accepted and not used, as printed.
-    FIM : float or array_like
-        Direction of guide M, rad.
-    XC, YC : float or array_like
-        Revolute C of block 3, m.
-    RZ3, ETA3 : float or array_like
-        Sizes of block 3; accepted and not used, as printed.
-    ETA2 : float or array_like
-        Slot direction of link 2 relative to the guide (T2 of ``DSKOR5``), rad.
-    XR, YR : float or array_like
-        Centre of rotation of link M, m.
-    WM, EM : float or array_like
-        Angular velocity and acceleration of link M.
-    VC3, ALC3, AC3, BC3 : float or array_like
-        Velocity and acceleration of C.
-""" + _ANALOG_DOC + """
 
     Returns
     -------

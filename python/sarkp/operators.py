@@ -6,7 +6,8 @@ listing of the book, and pi to double precision in corrected mode.
 
 from __future__ import annotations
 
-from .library import ST_SINGULAR, Check, book_routine
+from . import _wrap_operators as _w
+from .library import ST_SINGULAR, Check, describe
 
 __all__ = ["DINTGR", "DFRNCL", "DUGL1", "DUGL2", "DUGL3", "DUGL4", "DUGL5", "DUGOL",
            "DMOMNT", "DOMEGA", "DVKT", "DSMVKT", "NOMER_METHODS"]
@@ -14,28 +15,11 @@ __all__ = ["DINTGR", "DFRNCL", "DUGL1", "DUGL2", "DUGL3", "DUGL4", "DUGL5", "DUG
 #: DINTGR's methods, as the listing's code and comments number them (L443-447).
 NOMER_METHODS = {1: "Simpson", 2: "trapezoids", 3: "rectangles"}
 
-DINTGR = book_routine(
-    "DINTGR", listing="II.1", lines="L435-480", chapter="operators",
-    inputs=("M", "H", "NOMER", "Y"), outputs=("FINT",),
-    tables={"Y": "M"}, integers={"M": range(2, 2**31 - 1), "NOMER": tuple(NOMER_METHODS)},
-    nonzero=("H",),
+DINTGR = describe(
+    _w.DINTGR, listing="II.1", lines="L435-480",
     doc="""Running integral of a tabulated function (listing II.1, L435-480).
 
     The book's call is ``CALL DINTGR(M, H, NOMER, Y, FINT)``.
-
-    Parameters
-    ----------
-    M : int
-        Number of points; must equal ``len(Y)`` (at least 2).
-    H : float
-        Step of the table, non-zero (the printed header names it ``N``: ERRATA
-        E-DINTGR-1).
-    NOMER : {1, 2, 3}
-        Method, numbered as the listing's code does (L443-447): 1 Simpson,
-        2 trapezoids, 3 rectangles.  The prose at L431 numbers them the other way
-        round (1 rectangles, 3 Simpson); the code is followed (ERRATA E-DINTGR-2).
-    Y : array_like, shape (M,)
-        The values of the integrand at the M points.
 
     Returns
     -------
@@ -46,23 +30,12 @@ DINTGR = book_routine(
         printed (so it is exact for cubics at the odd points only).
     """)
 
-DFRNCL = book_routine(
-    "DFRNCL", listing="II.2", lines="L490-509", chapter="operators",
-    inputs=("M", "H", "Y"), outputs=("FDIF",),
-    tables={"Y": "M"}, integers={"M": range(2, 2**31 - 1)}, nonzero=("H",),
+DFRNCL = describe(
+    _w.DFRNCL, listing="II.2", lines="L490-509",
     doc="""Numerical derivative of a tabulated function (listing II.2, L490-509).
 
     The book's call is ``CALL DFRNCL(M, H, FDIF, Y)``: the output comes before the input
     (confirmed by the call at L5988); in Python the output is the result.
-
-    Parameters
-    ----------
-    M : int
-        Number of points; must equal ``len(Y)`` (at least 2).
-    H : float
-        Step of the table, non-zero.
-    Y : array_like, shape (M,)
-        The function values.
 
     Returns
     -------
@@ -79,21 +52,12 @@ def _coincident(X1, Y1, X2, Y2):
 _NO_DIRECTION = Check(_coincident, ST_SINGULAR,
                       "the points coincide: a segment of zero length has no direction")
 
-DUGL1 = book_routine(
-    "DUGL1", listing="II.3", lines="L551-569",
-    inputs=("X1", "Y1", "X2", "Y2"), outputs=("DUGL1",),
-    chapter="operators", function=True,
+DUGL1 = describe(
+    _w.DUGL1, listing="II.3", lines="L551-569",
     checks=(_NO_DIRECTION,),
     doc="""Direction angle of the segment from (X1, Y1) to (X2, Y2), in [0, 2*PI).
 
     Listing II.3 (L551-569), operator function UGL1 of Table 2.
-
-    Parameters
-    ----------
-    X1, Y1 : float or array_like
-        Start of the segment.
-    X2, Y2 : float or array_like
-        End of the segment.
 
     Returns
     -------
@@ -107,20 +71,13 @@ DUGL1 = book_routine(
         The points coincide (the book divides 0 by 0 there).
     """)
 
-DUGL2 = book_routine(
-    "DUGL2", listing="II.4", lines="L572-588",
-    inputs=("X1", "Y1", "X2", "Y2"), outputs=("DUGL2",),
-    chapter="operators", function=True,
+DUGL2 = describe(
+    _w.DUGL2, listing="II.4", lines="L572-588",
     checks=(_NO_DIRECTION,),
     doc="""Signed direction angle of the segment from (X1, Y1) to (X2, Y2), in [-pi, pi].
 
     Listing II.4 (L572-588), operator function UGL2 of Table 2:
     ``SIGN(ACOS((X2-X1)/L), Y2-Y1)``.  A horizontal segment pointing left gives +pi.
-
-    Parameters
-    ----------
-    X1, Y1, X2, Y2 : float or array_like
-        Start and end of the segment.
 
     Returns
     -------
@@ -133,25 +90,13 @@ DUGL2 = book_routine(
         The points coincide.
     """)
 
-DUGL3 = book_routine(
-    "DUGL3", listing="II.5", lines="L590-599",
-    inputs=("UGOL1", "UGOLD", "VEL"), outputs=("DUGL3",),
-    chapter="operators", function=True,
+DUGL3 = describe(
+    _w.DUGL3, listing="II.5", lines="L590-599",
     doc="""Direction set by the sign of a parameter: ``UGOL1 + sign(VEL)*|UGOLD|``.
 
     Listing II.5 (L590-599), operator function UGL3 of Table 2.  Typical use: the
     direction of a velocity omega x r is the link angle plus or minus pi/2, by the
     sign of omega.
-
-    Parameters
-    ----------
-    UGOL1 : float or array_like
-        Base angle, radians.
-    UGOLD : float or array_like
-        Added angle; only its magnitude is used.
-    VEL : float or array_like
-        The parameter whose sign decides; zero (and -0.0, as on the ES EVM) counts as
-        positive.
 
     Returns
     -------
@@ -159,10 +104,8 @@ DUGL3 = book_routine(
         The angle in radians (not wrapped).
     """)
 
-DUGL4 = book_routine(
-    "DUGL4", listing="II.6", lines="L601-612",
-    inputs=("UGOL1", "UGOLD", "VEL"), outputs=("DUGL4",),
-    chapter="operators", function=True,
+DUGL4 = describe(
+    _w.DUGL4, listing="II.6", lines="L601-612",
     doc="""Direction of a vector on its line of action: UGOL1, reversed if VEL < 0.
 
     Listing II.6 (L601-612), operator function UGL4 of Table 2.  Returns
@@ -172,35 +115,19 @@ DUGL4 = book_routine(
     (E-DUGL4-2); the listing is kept.  The book almost always passes UGOLD = PI, where
     both give the same direction.
 
-    Parameters
-    ----------
-    UGOL1 : float or array_like
-        Angle of the assumed direction, radians.
-    UGOLD : float or array_like
-        Angle subtracted when VEL < 0 (usually PI).
-    VEL : float or array_like
-        The solved magnitude whose sign decides.
-
     Returns
     -------
     DUGL4(DUGL4)
         The angle in radians.
     """)
 
-DUGL5 = book_routine(
-    "DUGL5", listing="II.7", lines="L614-628",
-    inputs=("PRX", "PRY"), outputs=("DUGL5",),
-    chapter="operators", function=True,
+DUGL5 = describe(
+    _w.DUGL5, listing="II.7", lines="L614-628",
     doc="""Direction angle of a vector from its projections, in (-pi/2, 3*pi/2).
 
     Listing II.7 (L614-628), eq. (2.2) at L383: ``atan(PRY/PRX)`` for PRX > 0,
     ``PI + atan(PRY/PRX)`` for PRX < 0, and ``sign(PRY)*PI/2`` for PRX = 0 (+PI/2 for
     the zero vector, as printed).
-
-    Parameters
-    ----------
-    PRX, PRY : float or array_like
-        Projections on the x and y axes.
 
     Returns
     -------
@@ -208,19 +135,12 @@ DUGL5 = book_routine(
         The angle in radians.
     """)
 
-DUGOL = book_routine(
-    "DUGOL", listing="II.8", lines="L630-639",
-    inputs=("FI",), outputs=("DUGOL",),
-    chapter="operators", function=True,
+DUGOL = describe(
+    _w.DUGOL, listing="II.8", lines="L630-639",
     doc="""An angle made non-negative: FI if FI >= 0, else FI + 2*PI.
 
     Listing II.8 (L630-639), operator function UGOL.  One wrap only, as printed, so an
     angle below -2*PI stays negative.
-
-    Parameters
-    ----------
-    FI : float or array_like
-        Angle, radians.
 
     Returns
     -------
@@ -228,21 +148,12 @@ DUGOL = book_routine(
         The angle in radians.
     """)
 
-DMOMNT = book_routine(
-    "DMOMNT", listing="II.9", lines="L641-644",
-    inputs=("R", "FI", "F", "G"), outputs=("DMOMNT",),
-    chapter="operators", function=True,
+DMOMNT = describe(
+    _w.DMOMNT, listing="II.9", lines="L641-644",
     doc="""Moment of a force about the origin: the z-component of r x F.
 
     Listing II.9 (L641-644), operator function MOMNT of Table 2:
     ``R*cos(FI)*F*sin(G) - R*sin(FI)*F*cos(G) = R*F*sin(G - FI)``.
-
-    Parameters
-    ----------
-    R, FI : float or array_like
-        Magnitude and direction of the arm (radius vector of the point of application).
-    F, G : float or array_like
-        Magnitude and direction of the force.
 
     Returns
     -------
@@ -250,25 +161,13 @@ DMOMNT = book_routine(
         The moment, counter-clockwise positive.
     """)
 
-DOMEGA = book_routine(
-    "DOMEGA", listing="II.10", lines="L648-660",
-    inputs=("RAZMER", "VEKTOR", "UGOL"), outputs=("DOMEGA",),
-    chapter="operators", function=True,
-    lengths=("RAZMER",),
+DOMEGA = describe(
+    _w.DOMEGA, listing="II.10", lines="L648-660",
     doc="""Angular velocity (or acceleration) of a link from a relative velocity.
 
     Listing II.10 (L648-660), eq. (2.8) at L543: ``|VEKTOR/RAZMER|`` with the sign of
     UGOL.  The book's correct call (L1716) passes UGOL = (direction of the vector) -
     (direction of the link), e.g. ``DOMEGA(L2, VBA, ALBA - FI2)``.
-
-    Parameters
-    ----------
-    RAZMER : float or array_like
-        Link length, > 0.
-    VEKTOR : float or array_like
-        Relative velocity (or tangential acceleration); only its magnitude is used.
-    UGOL : float or array_like
-        The angle whose sign gives the sense of rotation ("logical flag").
 
     Returns
     -------
@@ -276,18 +175,11 @@ DOMEGA = book_routine(
         rad/s (or rad/s**2), counter-clockwise positive.
     """)
 
-DVKT = book_routine(
-    "DVKT", listing="II.11", lines="L664-680",
-    inputs=("X1", "Y1", "X2", "Y2"), outputs=("RZ", "FI"),
-    chapter="operators",
+DVKT = describe(
+    _w.DVKT, listing="II.11", lines="L664-680",
     doc="""Length and signed direction of the segment from (X1, Y1) to (X2, Y2).
 
     Listing II.11 (L664-680), operator function VKT of Table 2, eq. (2.10).
-
-    Parameters
-    ----------
-    X1, Y1, X2, Y2 : float or array_like
-        Start and end of the segment.
 
     Returns
     -------
@@ -298,20 +190,11 @@ DVKT = book_routine(
         caller must not read FI when RZ = 0.
     """)
 
-DSMVKT = book_routine(
-    "DSMVKT", listing="II.12", lines="L684-700",
-    inputs=("L1", "FI1", "L2", "FI2"), outputs=("L", "FI"),
-    chapter="operators",
+DSMVKT = describe(
+    _w.DSMVKT, listing="II.12", lines="L684-700",
     doc="""Sum of two vectors given by magnitudes and directions.
 
     Listing II.12 (L684-700), operator function SMVKT, eq. (2.3).
-
-    Parameters
-    ----------
-    L1, FI1 : float or array_like
-        First vector: magnitude (negative means reversed) and direction, radians.
-    L2, FI2 : float or array_like
-        Second vector.
 
     Returns
     -------

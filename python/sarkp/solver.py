@@ -2,33 +2,18 @@
 
 from __future__ import annotations
 
-from .library import book_routine
+from . import _wrap_gelg_mod as _w
+from .library import describe
 
 __all__ = ["GELG"]
 
-GELG = book_routine(
-    "GELG", listing="SSP", lines="L519-528", chapter="gelg_mod",
-    inputs=("R", "A", "M", "N", "EPS"), outputs=("R", "IER"),
-    tables={"R": ("M", "N"), "A": ("M", "M")}, nonnegative=("EPS",),
+GELG = describe(
+    _w.GELG, listing="SSP", lines="L519-528",
     doc="""Solve A X = R by Gauss elimination with complete pivoting (IBM SSP GELG).
 
     The book calls ``CALL GELG(Y, X, N, K, T, IER)`` (2.7, L523) with K = 1 and
     T = 0.0001.  In Fortran R is overwritten by the solution and A destroyed; here both
     are copied, and the solution is returned.
-
-    Parameters
-    ----------
-    R : array_like, shape (M,) or (M, N)
-        Right-hand sides.
-    A : array_like, shape (M, M)
-        Coefficient matrix.
-    M : int
-        Order of the system (M >= 1); must match the shapes of R and A.
-    N : int
-        Number of right-hand sides (the book's gloss "method of computation" is wrong:
-        ERRATA E-GELG-1); must match the shape of R.
-    EPS : float
-        Relative pivot tolerance, >= 0.
 
     Returns
     -------

@@ -25,7 +25,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .library import ST_REQUIREMENT, ST_SINGULAR, Check, book_routine
+from . import _wrap_synthesis as _w
+from .library import ST_REQUIREMENT, ST_SINGULAR, Check, describe
 from .report import fortran_write
 
 __all__ = ["DSNTZR", "DSNTZ1", "DSNTZ2", "DSNTZ3", "DSNTZK"]
@@ -73,11 +74,9 @@ def _dsntzr_report(i, o):
     return dsntzr_report(i["LO"], i["L3"], i["FI1"], i["FI3"], o[0], o[1])
 
 
-DSNTZR = book_routine(
-    "DSNTZR", listing="III.1", lines="L887-1019", chapter="synthesis",
-    inputs=("LO", "L3", "FI1", "FI3", "AAA"),
-    outputs=("L1", "L2", "FI11", "GMIN_TURN", "GMAX_TURN"),
-    tables={"LO": 3, "FI1": 3, "FI3": 3}, messages=_DSNTZR_MESSAGES,
+DSNTZR = describe(
+    _w.DSNTZR, listing="III.1", lines="L887-1019",
+    messages=_DSNTZR_MESSAGES,
     report=_dsntzr_report,
     doc="""Three-position synthesis of a four-bar or a crank-slider (listing III.1,
     L887-1019; Table 3, L897-917).
@@ -90,22 +89,6 @@ DSNTZR = book_routine(
     the crank's frame is ``C_i = LO[i] e(d) + L3 e(FI3[i] + d)``; the crank pin B is the
     centre of the circle through C_1, C_2, C_3.  The mechanism passes exactly through
     the three given positions.
-
-    Parameters
-    ----------
-    LO : array_like, last axis of length 3
-        Four-bar: the frame length AD three times.  Crank-slider: the three positions
-        of the slider pin along the guide (abscissae measured from the crank pivot).
-    L3 : float or array_like
-        Four-bar: the rocker length DC.  Crank-slider: the offset of the slider pin
-        (the guide is the line at distance L3 in the direction FI3); any sign.
-    FI1 : array_like, last axis of length 3
-        Crank angles of the three positions; only the differences count.
-    FI3 : array_like, last axis of length 3
-        Four-bar: the rocker angles.  Crank-slider: three equal angles giving the
-        direction of the offset (1.570 in the book's example, L1366).
-    AAA : float, optional
-        0 prints the book's report (L1006-1017); anything else is silent (default).
 
     Returns
     -------
@@ -146,13 +129,9 @@ def _dsntz1_report(i, o):
                                    i["Q"], *o[:3]])
 
 
-DSNTZ1 = book_routine(
-    "DSNTZ1", listing="III.2", lines="L1023-1105",
-    inputs=["KW3", "FI31", "FI32", "L3", "XD", "Q", "AAA"],
-    outputs=["L1", "L2", "LO", "GMIN_TURN", "GMAX_TURN"],
-    chapter="synthesis", lengths=["L3"],
+DSNTZ1 = describe(
+    _w.DSNTZ1, listing="III.2", lines="L1023-1105",
     checks=(_KW3_ABOVE_ONE, _DISTINCT_EXTREMES),
-    report=_dsntz1_report,
     messages={
         ST_REQUIREMENT: "no crank-rocker with the crank pivot on the x axis meets the "
                         "requirement: the circle through C1 and C2 misses "
@@ -163,6 +142,7 @@ DSNTZ1 = book_routine(
                         "between the two extreme positions",
         ST_SINGULAR: "as-printed mode: the listing's line through C1 at FI31 + BETA is "
                      "parallel to the perpendicular bisector of C1C2"},
+    report=_dsntz1_report,
     doc="""Four-bar from the two extreme rocker positions and the coefficient of speed
     change (listing III.2, L1023-1105; Table 4, L1034-1051).
 
@@ -186,23 +166,6 @@ DSNTZ1 = book_routine(
       line through C1 at the fixed direction FI31 + BETA.  The extreme positions are
       right, but the angle C1AC2 is PSI/2 - BETA instead of BETA, so KW3 is in general
       not met (the book's example realizes 1.3077 for 1.5): 0.4056, 0.8347, 0.7818.
-
-    Parameters
-    ----------
-    KW3 : float
-        Coefficient of speed change of the rocker, omega_return / omega_work (> 1).
-    FI31, FI32 : float
-        Rocker angles of the two extreme positions: C1 (crank and coupler stretched
-        out) and C2 (folded).
-    L3 : float
-        Rocker length DC (> 0).
-    XD : float
-        Abscissa of the rocker pivot D = (XD, 0); the crank pivot A is on the x axis.
-    Q : float
-        Assembly variant, by its sign only (0 acts as +1): -1 takes the smaller XA
-        (A "between O and D" in the book's example, L1055), +1 the other intersection.
-    AAA : float, optional
-        0 prints the book's report (L1097-1103); anything else is silent (default).
 
     Returns
     -------
@@ -258,18 +221,16 @@ def _dsntz2_report(i, o):
                                                   i["GMIN"], i["GMAX"], *o[:5]])])
 
 
-DSNTZ2 = book_routine(
-    "DSNTZ2", listing="III.3", lines="L1109-1181",
-    inputs=["KW3", "FI3", "L3", "XD", "GMIN", "GMAX", "AAA"],
-    outputs=["L1", "L2", "LO", "XA", "YA", "GMIN_TURN", "GMAX_TURN"],
-    chapter="synthesis", lengths=["L3"],
-    checks=(_KW3_ABOVE_ONE, _POSITIVE_SWING), report=_dsntz2_report,
+DSNTZ2 = describe(
+    _w.DSNTZ2, listing="III.3", lines="L1109-1181",
+    checks=(_KW3_ABOVE_ONE, _POSITIVE_SWING),
     messages={
         ST_REQUIREMENT: "no crank-rocker meets the requirement: the swing "
                         "PSI = BETA + GMAX - GMIN is 0, or the crank comes out <= 0, or "
                         "the crank cannot make a full turn between the two extreme "
                         "positions, or they lie on different assembly branches",
         ST_SINGULAR: "the lines C1A and C2A are parallel"},
+    report=_dsntz2_report,
     doc="""Four-bar from the coefficient of speed change and the transmission angles at
     the extreme positions (listing III.3, L1109-1181; Table 5, L1114-1130).
 
@@ -283,21 +244,6 @@ DSNTZ2 = book_routine(
     and FI3 + PSI, the coefficient of speed change KW3, and the transmission angle
     (angle BCD) GMIN in the stretched-out and GMAX in the folded extreme position
     (verified in tests/test_synthesis.py).
-
-    Parameters
-    ----------
-    KW3 : float
-        Coefficient of speed change of the rocker (> 1).
-    FI3 : float
-        Rocker angle of the first (stretched-out) extreme position.
-    L3 : float
-        Rocker length DC (> 0).
-    XD : float
-        Abscissa of the rocker pivot D = (XD, 0).
-    GMIN, GMAX : float
-        Transmission angles at the two extreme positions.
-    AAA : float, optional
-        0 prints the book's report with XA and YA (L1169-1179); else silent (default).
 
     Returns
     -------
@@ -333,17 +279,15 @@ def _dsntz3_report(i, o):
                                    i["ALC1"], *o[:3]])
 
 
-DSNTZ3 = book_routine(
-    "DSNTZ3", listing="III.4", lines="L1185-1264",
-    inputs=["XB1", "YB1", "XB2", "YB2", "XC1", "YC1", "XC2", "YC2", "FI1", "ALC1", "AAA"],
-    outputs=["L1", "L3", "LO", "GMIN_TURN", "GMAX_TURN"], chapter="synthesis",
-    report=_dsntz3_report,
+DSNTZ3 = describe(
+    _w.DSNTZ3, listing="III.4", lines="L1185-1264",
     messages={
         ST_REQUIREMENT: "the two positions of B (or of C) coincide, or a length comes out "
                         "zero",
         ST_SINGULAR: "the line B1A is parallel to the bisector of B1B2 (FI1 = 0 mod 2 PI), "
                      "or the normal to the velocity of C1 is parallel to the bisector of "
                      "C1C2"},
+    report=_dsntz3_report,
     doc="""Four-bar from two positions of the coupler (listing III.4, L1185-1264;
     Table 6, L1192-1212).
 
@@ -357,22 +301,6 @@ DSNTZ3 = book_routine(
     FI1); the rocker pivot D is the intersection of the perpendicular bisector of C1C2
     with the normal to the velocity of C1.  ``L1 = |AB1|``, ``L3 = |DC1|``,
     ``LO = |AD|``.
-
-    Parameters
-    ----------
-    XB1, YB1, XB2, YB2 : float
-        The crank pin B in the two positions.
-    XC1, YC1, XC2, YC2 : float
-        The rocker pin C in the two positions (|B1C1| should equal |B2C2|; not
-        checked, the routine does not use the coupler length).
-    FI1 : float
-        Crank rotation from position 1 to position 2.  With the listing's line
-        direction the crank turns from B1 to B2 clockwise by FI1 (i.e. by -FI1 in the
-        counter-clockwise sense; verified in tests).
-    ALC1 : float
-        Direction of the velocity of C in position 1.
-    AAA : float, optional
-        0 prints the book's report (L1256-1262); anything else is silent (default).
 
     Returns
     -------
@@ -406,15 +334,13 @@ def _dsntzk_report(i, o):
     return fortran_write(_DSNTZK_FORMAT, list(o[:3]))
 
 
-DSNTZK = book_routine(
-    "DSNTZK", listing="III.6", lines="L1397-1437",
-    inputs=["KW3", "S", "H", "Q", "AAA"],
-    outputs=["L1", "LO", "L3", "GMIN_TURN", "GMAX_TURN"],
-    chapter="synthesis", lengths=["S"], nonnegative=["H"],
-    checks=(_KW3_ABOVE_ONE,), report=_dsntzk_report,
+DSNTZK = describe(
+    _w.DSNTZK, listing="III.6", lines="L1397-1437",
+    checks=(_KW3_ABOVE_ONE,),
     messages={ST_REQUIREMENT: "the reserve H is not smaller than the slotted link "
                               "L3 = S/(2 sin BETA) (oscillating) or S/2 (rotating): "
                               "no room for the crank and the centre distance"},
+    report=_dsntzk_report,
     doc="""Slotted-link (crank and slotted lever) mechanism (listing III.6, L1397-1437;
     operator function SNTZK, eq. (3.3)).
 
@@ -424,24 +350,6 @@ DSNTZK = book_routine(
     Oscillating link (Q != 0): ``LAMBDA = sin(BETA)``, ``L3 = S/(2 LAMBDA)``; rotating
     link (Q = 0): ``LAMBDA = 1/sin(BETA)``, ``L3 = S/2``; then
     ``LO = (L3 - H)/(1 + LAMBDA)``, ``L1 = LAMBDA LO``, so that ``L3 = LO + L1 + H``.
-
-    Parameters
-    ----------
-    KW3 : float
-        Coefficient of speed change of the output (> 1).
-    S : float
-        Stroke (> 0): the chord swept by the end of the oscillating slotted link, or
-        the stroke 2 L3 of a slider driven by the end of the rotating one along a line
-        through the link's pivot perpendicular to the centre line.  The listing's
-        comment says "stroke of the slotted link", the prose (L1399) "stroke of the
-        driven link" (ERRATA E-DSNTZK-2).
-    H : float
-        Reserve (>= 0): how much longer the slotted link is than the largest distance
-        LO + L1 from its pivot to the crank pin.
-    Q : float
-        0 for a rotating slotted link, any other value for an oscillating one (L1401).
-    AAA : float, optional
-        0 prints the book's report (L1432-1435); anything else is silent (default).
 
     Returns
     -------
