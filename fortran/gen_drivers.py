@@ -806,11 +806,12 @@ def wrappers(module, procs, variables, source_name):
          "",
          "from __future__ import annotations",
          "",
-         "from typing import NamedTuple",
+         "from typing import TYPE_CHECKING, Any, NamedTuple",
          "",
          "from . import _sarkp",
          "from .library import (ArrayLike, Output, Out, OnError, Routine, Rule, _F, _I,",
          "                      _mode, _new)",
+         "from .results import result_type",
          "",
          f"_drv = _sarkp.drv_{module}",
          "__all__ = [" + _py_join([f'"{p.name.upper()}"' for p in procs], ",", "           ")
@@ -827,13 +828,21 @@ def _wrapper(module, p, variables):
         outs = [name]
     ints_out = {c.name.upper() for c, _ in results_of(p, variables) if c.type == "integer"}
     cls, cls_status = f"{name}Result", f"{name}Status"
-    w = [f"class {cls}(NamedTuple):",
-         f'    """The results of :func:`{name}`, in the book\'s order."""', ""]
-    w += [f"    {o}: Output" for o in outs]
-    w += ["", "", f"class {cls_status}(NamedTuple):",
-          f'    """The results of :func:`{name}` with ``on_error="nan"``: a status last."""', ""]
-    w += [f"    {o}: Output" for o in outs]
-    w += ["    status: Output", "", ""]
+    # the classes are sarkp.results' (pickle, a short repr, to_frame); type checkers see
+    # them as the named tuples they behave as
+    w = ["if TYPE_CHECKING:",
+         f"    class {cls}(NamedTuple):",
+         f'        """The results of :func:`{name}`, in the book\'s order."""', ""]
+    w += [f"        {o}: Output" for o in outs]
+    w += ["", "        def to_frame(self) -> Any: ...", "",
+          f"    class {cls_status}(NamedTuple):",
+          f'        """The results of :func:`{name}` with ``on_error="nan"``."""', ""]
+    w += [f"        {o}: Output" for o in outs]
+    w += ["        status: Output", "", "        def to_frame(self) -> Any: ...",
+          "else:",
+          f"    {cls} = result_type({name!r}, {tuple(outs)!r})",
+          f"    {cls_status} = result_type({name!r}, {tuple(outs) + ('status',)!r})",
+          "", ""]
     tables = bool(p.counts)
     rules = []
     for a in p.inputs:

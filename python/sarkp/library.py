@@ -346,8 +346,9 @@ class Routine:
             raise self._bad_input(k, value, index)
         if status != ST_OK:
             if status == ST_SIGNIFICANCE or status > ST_DIGITS:
-                warnings.warn(f"{self.name}: {_significance_message(self.messages, status)}",
-                              SignificanceWarning, stacklevel=_caller_stacklevel())
+                warnings.warn(SignificanceWarning(
+                    f"{self.name}: {_significance_message(self.messages, status)}",
+                    digits=_digits(status)), stacklevel=_caller_stacklevel())
             elif on_error == "raise":
                 message = check.message if check is not None else None
                 if status == ST_RANGE:
@@ -588,6 +589,11 @@ def _status_code(status):
     return int(status) // 10 if 10 <= status < 100 else int(status)
 
 
+def _digits(status):
+    """The significant digits left by a Fortran status 100 + d, or None (GELG IER > 0)."""
+    return int(status) - ST_DIGITS if status > ST_DIGITS else None
+
+
 def _significance_message(messages, status):
     if status > ST_DIGITS:
         d = int(status) - ST_DIGITS
@@ -605,7 +611,8 @@ def status_error(name, status, index, messages, message=None):
     if message is None:
         message = messages.get(status) or messages.get(code) or \
             _DEFAULT_MESSAGES.get(code, f"status {status}")
-    return _ERRORS.get(code, SingularError)(f"{name}{where}: {message}")
+    return _ERRORS.get(code, SingularError)(f"{name}{where}: {message}", status=code,
+                                            index=index or None)
 
 
 def settle_arrays(name, status, on_error, messages, message_at=None):
@@ -628,9 +635,10 @@ def settle_arrays(name, status, on_error, messages, message_at=None):
         idx = _first_index(lost, status.shape)
         digits = status[status > ST_DIGITS]
         worst = int(digits.min()) if digits.size else ST_SIGNIFICANCE
-        warnings.warn(f"{name}: {_significance_message(messages, worst)}"
-                      + (f" (first at index {list(idx)})" if idx else ""),
-                      SignificanceWarning, stacklevel=_caller_stacklevel())
+        warnings.warn(SignificanceWarning(
+            f"{name}: {_significance_message(messages, worst)}"
+            + (f" (first at index {list(idx)})" if idx else ""), digits=_digits(worst),
+            index=idx or None), stacklevel=_caller_stacklevel())
         status = np.where(status > ST_DIGITS, ST_SIGNIFICANCE, status).astype(np.int32)
     reason = (status >= 10) & (status < 100)             # 10 c + k: code c
     if reason.any():
