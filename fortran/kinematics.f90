@@ -169,9 +169,6 @@ contains
       yb = ya + unscale(r2y, e)
     end if
     ier = settle(ier, dang + 8.0_dp*uround*(1.0_dp + abs(fiac)), [xb, yb])
-    if (failed(ier)) then
-      fi2 = 0.0_dp; fi3 = 0.0_dp; xb = 0.0_dp; yb = 0.0_dp
-    end if
   end subroutine dprm1
 
   ! IV.2 DPRM2, L1531-1558 (Table 8, Fig. 15).  Kind 2 (RRP) positions.
@@ -233,9 +230,6 @@ contains
     dc = 4.0_dp*uround*(abs(so) + abs(off) + abs(rz3) + rz2 &
                         + (1.0_dp + abs(fim) + abs(t))*(abs(dx) + abs(dy)))/rz2
     ier = settle(ier, angle_sensitivity(c, dc) + 8.0_dp*uround*(1.0_dp + abs(fim)), [xb, yb])
-    if (failed(ier)) then
-      xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp
-    end if
   end subroutine dprm2
 
   ! IV.3 DPRM3, L1577-1598 (Table 9, Fig. 16).  Kind 3 (RPR, slotted lever) positions.
@@ -284,9 +278,6 @@ contains
     fi3 = fica + book_sign(1.0_dp, p)*ugbca
     ds = 4.0_dp*uround*(abs(s)*(1.0_dp + abs(t)) + abs(rz2/rzac)*abs(t))
     ier = settle(ier, angle_sensitivity(s, ds) + 8.0_dp*uround*(1.0_dp + abs(fica)), [rzac])
-    if (failed(ier)) then
-      rzac = 0.0_dp; fi3 = 0.0_dp; fica = 0.0_dp
-    end if
   end subroutine dprm3
 
   ! IV.4 DPRM4, L1622-1657 (Table 10, Fig. 17).  Kind 4 (PRP) positions.
@@ -335,9 +326,6 @@ contains
     rvbn = norm2d(nx, ny)
     fivbn = dugol(dugl2(0.0_dp, 0.0_dp, nx, ny))
     ier = settle(ier, rel, [xb, yb, rvbm, rvbn])
-    if (failed(ier)) then
-      xb = 0.0_dp; yb = 0.0_dp; rvbm = 0.0_dp; fivbm = 0.0_dp; rvbn = 0.0_dp; fivbn = 0.0_dp
-    end if
   end subroutine dprm4
 
   ! DPRM5 -- EXTENSION, not in the book.  The book prints no position routine for kind 5
@@ -375,9 +363,6 @@ contains
     xk = xa + s2*cm
     yk = ya + s2*sm
     ier = settle(ier, rel, [xk, yk, s2, s3])
-    if (failed(ier)) then
-      xk = 0.0_dp; yk = 0.0_dp; s2 = 0.0_dp; s3 = 0.0_dp
-    end if
   end subroutine dprm5
 
   ! ============================================================================
@@ -429,10 +414,6 @@ contains
     w2 = domega(rz2, vba, alba - fi2)
     w3 = domega(rz3, vbc, albc - fi3)
     ier = settle(ier, rel, [vba, vbc, vb, w2, w3])
-    if (failed(ier)) then
-      vba = 0.0_dp; alba = 0.0_dp; vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp
-      w2 = 0.0_dp; w3 = 0.0_dp
-    end if
   end subroutine dskor1
 
   ! IV.6 DSKOR2, L1740-1774 (Table 12, Fig. 20).  Kind 2 velocities:
@@ -468,10 +449,6 @@ contains
     w2 = domega(rz2, vba, alba - fi2)
     call dsmvkt(va, ala, vba, alba, vb, alb)
     ier = settle(ier, rel, [vba, vbbm, vb, w2])
-    if (failed(ier)) then
-      vba = 0.0_dp; alba = 0.0_dp; vbbm = 0.0_dp; albbm = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp
-      w2 = 0.0_dp
-    end if
   end subroutine dskor2
 
   ! IV.7 DSKOR3, L1805-1854 (Table 13, Fig. 21).  Kind 3 velocities:
@@ -512,10 +489,6 @@ contains
     w3 = domega(rzac, va3c, ala3c - fi3)
     call dsmvkt(va, ala, va3a, ala3a, va3, ala3)
     ier = settle(ier, rel, [va3a, va3c, va3, w3])
-    if (failed(ier)) then
-      va3a = 0.0_dp; ala3a = 0.0_dp; va3c = 0.0_dp; ala3c = 0.0_dp; va3 = 0.0_dp
-      ala3 = 0.0_dp; w3 = 0.0_dp
-    end if
   end subroutine dskor3
 
   ! IV.8 DSKOR4, L1879-1918 (Table 14, Fig. 22).  Kind 4 velocities:
@@ -553,9 +526,6 @@ contains
     vbbn = abs(y2)
     call dsmvkt(vbm, albm, vbbm, albbm, vb, alb)
     ier = settle(ier, rel, [vbbm, vbbn, vb])
-    if (failed(ier)) then
-      vbbm = 0.0_dp; albbm = 0.0_dp; vbbn = 0.0_dp; albbn = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp
-    end if
   end subroutine dskor4
 
   ! IV.9 DSKOR5, L1947-1978 (Table 15, Fig. 23).  Kind 5 velocities:
@@ -591,10 +561,6 @@ contains
     vc2cm = abs(y2)
     call dsmvkt(vc3, alc3, vc2c3, alc2c3, vc2, alc2)
     ier = settle(ier, rel, [vc2c3, vc2cm, vc2])
-    if (failed(ier)) then
-      vc2c3 = 0.0_dp; alc2c3 = 0.0_dp; vc2cm = 0.0_dp; alc2cm = 0.0_dp; vc2 = 0.0_dp
-      alc2 = 0.0_dp
-    end if
   end subroutine dskor5
 
   ! ============================================================================
@@ -663,10 +629,6 @@ contains
     e2 = domega(rz2, abat, bbat - fi2)
     e3 = domega(rz3, abct, bbct - fi3)
     ier = settle(ier, rel, [abat, abct, ab, e2, e3])
-    if (failed(ier)) then
-      abat = 0.0_dp; bbat = 0.0_dp; abct = 0.0_dp; bbct = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp
-      e2 = 0.0_dp; e3 = 0.0_dp
-    end if
   end subroutine duskr1
 
   ! IV.11 DUSKR2, L2077-2119 (Table 17, Fig. 25).  Kind 2 accelerations:
@@ -710,10 +672,6 @@ contains
     call dsmvkt(aa, ba, an2, fi2 - pi, a, b)
     call dsmvkt(a, b, abat, vbat, ab, bb)
     ier = settle(ier, rel, [abat, abvm, e2, ab])
-    if (failed(ier)) then
-      abat = 0.0_dp; vbat = 0.0_dp; abvm = 0.0_dp; bvbm = 0.0_dp; e2 = 0.0_dp; ab = 0.0_dp
-      bb = 0.0_dp
-    end if
   end subroutine duskr2
 
   ! IV.12 DUSKR3, L2150-2184 (Table 18, Fig. 26).  Kind 3 accelerations:
@@ -754,10 +712,6 @@ contains
     call dsmvkt(ac, bc, an3, fica - pi, a, b)
     call dsmvkt(a, b, aa3ct, ba3ct, aa3, ba3)
     ier = settle(ier, rel, [aa3ar, aa3ct, e3, aa3])
-    if (failed(ier)) then
-      aa3ar = 0.0_dp; ba3ar = 0.0_dp; aa3ct = 0.0_dp; ba3ct = 0.0_dp; e3 = 0.0_dp
-      aa3 = 0.0_dp; ba3 = 0.0_dp
-    end if
   end subroutine duskr3
 
   ! IV.13 DUSKR4, L2221-2275 (Table 19, Fig. 27).  Kind 4 accelerations:
@@ -813,9 +767,6 @@ contains
     call dsmvkt(abm, bbm, abbmk, bbbmk, a, b)
     call dsmvkt(a, b, abbmr, bbbmr, ab, bb)
     ier = settle(ier, rel, [abbmr, abbnr, ab])
-    if (failed(ier)) then
-      abbmr = 0.0_dp; bbbmr = 0.0_dp; abbnr = 0.0_dp; bbbnr = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp
-    end if
   end subroutine duskr4
 
   ! IV.14 DUSKR5, L2308-2378 (Table 20, Fig. 28).  Kind 5 accelerations:
@@ -866,10 +817,6 @@ contains
     call dsmvkt(ac3, bc3, ac23k, bc23k, a, b)
     call dsmvkt(a, b, ac2c3r, bc2c3r, ac2, bc2)
     ier = settle(ier, rel, [ac2c3r, ac2cmr, ac2])
-    if (failed(ier)) then
-      ac2c3r = 0.0_dp; bc2c3r = 0.0_dp; ac2cmr = 0.0_dp; bc2cmr = 0.0_dp; ac2 = 0.0_dp
-      bc2 = 0.0_dp
-    end if
   end subroutine duskr5
 
   ! ============================================================================
@@ -973,10 +920,7 @@ contains
     call factor2(n2x, -n3x, n2y, -n3y, sys)     ! one matrix for both systems (L2615, L2640)
     call solve2f(sys, vcx - vax, vcy - vay, da, &
                  4.0_dp*uround*(1.0_dp + max(abs(ala), abs(alc)))*sb, sb, y1, y2, ier, relv)
-    if (failed(ier)) then
-      xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; fi3 = 0.0_dp
-      return
-    end if
+    if (failed(ier)) return
     est = max(est, relv)
     ev = relv*max(norm2d(y1, y2), sb/sqrt(2.0_dp))   ! absolute error of (y1, y2)
     alba = dugl3(fi2, pi/2.0_dp, y1)
@@ -1003,12 +947,7 @@ contains
                    + ev/rz2*(2.0_dp*abs(y1) + ev) + ev/rz3*(2.0_dp*abs(y2) + ev), &
                    sb, y1, y2, st2, rela)
       ier = st2
-      if (failed(ier)) then
-        xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; fi3 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp
-        vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; w3 = 0.0_dp
-        aban = 0.0_dp; abcn = 0.0_dp
-        return
-      end if
+      if (failed(ier)) return
       est = max(est, rela)
       bbat = dugl3(fi2, pi/2.0_dp, y1)
       bbct = dugl3(fi3, pi/2.0_dp, y2)
@@ -1023,12 +962,6 @@ contains
       e3 = domega(rz3, abct, bbct - fi3)
     end if
     ier = settle(ier, est, [xb, yb, vba, vbc, vb, w2, w3, abcn, aban, abat, abct, ab, e2, e3])
-    if (failed(ier)) then
-      xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; fi3 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp
-      vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; w3 = 0.0_dp
-      abcn = 0.0_dp; aban = 0.0_dp; abat = 0.0_dp; bbat = 0.0_dp; abct = 0.0_dp
-      bbct = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp; e2 = 0.0_dp; e3 = 0.0_dp
-    end if
   end subroutine dknma1
 
   ! IV.17 DKNMA2, L2660-2747.  Kind 2 (RRP).
@@ -1134,10 +1067,7 @@ contains
     sb = abs(va) + abs(vbm)
     call solve2e(n2x, -cm, n2y, -sm, vmx - vax, vmy - vay, da, &
                  4.0_dp*uround*(1.0_dp + max(abs(ala), abs(albm)))*sb, sb, y1, y2, ier, relv)
-    if (failed(ier)) then
-      xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp
-      return
-    end if
+    if (failed(ier)) return
     est = max(est, relv)
     ev = relv*max(norm2d(y1, y2), sb/sqrt(2.0_dp))
     vba = abs(y1)
@@ -1168,12 +1098,7 @@ contains
                    4.0_dp*uround*(6.0_dp + max(abs(ba), abs(bbm), abs(fim), abs(fi2)))*sb &
                    + ev/rz2*(2.0_dp*abs(y1) + ev) + 2.0_dp*abs(wm)*ev, sb, y1, y2, st2, rela)
       ier = st2
-      if (failed(ier)) then
-        xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp; vbbm = 0.0_dp
-        albbm = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; aban = 0.0_dp; abk = 0.0_dp
-        bbk = 0.0_dp
-        return
-      end if
+      if (failed(ier)) return
       est = max(est, rela)
       abat = abs(y1)
       bbat = dugl4(alba, pi, y1)
@@ -1187,12 +1112,6 @@ contains
       e2 = domega(rz2, abat, sin(bbat - fi2))          ! E-DKNMA2-4: book BBAT - FI2
     end if
     ier = settle(ier, est, [xb, yb, vba, vbbm, vb, w2, aban, abk, abat, abbm, ab, e2])
-    if (failed(ier)) then
-      xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp; vbbm = 0.0_dp
-      albbm = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; aban = 0.0_dp; abk = 0.0_dp
-      bbk = 0.0_dp; abat = 0.0_dp; bbat = 0.0_dp; abbm = 0.0_dp; bbbm = 0.0_dp; ab = 0.0_dp
-      bb = 0.0_dp; e2 = 0.0_dp
-    end if
   end subroutine dknma2
 
   ! IV.18 DKNMA3, L2749-2829.  Kind 3 (RPR, slotted lever).
@@ -1276,10 +1195,7 @@ contains
     call solve2e(cos(fi3), -cos((fik + pi) + pid2), sin(fi3), -sin((fik + pi) + pid2), &
                  vc*cos(alc) - va*cos(ala), vc*sin(alc) - va*sin(ala), da, &
                  4.0_dp*uround*(1.0_dp + max(abs(ala), abs(alc)))*sb, sb, y1, y2, ier, relv)
-    if (failed(ier)) then
-      xb = 0.0_dp; yb = 0.0_dp; rzbc = 0.0_dp; fi3 = 0.0_dp
-      return
-    end if
+    if (failed(ier)) return
     est = max(est, relv)
     ev = relv*max(norm2d(y1, y2), sb/sqrt(2.0_dp))
     var = abs(y1)
@@ -1304,12 +1220,7 @@ contains
                    + (2.0_dp*abs(w3)*ew + ew*ew)*rac + 2.0_dp*(abs(w3)*ev + var*ew + ev*ew), &
                    sb, y1, y2, st2, rela)
       ier = st2
-      if (failed(ier)) then
-        xb = 0.0_dp; yb = 0.0_dp; rzbc = 0.0_dp; fi3 = 0.0_dp; var = 0.0_dp; alar = 0.0_dp
-        vac = 0.0_dp; alac = 0.0_dp; w3 = 0.0_dp; va3 = 0.0_dp; ala3 = 0.0_dp; aak = 0.0_dp
-        bak = 0.0_dp; aacn = 0.0_dp
-        return
-      end if
+      if (failed(ier)) return
       est = max(est, rela)
       aar = abs(y1)
       bar = dugl4(alar, pi, y1)                     ! E-DKNMA3-3: book DUGL4(ALAR, PID2, Y(1))
@@ -1322,12 +1233,6 @@ contains
       e3 = domega(rac, aact, bact - (fik + pi))
     end if
     ier = settle(ier, est, [xb, yb, rzbc, var, vac, w3, va3, aak, aar, aact, aa3, e3, aacn])
-    if (failed(ier)) then
-      xb = 0.0_dp; yb = 0.0_dp; rzbc = 0.0_dp; fi3 = 0.0_dp; var = 0.0_dp; alar = 0.0_dp
-      vac = 0.0_dp; alac = 0.0_dp; w3 = 0.0_dp; va3 = 0.0_dp; ala3 = 0.0_dp; aak = 0.0_dp
-      bak = 0.0_dp; aar = 0.0_dp; bar = 0.0_dp; aact = 0.0_dp; bact = 0.0_dp; aa3 = 0.0_dp
-      ba3 = 0.0_dp; e3 = 0.0_dp; aacn = 0.0_dp
-    end if
   end subroutine dknma3
 
   ! IV.19 DKNMA4, L2831-2929.  Kind 4 (PRP).
@@ -1396,10 +1301,7 @@ contains
                  da, 4.0_dp*uround*(4.0_dp + max(abs(fi2), abs(fi3)))*sb &
                  + (abs(wm) + abs(wn))*eb, sb, y1, y2, st2, relv)
     ier = st2
-    if (failed(ier)) then
-      xb = 0.0_dp; yb = 0.0_dp
-      return
-    end if
+    if (failed(ier)) return
     est = max(est, relv)
     ev = relv*max(norm2d(y1, y2), sb/2.0_dp)
     vb2r = abs(y1)
@@ -1428,11 +1330,7 @@ contains
                    4.0_dp*uround*(8.0_dp + max(abs(fi2), abs(fi3), abs(fim), abs(fin)))*sb &
                    + (hm + hn)*eb + 2.0_dp*(abs(wm) + abs(wn))*ev, sb, y1, y2, st2, rela)
       ier = st2
-      if (failed(ier)) then
-        xb = 0.0_dp; yb = 0.0_dp; vb2r = 0.0_dp; alb2r = 0.0_dp; vb3r = 0.0_dp; alb3r = 0.0_dp
-        vb = 0.0_dp; alb = 0.0_dp; ab2k = 0.0_dp; bb2k = 0.0_dp; ab3k = 0.0_dp; bb3k = 0.0_dp
-        return
-      end if
+      if (failed(ier)) return
       est = max(est, rela)
       ab2r = abs(y1)
       bb2r = dugl4(alb2r, pi, y1)
@@ -1444,11 +1342,6 @@ contains
       bb = dugl5(abx, aby)                          ! E-DKNMA4-2: book DUGL5(VBX, VBY)
     end if
     ier = settle(ier, est, [xb, yb, vb2r, vb3r, vb, ab2k, ab3k, ab2r, ab3r, ab])
-    if (failed(ier)) then
-      xb = 0.0_dp; yb = 0.0_dp; vb2r = 0.0_dp; alb2r = 0.0_dp; vb3r = 0.0_dp; alb3r = 0.0_dp
-      vb = 0.0_dp; alb = 0.0_dp; ab2k = 0.0_dp; bb2k = 0.0_dp; ab3k = 0.0_dp; bb3k = 0.0_dp
-      ab2r = 0.0_dp; bb2r = 0.0_dp; ab3r = 0.0_dp; bb3r = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp
-    end if
   end subroutine dknma4
 
   ! IV.20 DKNMA5, L2931-3002.  Kind 5 (RPP).  No position part (there is no DPRM5 in the
@@ -1535,11 +1428,7 @@ contains
           4.0_dp*uround*(6.0_dp + abs(fim) + max(abs(bcm), abs(bc3), abs(alcm), abs(alc3)))*sb, &
           sb, y1, y2, st2, rela)
       ier = st2
-      if (failed(ier)) then
-        vc2c3 = 0.0_dp; alc2c3 = 0.0_dp; vc2cm = 0.0_dp; alc2cm = 0.0_dp; vc = 0.0_dp
-        alc = 0.0_dp; ac2c3k = 0.0_dp; bc2c3k = 0.0_dp; ac2cmk = 0.0_dp; bc2cmk = 0.0_dp
-        return
-      end if
+      if (failed(ier)) return
       est = max(est, rela)
       ! the book's unknowns are along ALC2C3 and ALC2CM, these along FIM + ETA2 and FIM
       ac2c3r = abs(y1)
@@ -1550,11 +1439,6 @@ contains
       call dsmvkt(a, b, ac2cmr, bc2cmr, ac, bc)
     end if
     ier = settle(ier, est, [vc2c3, vc2cm, vc, ac2c3k, ac2cmk, ac2c3r, ac2cmr, ac])
-    if (failed(ier)) then
-      vc2c3 = 0.0_dp; alc2c3 = 0.0_dp; vc2cm = 0.0_dp; alc2cm = 0.0_dp; vc = 0.0_dp; alc = 0.0_dp
-      ac2c3k = 0.0_dp; bc2c3k = 0.0_dp; ac2cmk = 0.0_dp; bc2cmk = 0.0_dp; ac2c3r = 0.0_dp
-      bc2c3r = 0.0_dp; ac2cmr = 0.0_dp; bc2cmr = 0.0_dp; ac = 0.0_dp; bc = 0.0_dp
-    end if
   end subroutine dknma5
 
 end module kinematics
