@@ -8,6 +8,7 @@ import re
 import sys
 import threading
 import warnings
+from pathlib import Path
 
 import numpy as np
 import pytest
@@ -431,3 +432,26 @@ def test_warnings_point_at_the_callers_line():
     found = [(w.filename, w.lineno) for w in caught
              if issubclass(w.category, sarkp.SignificanceWarning)]
     assert (__file__, line_scalar) in found and (__file__, line_array) in found
+
+
+# -- a type checker follows the calls (the wrappers are typed source; py.typed ships) ----
+
+def test_mypy_checks_a_script_against_the_typed_wrappers(tmp_path):
+    """A user's script passes mypy; the same calls made wrong are caught (one mypy run
+    over both files)."""
+    from mypy import api                        # the [test] extra installs mypy
+    example = Path(__file__).parent / "typing" / "example.py"
+    bad = tmp_path / "bad.py"
+    bad.write_text("from sarkp import DPRM1, DUGL1\n"
+                   "r = DPRM1(0.1, 0.0, 0.4, 0.0, 0.35, 0.3, -1)\n"
+                   "r.FI4\n"
+                   "DPRM1(0.1, 0.0)\n"
+                   "DUGL1(0.0, 0.0, 1.0, 1.0, on_error='ignore')\n")
+    out, err, code = api.run([str(example), str(bad), "--no-incremental", "--cache-dir",
+                              str(tmp_path / "cache"), "--config-file", ""])
+    report = out + err
+    assert code == 1 and "example.py" not in report, report
+    assert 'bad.py:3: error: "DPRM1Result" has no attribute "FI4"' in report
+    assert "bad.py:4: error: Too few arguments" in report
+    assert 'bad.py:5: error: Argument "on_error" has incompatible type' in report
+    assert "Found 3 errors in 1 file" in report

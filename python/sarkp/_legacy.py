@@ -44,20 +44,8 @@ from .errors import (AssemblyError, RangeError, RequirementError, SignificanceWa
 from .modes import MODE_CODE
 from .results import result_type
 
-ST_OK = int(Status.OK)
-ST_ASSEMBLY = int(Status.ASSEMBLY)
-ST_SINGULAR = int(Status.SINGULAR)
-ST_SIGNIFICANCE = int(Status.SIGNIFICANCE)
-ST_REQUIREMENT = int(Status.REQUIREMENT)
-ST_MISSING = int(Status.MISSING)
-ST_RANGE = int(Status.RANGE)
-#: Fortran's 100 + d: kept, with about d significant digits left (prmtr's st_digits).
-ST_DIGITS = int(_sarkp.prmtr.st_digits)
-
-assert (int(_sarkp.prmtr.st_ok), int(_sarkp.prmtr.st_assembly),
-        int(_sarkp.prmtr.st_singular), int(_sarkp.prmtr.st_significance),
-        int(_sarkp.prmtr.st_requirement), int(_sarkp.prmtr.st_range)) == \
-    (ST_OK, ST_ASSEMBLY, ST_SINGULAR, ST_SIGNIFICANCE, ST_REQUIREMENT, ST_RANGE)
+from .library import (ST_ASSEMBLY, ST_DIGITS, ST_MISSING, ST_OK,  # noqa: E402,F401
+                      ST_RANGE, ST_REQUIREMENT, ST_SIGNIFICANCE, ST_SINGULAR)
 
 STATUS_NAMES = {s.value: s.name.lower() for s in Status}
 

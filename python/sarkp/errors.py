@@ -22,6 +22,8 @@ the routine cannot say).  They pickle with their attributes.
 
 import enum
 
+from ._sarkp import prmtr as _prmtr
+
 
 class SarkpError(ValueError):
     """Base class of every error a sarkp routine raises for a computed condition.
@@ -64,13 +66,14 @@ class Status(enum.IntEnum):
     means the outputs there are NaN, for the reason the code names.
     """
 
-    OK = 0              #: computed
-    ASSEMBLY = 1        #: the group cannot be assembled: the links do not reach
-    SINGULAR = 2        #: a dead centre or another singular position: no finite answer
-    SIGNIFICANCE = 3    #: computed, but digits were lost (a SignificanceWarning says how many)
-    REQUIREMENT = 4     #: a synthesis requirement no mechanism meets
-    MISSING = 5         #: an input was NaN (a failed earlier step of a chain)
-    RANGE = 6           #: the result overflows double precision
+    # the values are prmtr.f90's st_* codes, defined there once (the Fortran returns them)
+    OK = _prmtr.st_ok                       #: computed
+    ASSEMBLY = _prmtr.st_assembly           #: the group cannot be assembled: the links do not reach
+    SINGULAR = _prmtr.st_singular           #: a dead centre or another singular position: no finite answer
+    SIGNIFICANCE = _prmtr.st_significance   #: computed, but digits were lost (a SignificanceWarning says how many)
+    REQUIREMENT = _prmtr.st_requirement     #: a synthesis requirement no mechanism meets
+    MISSING = _prmtr.st_missing             #: an input was NaN (a failed earlier step of a chain)
+    RANGE = _prmtr.st_range                 #: the result overflows double precision
 
 
 class SignificanceWarning(UserWarning):
