@@ -200,7 +200,8 @@ def as_real_array(name, arg, value):
         try:
             a = a.astype(float)
         except OverflowError:
-            raise ValueError(f"{name}: {arg} holds an integer too large for a double") from None
+            raise ValueError(f"{name}: {arg} holds an integer too large for a double") \
+                from None
         except (TypeError, ValueError):
             raise _type_error(name, arg, value) from None
     elif kind not in "biuf":
@@ -208,18 +209,24 @@ def as_real_array(name, arg, value):
     return np.asarray(a, dtype=float)
 
 
+def _too_large(name, arg, value):
+    digits = str(abs(int(value)))
+    sign = "-" if value < 0 else ""
+    return ValueError(f"{name}: {arg} = {sign}{digits[:8]}... (an integer of {len(digits)} "
+                      f"digits) is too large for a double")
+
+
 def _as_float(name, arg, value):
     """A scalar input as a float, or TypeError/ValueError naming ``arg``."""
     if isinstance(value, (bool, np.bool_)) or not isinstance(
             value, (int, float, np.integer, np.floating)):
-        if np.ndim(value) == 0 and not isinstance(value, (str, bytes)):
-            return float(as_real_array(name, arg, value)[()])
-        raise _type_error(name, arg, value)
+        if isinstance(value, (str, bytes)) or as_real_array(name, arg, value).ndim:
+            raise _type_error(name, arg, value)
+        return float(as_real_array(name, arg, value)[()])
     try:
         return float(value)
     except OverflowError:
-        raise ValueError(f"{name}: {arg} = {value} is an integer too large for a double") \
-            from None
+        raise _too_large(name, arg, value) from None
 
 
 class Routine:
@@ -284,11 +291,9 @@ class Routine:
             value = int(value)
         return ValueError(f"{self.name}: {rule.name}{_where(index)} = {value!r} {what}")
 
-    def _range_message(self, out, index=None):
-        names = [n for n, o in zip(self.outputs, out)
-                 if not np.all(np.isfinite(o if index is None else o[index]))]
-        return (f"{', '.join(names) or 'a result'} would not be a finite double "
-                f"(overflow); the inputs are too far apart in magnitude")
+    def _range_message(self, out=None, index=None):
+        return ("a result would not be a finite double (overflow); the inputs are too far "
+                "apart in magnitude")
 
     def _result(self, out, status):
         if self.function:
