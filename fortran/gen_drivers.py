@@ -59,7 +59,9 @@ From these lines and the Fortran declarations this writes
 
 Directives: ``!sarkp common: x, y`` names module variables returned with the routine
 (``a => zpc_a`` returns ``zpc_a`` as ``a``); ``!sarkp ier-is-output`` keeps a trailing
-IER as an ordinary output.  A public routine without argument lines gets no drivers.
+IER as an ordinary output; ``!sarkp kept: 4 => as, dec`` names the outputs that stay
+valid when the routine fails with status 4 (they are not set to NaN, and the error
+raised carries that result as ``.result``).  A public routine without argument lines gets no drivers.
 """
 
 from __future__ import annotations
@@ -123,6 +125,7 @@ class Procedure:
     common_names: dict = field(default_factory=dict)
     ier_is_output: bool = False
     lines: list = field(default_factory=list)   # raw argument lines
+    kept: dict = field(default_factory=dict)    # status -> outputs still valid then
     rules: dict = field(default_factory=dict)   # fortran name -> Rule, in Python order
     result_type: str = ""
 
@@ -315,6 +318,9 @@ def parse(path: Path):
                             current.common_names[var] = result.strip() or var
                 elif directive == "ier-is-output":
                     current.ier_is_output = True
+                elif directive.startswith("kept:"):
+                    code, _, names = directive[5:].partition("=>")
+                    current.kept[int(code)] = [n.strip() for n in names.split(",")]
                 continue
             if END.match(low):
                 procs.append(current)
@@ -521,7 +527,7 @@ def scalar_driver(mod, p, variables):
         w.append(f"      if (.not. ({finite_test(real_out)})) {status} = st_range")
         w.append("    end if")
     w.append(f"    if (.not. succeeded({status})) then")
-    w += _nan_results(p, variables, lambda r: r, indent="      ")
+    w += _nan_results(p, variables, lambda r: r, indent="      ", status=status)
     w.append("    end if")
     w.append(f"  end subroutine {p.name}_1")
     return w
@@ -536,12 +542,18 @@ def _whole(p, a):
     return a
 
 
-def _nan_results(p, variables, ref, indent):
-    """Statements that set every real result of NAME_1 to NaN (a failed call)."""
+def _nan_results(p, variables, ref, indent, status=None):
+    """Statements that set every real result of NAME_1 to NaN (a failed call); with
+    ``status``, those the routine keeps for that status (``!sarkp kept:``) stay."""
     w = []
     for r, _ in results_of(p, variables):
         if r.type == "real(dp)":
-            w.append(f"{indent}{ref(r.name)} = sarkp_nan_value()")
+            codes = [str(c) for c, names in p.kept.items() if r.name in names]
+            if status and codes:
+                w.append(f"{indent}if (all({status} /= [{', '.join(codes)}])) "
+                         f"{ref(r.name)} = sarkp_nan_value()")
+            else:
+                w.append(f"{indent}{ref(r.name)} = sarkp_nan_value()")
     for a in p.argnames:                                # returned inout tables
         arg = p.args[a]
         if arg.intent == "inout" and not p.rules[a].destroyed and arg.type == "real(dp)":
@@ -640,8 +652,16 @@ def sweep_driver(mod, p, variables):
         w.append("      if (succeeded(sarkp_status(sarkp_i))) then")
         w.append(f"        if (.not. ({finite_test(real_out)})) sarkp_status(sarkp_i) = st_range")
         w.append("      end if")
-    w.append("      if (.not. succeeded(sarkp_status(sarkp_i))) sarkp_out(sarkp_i, :) = "
-             "sarkp_nan_value()")
+    if p.kept:
+        w.append("      if (.not. succeeded(sarkp_status(sarkp_i))) then")
+        for r in results:
+            codes = [str(c) for c, names in p.kept.items() if r.name in names]
+            test = f"if (all(sarkp_status(sarkp_i) /= [{', '.join(codes)}])) " if codes else ""
+            w.append(f"        {test}sarkp_out(sarkp_i, {column[r.name]}) = sarkp_nan_value()")
+        w.append("      end if")
+    else:
+        w.append("      if (.not. succeeded(sarkp_status(sarkp_i))) sarkp_out(sarkp_i, :) = "
+                 "sarkp_nan_value()")
     w.append("    end do")
     w.append("    sarkp_bad(1:2) = 0                   ! a NaN that was allowed is no bad input")
     w.append("    sarkp_bad(3) = count(sarkp_status /= st_ok)   ! 0: nothing to look at")
@@ -854,6 +874,7 @@ def _wrapper(module, p, variables):
           "    inputs=(" + _py_join(rules, ",", "            ") + ",),",
           f"    outputs={tuple(outs)!r},",
           f"    integer_outputs={tuple(sorted(ints_out))!r},",
+          f"    kept={ {c: tuple(n.upper() for n in names) for c, names in p.kept.items()}!r},",
           f"    one=_drv.{p.name}_1, many={'_drv.' + p.name + '_n' if p.sweepable else None},",
           f"    result={cls}, result_with_status={cls_status})", "", ""]
     params = []
@@ -873,17 +894,21 @@ def _wrapper(module, p, variables):
     w += _parameters(p)
     w.append('    """')
     books = [p.rules[a].book for a in p.inputs]
-    arglist = ", ".join(books)
     if not tables:
         # the common case, Python floats and a computed result: one Fortran call (the
         # driver screens the inputs; anything else takes the general path)
-        types = [f"type({b}) is _F" if p.rules[a].kind not in (K_INTEGER, K_BRANCH)
-                 else f"(type({b}) is _F or type({b}) is _I)"
-                 for a, b in zip(p.inputs, books)]
-        cond = ["_" + name + ".fast", "on_error == 'raise'", "out is None"] + types
-        call = f"_drv.{p.name}_1(_mode(), {arglist})"
+        # every real input a float (one chained test), every integer one a float or an
+        # int; the flag (no checks, no report) last, since it rarely fails
+        reals = [b for a, b in zip(p.inputs, books)
+                 if p.rules[a].kind not in (K_INTEGER, K_BRANCH)]
+        cond = [" is ".join(["_F"] + [f"type({b})" for b in reals])] if reals else []
+        cond += [f"(type({b}) is _F or type({b}) is _I)" for a, b in zip(p.inputs, books)
+                 if p.rules[a].kind in (K_INTEGER, K_BRANCH)]
+        cond += ["out is None", "on_error == 'raise'", "_" + name + ".fast"]
+        call = f"_drv.{p.name}_1(_mode(), " + _py_join(books, ",", " " * 16, 60) + ")"
         result = "_o[0]" if p.kind == "function" else f"_new({cls}, _o[:-2])"
-        w += ["    if (" + _py_join(cond, " and", "            ") + "):"]
+        w += ["    if (" + _py_join(" and ".join(cond).split(" "), "", "            ")
+              + "):"]
         ints = any(p.rules[a].kind in (K_INTEGER, K_BRANCH) for a in p.inputs)
         if ints:                                    # a huge int: f2py's OverflowError
             w += ["        try:", f"            _o = {call}", "        except OverflowError:",
@@ -892,9 +917,11 @@ def _wrapper(module, p, variables):
         else:
             w += [f"        _o = {call}", "        if _o[-2] == 0:",
                   f"            return {result}"]
-        w.append(f"    return _{name}(({arglist},), on_error, out)  # type: ignore[no-any-return]")
+        w.append(f"    return _{name}((" + _py_join(books, ",", " " * 8, 60) + ",), on_error, out)"
+                 "  # type: ignore[no-any-return]")
     else:
-        w.append(f"    return _{name}(({arglist},), on_error)  # type: ignore[no-any-return]")
+        w.append(f"    return _{name}((" + _py_join(books, ",", " " * 8, 60) + ",), on_error)"
+                 "  # type: ignore[no-any-return]")
     return w
 
 

@@ -234,7 +234,7 @@ class Routine:
     its chapter module adds (:func:`describe`)."""
 
     def __init__(self, name, chapter, *, function, inputs, outputs, integer_outputs, one,
-                 many, result, result_with_status):
+                 many, result, result_with_status, kept=None):
         self.name = name
         self.chapter = chapter
         self.function = function
@@ -242,6 +242,8 @@ class Routine:
         self.inputs = tuple(r.name for r in self.rules)
         self.outputs = tuple(outputs)
         self.integer_outputs = frozenset(integer_outputs)
+        #: {status: outputs still valid after a failure with that status}
+        self.kept = {st: frozenset(names) for st, names in (kept or {}).items()}
         self.one = one
         self.many = many
         self.result = result
@@ -358,7 +360,11 @@ class Routine:
                 message = check.message if check is not None else None
                 if status == ST_RANGE:
                     message = self._range_message(out)
-                raise status_error(self.name, status, None, self.messages, message)
+                error = status_error(self.name, status, None, self.messages, message)
+                if self.kept.get(status) and check is None:
+                    # what is still valid (the driver kept it): on_error="nan"'s result
+                    error.result = self._result(out, Status(_status_code(status)))
+                raise error
             status = _status_code(status)
         if self.report is not None and args[self._aaa_index] == 0.0 and \
                 status in (ST_OK, ST_SIGNIFICANCE):
