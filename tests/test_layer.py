@@ -76,7 +76,7 @@ def _valid_value(spec, arg, rng):
         if isinstance(allowed, range):
             return float(allowed.start)
         return float(rng.choice(sorted(allowed)))
-    if arg in spec.lengths:
+    if arg in spec.lengths or arg in getattr(spec, "positive", ()):
         return float(rng.uniform(0.2, 2.0))
     if arg in spec.nonnegative:
         return float(rng.uniform(0.0, 2.0))

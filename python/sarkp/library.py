@@ -39,9 +39,12 @@ A wrapped routine
 
 from __future__ import annotations
 
+import inspect
 import math
 import os
+import re
 import sys
+import textwrap
 import warnings
 from typing import TYPE_CHECKING, Any, Callable, Literal, NamedTuple, Optional, TypeVar, Union
 
@@ -106,6 +109,7 @@ OUT_DOC = """    out : ndarray, optional, keyword-only
 """
 
 _FLOAT64 = np.dtype(np.float64)
+_BIG = 2**53                    # ints below it are exactly floats
 #: what the scalar path takes (a bool is an int; complex, strings, arrays go the long way)
 _SCALARS = frozenset({float, int, bool, np.float64, np.float32, np.int64, np.int32})
 _PACKAGE_DIR = os.path.dirname(os.path.abspath(__file__))
@@ -254,6 +258,8 @@ class Routine:
         self.sweeps_tables = bool(self.counts)       # tables counted by an argument
         self._fixed = {a: d[0] for a, d in self.tables.items() if not self.counts & set(d)}
         self._returned_tables = [k for k, o in enumerate(self.outputs) if o in self.tables]
+        self._shape_rules = [(a, axis, d) for a, dims in self.tables.items()
+                             for axis, d in enumerate(dims)]
         self._aaa_index = self.inputs.index("AAA") if "AAA" in self.inputs else None
         self.listing = self.lines = ""
         self.checks = ()
@@ -316,7 +322,7 @@ class Routine:
         return self._call_arrays(args, on_error, out)
 
     def _skip(self, named):
-        """The first check that rules the inputs out (scalars), or None."""
+        """The first check that rules the inputs out (scalars and tables), or None."""
         with np.errstate(all="ignore"):
             for check in self.checks:
                 if check.bad(**named):
@@ -340,6 +346,12 @@ class Routine:
     def _settle_one(self, args, out, status, bad, at, check, on_error):
         """The error policy for one call: ``status`` and ``bad`` (input number + 1, its
         element ``at``) from the driver, whose outputs are NaN where it failed."""
+        if (bad or status != ST_OK) and self.integer_outputs:
+            # an integer result cannot hold the driver's NaN: a failure gives NaN here
+            failed = bad or not (status == ST_SIGNIFICANCE or status > ST_DIGITS)
+            if failed:
+                out = [math.nan if name in self.integer_outputs else o
+                       for name, o in zip(self.outputs, out)]
         if bad:
             k = bad - 1
             value = args[k]
@@ -492,63 +504,74 @@ class Routine:
         return self._result(out, status if allow_nan else None)
 
     def _call_tables(self, args, on_error):
-        """A routine with tables counted by an argument: one Fortran call, no sweep."""
+        """A routine with tables counted by an argument: one Fortran call, no sweep.
+        Here only types and shapes are looked at (and the counts, which are shapes);
+        the driver screens every value."""
         named, actual, given = {}, [], {}
         for arg, rule, value in zip(self.inputs, self.rules, args):
             if rule.table:
-                a = as_real_array(self.name, arg, value)
+                if type(value) is np.ndarray and value.dtype == _FLOAT64:
+                    a = value
+                else:
+                    a = as_real_array(self.name, arg, value)
                 given[arg] = a.shape
-                if a.ndim == 1 and len(rule.table) == 2:   # a single column (GELG's R)
-                    a = a.reshape(-1, 1)
                 if a.ndim != len(rule.table):
-                    raise ValueError(f"{self.name}: {arg} must be "
-                                     f"{('one', 'two')[len(rule.table) - 1]}-dimensional, "
-                                     f"not of shape {a.shape}")
+                    if a.ndim == 1 and len(rule.table) == 2:   # a single column (GELG's R)
+                        a = a.reshape(-1, 1)
+                    else:
+                        raise ValueError(f"{self.name}: {arg} must be "
+                                         f"{('one', 'two')[len(rule.table) - 1]}-dimensional,"
+                                         f" not of shape {a.shape}")
                 named[arg] = a
                 if rule.destroyed or arg in self.outputs:   # the routine overwrites it
                     a = np.array(a, order="F")
                 actual.append(a.ravel(order="F") if a.ndim > 1 else a)
             else:
-                v = _as_float(self.name, arg, value)
+                t = type(value)
+                v = value if t is float else float(value) if t is int and \
+                    -_BIG < value < _BIG else _as_float(self.name, arg, value)
                 if arg in self.counts:              # a count: the shapes' business
                     if not rule.holds(v):
                         raise self._bad_input(self.inputs.index(arg), v)
                     v = int(v)
                 named[arg] = v
                 actual.append(v)
-        for arg, dims in self.tables.items():
-            for axis, d in enumerate(dims):
-                want = named[d] if isinstance(d, str) else d
-                if named[arg].shape[axis] != want:
-                    count = f"{d} = {want}" if isinstance(d, str) else f"{want}"
-                    raise ValueError(f"{self.name}: {arg} has shape {named[arg].shape}: "
-                                     f"{named[arg].shape[axis]} along axis {axis}, but "
-                                     f"{count}")
+        for arg, axis, d in self._shape_rules:
+            want = named[d] if isinstance(d, str) else d
+            if named[arg].shape[axis] != want:
+                count = f"{d} = {want}" if isinstance(d, str) else f"{want}"
+                raise ValueError(f"{self.name}: {arg} has shape {named[arg].shape}: "
+                                 f"{named[arg].shape[axis]} along axis {axis}, but {count}")
         check = self._skip(named) if self.checks else None
         o = self.one(MODE_CODE.get(), *actual, check.status if check else 0)
+        status, bad = o[-3], o[-2]
         out = list(o[:-3])
         for k in self._returned_tables:             # an inout table: the input's shape
             out[k] = out[k].reshape(given[self.outputs[k]], order="F")
-        return self._settle_one([named[a] for a in self.inputs], out, int(o[-3]), int(o[-2]),
+        if status == 0 and bad == 0 and self.report is None:
+            return self.result._make(out) if on_error == "raise" else \
+                self.result_with_status._make(out + [Status.OK])
+        return self._settle_one([named[a] for a in self.inputs], out, int(status), int(bad),
                                 int(o[-1]), check, on_error)
 
 
 def _describe_doc(func, doc, sweeps):
     """The docstring: the chapter's prose with the generated Parameters section put
-    before its Returns (or at its end), and the keyword-only arguments."""
-    generated = func.__doc__ or ""
-    params = generated[generated.index("    Parameters"):] if "    Parameters" in generated \
+    before its Returns (or Raises, Warns, Notes; else at its end), and the keyword-only
+    arguments after it all."""
+    generated = inspect.cleandoc(func.__doc__ or "")
+    params = generated[generated.index("Parameters\n"):] if "Parameters\n" in generated \
         else ""
-    params = params.rstrip() + "\n"
-    prose = doc.rstrip() + "\n"
-    for head in ("\n    Returns\n", "\n    Raises\n", "\n    Warns\n", "\n    Notes\n"):
-        if head in prose:
-            i = prose.index(head)
-            prose = prose[:i] + "\n" + params + prose[i:]
-            break
+    prose = inspect.cleandoc(doc)
+    m = re.search(r"^(Returns|Raises|Warns|Notes)\n-+$", prose, re.M)
+    if m:
+        prose = prose[:m.start()] + params + "\n\n" + prose[m.start():]
     else:
-        prose = prose + "\n" + params
-    return prose + ON_ERROR_DOC + (OUT_DOC if sweeps else "")
+        prose += "\n\n" + params
+    tail = textwrap.dedent(ON_ERROR_DOC) + (textwrap.dedent(OUT_DOC) if sweeps else "")
+    text = prose.rstrip() + "\n" + tail
+    first, *rest = text.splitlines()
+    return "\n".join([first] + [("    " + line).rstrip() for line in rest]) + "\n"
 
 
 F = TypeVar("F", bound=Callable[..., Any])
