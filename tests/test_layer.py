@@ -43,9 +43,9 @@ def test_the_wrapper_is_importable_typed_source(name):
     inputs, annotated, then on_error (and out, for sweeps); the driver f2py built takes
     the same inputs in the same order and returns the declared outputs first."""
     routine, spec = ROUTINES[name], ROUTINES[name].spec
-    source = inspect.getsource(routine)
+    source = inspect.getsource(inspect.unwrap(routine))
     assert source.startswith(f"def {name}(") and "exec" not in source
-    assert inspect.getsourcefile(routine).endswith(f"_wrap_{spec.chapter}.py")
+    assert inspect.getsourcefile(inspect.unwrap(routine)).endswith(f"_wrap_{spec.chapter}.py")
     params = inspect.signature(routine).parameters
     assert list(params) == list(spec.inputs) + ["on_error"] + ([] if spec.sweeps_tables
                                                                else ["out"])
@@ -380,7 +380,7 @@ def test_integers_too_large_for_a_double():
     (lambda **k: sarkp.DOMEGA(1e-308, 1e10, 1.0, **k), "DOMEGA"),
 ])
 def test_overflow_is_a_named_error_never_inf(call, field):
-    with pytest.raises(sarkp.RangeError, match="overflow"):
+    with pytest.raises(sarkp.RangeError, match=rf": {field}\b.* would not be a finite"):
         call()
     out = call(on_error="nan")
     assert out.status == sarkp.Status.RANGE and math.isnan(getattr(out, field))
@@ -390,7 +390,7 @@ def test_overflow_in_arrays_gets_a_status():
     out = sarkp.DVKT([0.0, -1e308], 0.0, [1.0, 1e308], 0.0, on_error="nan")
     assert out.status.tolist() == [0, sarkp.Status.RANGE]
     assert out.RZ[0] == 1.0 and np.isnan(out.RZ[1])
-    with pytest.raises(sarkp.RangeError, match=r"DVKT at index \[1\]: a result .*overflow"):
+    with pytest.raises(sarkp.RangeError, match=r"DVKT at index \[1\]: RZ would not be"):
         sarkp.DVKT([0.0, -1e308], 0.0, [1.0, 1e308], 0.0)
 
 

@@ -299,9 +299,19 @@ class Routine:
             value = int(value)
         return ValueError(f"{self.name}: {rule.name}{_where(index)} = {value!r} {what}")
 
-    def _range_message(self, out=None, index=None):
-        return ("a result would not be a finite double (overflow); the inputs are too far "
-                "apart in magnitude")
+    def _range_message(self, mask):
+        """The message of status RANGE; ``mask`` (the driver's -sarkp_bad) has bit k - 1
+        set for result k that is not a finite double."""
+        names = [n for k, n in enumerate(self.outputs[:30]) if mask >> k & 1]
+        return (f"{', '.join(names) or 'a result'} would not be a finite double "
+                f"(overflow); the inputs are too far apart in magnitude")
+
+    def _range_mask(self, values, index):
+        """The mask of the results that overflow at position ``index`` of a sweep: that
+        position computed again, alone, by the one-call driver (only for the message)."""
+        one = [float(np.asarray(v)[index]) if np.ndim(v) else float(v) for v in
+               np.broadcast_arrays(*[np.asarray(v, dtype=float) for v in values])]
+        return -int(self.one(MODE_CODE.get(), *one)[-1])
 
     def _result(self, out, status):
         if self.function:
@@ -346,6 +356,9 @@ class Routine:
     def _settle_one(self, args, out, status, bad, at, check, on_error):
         """The error policy for one call: ``status`` and ``bad`` (input number + 1, its
         element ``at``) from the driver, whose outputs are NaN where it failed."""
+        mask = 0
+        if bad < 0:                                 # the results that overflowed
+            bad, mask = 0, -bad
         if (bad or status != ST_OK) and self.integer_outputs:
             # an integer result cannot hold the driver's NaN: a failure gives NaN here
             failed = bad or not (status == ST_SIGNIFICANCE or status > ST_DIGITS)
@@ -371,7 +384,7 @@ class Routine:
             elif on_error == "raise":
                 message = check.message if check is not None else None
                 if status == ST_RANGE:
-                    message = self._range_message(out)
+                    message = self._range_message(mask)
                 error = status_error(self.name, status, None, self.messages, message)
                 if self.kept.get(status) and check is None:
                     # what is still valid (the driver kept it): on_error="nan"'s result
@@ -489,8 +502,8 @@ class Routine:
             raise self._bad_input(k, value, where)
         if bad[2]:                                      # positions whose status is not OK
             def message(code, index):
-                if code == ST_RANGE:
-                    return self._range_message(out, index)
+                if code == ST_RANGE and not self._fixed:
+                    return self._range_message(self._range_mask(values, index))
                 k = -1 if failed_check is None else int(failed_check[index])
                 return self.checks[k].message if k >= 0 else None
 
