@@ -529,13 +529,13 @@ def scalar_driver(mod, p, variables):
         kinds.update({c.name: (c.type, bool(c.dims)) for c in commons})
         kinds["fres"] = (p.result_type or "real(dp)", False)
         w.append(f"    if (succeeded({status})) then")
-        w.append(f"      if (.not. ({finite_test(real_out)})) then")
-        w.append(f"        {status} = st_range")
+        w.append(f"      if (.not. ({finite_test(real_out)})) {status} = st_range")
+        w.append("    end if")
+        w.append(f"    if ({status} == st_range) then     ! found here, or by the routine")
         for k, a in enumerate(returned(p, variables)[:30]):
             if kinds[a][0] == "real(dp)":
                 test = finite_test([(_whole(p, a) if a in p.args else a, kinds[a][1])])
-                w.append(f"        if (.not. ({test})) sarkp_bad = sarkp_bad - {2**k}")
-        w.append("      end if")
+                w.append(f"      if (.not. ({test})) sarkp_bad = sarkp_bad - {2**k}")
         w.append("    end if")
     w.append(f"    if (.not. succeeded({status})) then")
     w += _nan_results(p, variables, lambda r: r, indent="      ", status=status)
