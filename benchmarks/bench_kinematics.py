@@ -239,8 +239,8 @@ def _raw_n(name, n, *args):
     if key not in _INC:
         _INC[key] = np.array(key[1], dtype=np.int32)
     out = np.empty((len(spec.outputs), n))
-    status, bad = getattr(_DRV, name + "_n")(MODE_CODE.get(), _INC[key], spec._kinds, 0,
-                                             *args, out.T)
+    status = np.zeros(n, np.int32)                  # in: nothing ruled out; out: statuses
+    bad = getattr(_DRV, name + "_n")(MODE_CODE.get(), _INC[key], 0, *args, out.T, status)
     return [*out, status, bad]
 
 

@@ -62,10 +62,10 @@ def main():
     a = [rng.uniform(-1, 1, N_ARRAY) for _ in range(4)]
     rows.append((f"DVKT arrays of {N_ARRAY:.0e}, sarkp.DVKT",
                  best_per_call(lambda: sarkp.DVKT(*a), 1, 5) / N_ARRAY, "per element"))
-    inc, kind = np.ones(4, np.int32), sarkp.DVKT.spec._kinds
+    inc = np.ones(4, np.int32)
     rows.append((f"DVKT arrays of {N_ARRAY:.0e}, raw driver dvkt_n",
-                 best_per_call(lambda: drv.dvkt_n(mode, inc, kind, 0, *a,
-                                                  np.empty((2, N_ARRAY)).T), 1, 5)
+                 best_per_call(lambda: drv.dvkt_n(mode, inc, 0, *a, np.empty((2, N_ARRAY)).T,
+                                                  np.zeros(N_ARRAY, np.int32)), 1, 5)
                  / N_ARRAY,
                  "per element"))
     rows.append((f"DVKT arrays of {N_ARRAY:.0e}, NumPy hypot+arctan2",

@@ -110,6 +110,7 @@ OUT_DOC = """    out : ndarray, optional, keyword-only
 
 _FLOAT64 = np.dtype(np.float64)
 _BIG = 2**53                    # ints below it are exactly floats
+_NUMBER, _COUNT, _TABLE, _WRITTEN = range(4)
 #: what the scalar path takes (a bool is an int; complex, strings, arrays go the long way)
 _SCALARS = frozenset({float, int, bool, np.float64, np.float32, np.int64, np.int32})
 _PACKAGE_DIR = os.path.dirname(os.path.abspath(__file__))
@@ -260,6 +261,12 @@ class Routine:
         self._returned_tables = [k for k, o in enumerate(self.outputs) if o in self.tables]
         self._shape_rules = [(a, axis, d) for a, dims in self.tables.items()
                              for axis, d in enumerate(dims)]
+        # how the table path takes each input: a number, a count, a table, a table the
+        # routine writes (copied first); with the table's number of dimensions
+        self._table_plan = [
+            (r.name, (_WRITTEN if r.destroyed or r.name in self.outputs else _TABLE)
+             if r.table else _COUNT if r.name in self.counts else _NUMBER, len(r.table))
+            for r in self.rules]
         self._aaa_index = self.inputs.index("AAA") if "AAA" in self.inputs else None
         self.listing = self.lines = ""
         self.checks = ()
@@ -521,50 +528,50 @@ class Routine:
         Here only types and shapes are looked at (and the counts, which are shapes);
         the driver screens every value."""
         named, actual, given = {}, [], {}
-        for arg, rule, value in zip(self.inputs, self.rules, args):
-            if rule.table:
+        for (arg, what, ndim), value in zip(self._table_plan, args):
+            if what >= _TABLE:
                 if type(value) is np.ndarray and value.dtype == _FLOAT64:
                     a = value
                 else:
                     a = as_real_array(self.name, arg, value)
                 given[arg] = a.shape
-                if a.ndim != len(rule.table):
-                    if a.ndim == 1 and len(rule.table) == 2:   # a single column (GELG's R)
+                if a.ndim != ndim:
+                    if a.ndim == 1 and ndim == 2:           # a single column (GELG's R)
                         a = a.reshape(-1, 1)
                     else:
                         raise ValueError(f"{self.name}: {arg} must be "
-                                         f"{('one', 'two')[len(rule.table) - 1]}-dimensional,"
-                                         f" not of shape {a.shape}")
+                                         f"{('one', 'two')[ndim - 1]}-dimensional, not of "
+                                         f"shape {a.shape}")
                 named[arg] = a
-                if rule.destroyed or arg in self.outputs:   # the routine overwrites it
+                if what == _WRITTEN:                        # the routine overwrites it
                     a = np.array(a, order="F")
-                actual.append(a.ravel(order="F") if a.ndim > 1 else a)
+                actual.append(a.ravel(order="F") if ndim > 1 else a)
             else:
                 t = type(value)
                 v = value if t is float else float(value) if t is int and \
                     -_BIG < value < _BIG else _as_float(self.name, arg, value)
-                if arg in self.counts:              # a count: the shapes' business
-                    if not rule.holds(v):
-                        raise self._bad_input(self.inputs.index(arg), v)
+                if what == _COUNT:                          # a count: the shapes' business
+                    k = self.inputs.index(arg)
+                    if not self.rules[k].holds(v):
+                        raise self._bad_input(k, v)
                     v = int(v)
                 named[arg] = v
                 actual.append(v)
         for arg, axis, d in self._shape_rules:
-            want = named[d] if isinstance(d, str) else d
+            want = named[d] if d.__class__ is str else d
             if named[arg].shape[axis] != want:
                 count = f"{d} = {want}" if isinstance(d, str) else f"{want}"
                 raise ValueError(f"{self.name}: {arg} has shape {named[arg].shape}: "
                                  f"{named[arg].shape[axis]} along axis {axis}, but {count}")
         check = self._skip(named) if self.checks else None
         o = self.one(MODE_CODE.get(), *actual, check.status if check else 0)
-        status, bad = o[-3], o[-2]
+        if o[-3] == 0 and o[-2] == 0 and self.report is None and on_error == "raise" and \
+                not self._returned_tables:
+            return _new(self.result, o[:-3])
         out = list(o[:-3])
         for k in self._returned_tables:             # an inout table: the input's shape
             out[k] = out[k].reshape(given[self.outputs[k]], order="F")
-        if status == 0 and bad == 0 and self.report is None:
-            return self.result._make(out) if on_error == "raise" else \
-                self.result_with_status._make(out + [Status.OK])
-        return self._settle_one([named[a] for a in self.inputs], out, int(status), int(bad),
+        return self._settle_one([named[a] for a in self.inputs], out, int(o[-3]), int(o[-2]),
                                 int(o[-1]), check, on_error)
 
 
