@@ -931,8 +931,8 @@ def _wrapper(module, p, variables):
         w.append(f"    return _{name}((" + _py_join(books, ",", " " * 8, 60) + ",), on_error, out)"
                  "  # type: ignore[no-any-return]")
     else:
-        w.append(f"    return _{name}((" + _py_join(books, ",", " " * 8, 60) + ",), on_error)"
-                 "  # type: ignore[no-any-return]")
+        w.append(f"    return _{name}._call_tables((" + _py_join(books, ",", " " * 8, 60)
+                 + ",), on_error)  # type: ignore[no-any-return]")
     return w
 
 

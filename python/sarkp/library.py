@@ -109,6 +109,7 @@ OUT_DOC = """    out : ndarray, optional, keyword-only
 """
 
 _FLOAT64 = np.dtype(np.float64)
+_NDARRAY = np.ndarray
 _BIG = 2**53                    # ints below it are exactly floats
 _NUMBER, _COUNT, _TABLE, _WRITTEN = range(4)
 #: what the scalar path takes (a bool is an int; complex, strings, arrays go the long way)
@@ -166,6 +167,15 @@ class Check:
         self.bad = bad
         self.status = status
         self.message = message
+
+
+class _Broken(Check):
+    """A check that raised: the call is ruled out; if the driver finds no input outside
+    its rule, the check's exception is raised after all."""
+
+    def __init__(self, exc):
+        super().__init__(None, ST_REQUIREMENT, str(exc))
+        self.exc = exc
 
 
 def _caller_stacklevel():
@@ -265,7 +275,7 @@ class Routine:
         # routine writes (copied first); with the table's number of dimensions
         self._table_plan = [
             (r.name, (_WRITTEN if r.destroyed or r.name in self.outputs else _TABLE)
-             if r.table else _COUNT if r.name in self.counts else _NUMBER, len(r.table))
+             if r.table else _COUNT if r.name in self.counts else _NUMBER, len(r.table), r)
             for r in self.rules]
         self._aaa_index = self.inputs.index("AAA") if "AAA" in self.inputs else None
         self.listing = self.lines = ""
@@ -338,12 +348,25 @@ class Routine:
             return self._call_scalar(args, on_error)
         return self._call_arrays(args, on_error, out)
 
-    def _skip(self, named):
-        """The first check that rules the inputs out (scalars and tables), or None."""
-        with np.errstate(all="ignore"):
-            for check in self.checks:
-                if check.bad(**named):
-                    return check
+    def _skip(self, named, quiet=True):
+        """The first check that rules the inputs out, or None.  The checks see the
+        inputs before the driver screens them: a check that fails on a value outside
+        its rule (math.sin(inf), say) rules the call out, and the driver's screen then
+        names the value; should the inputs pass the screen, the check's own error is
+        raised (:class:`_Broken`).  ``quiet``: NumPy's floating-point warnings off (the
+        sweeps; the table path's checks do no arithmetic that could warn)."""
+        try:
+            if quiet:
+                with np.errstate(all="ignore"):
+                    for check in self.checks:
+                        if check.bad(**named):
+                            return check
+            else:
+                for check in self.checks:
+                    if check.bad(**named):
+                        return check
+        except (ArithmeticError, ValueError, TypeError, Warning) as exc:
+            return _Broken(exc)
         return None
 
     def _call_scalar(self, args, on_error):
@@ -357,6 +380,8 @@ class Routine:
             for a, v in zip(self.inputs, args):
                 _as_float(self.name, a, v)
             raise
+        if type(check) is _Broken and o[-1] == 0:
+            raise check.exc
         return self._settle_one(args, list(o[:-2]), int(o[-2]), int(o[-1]), -1, check,
                                 on_error)
 
@@ -523,27 +548,35 @@ class Routine:
             return self._result(out, Status(int(status)) if allow_nan else None)
         return self._result(out, status if allow_nan else None)
 
+    def _table(self, arg, ndim, value):
+        """A table input as a float64 array of ``ndim`` dimensions (a column for a
+        one-dimensional value where two are wanted), or TypeError/ValueError."""
+        a = np.asarray(as_real_array(self.name, arg, value), dtype=_FLOAT64)
+        if a.ndim == 1 and ndim == 2:                       # a single column (GELG's R)
+            a = a.reshape(-1, 1)
+        if a.ndim != ndim:
+            raise ValueError(f"{self.name}: {arg} must be {('one', 'two')[ndim - 1]}-"
+                             f"dimensional, not of shape {np.shape(value)}")
+        return a
+
     def _call_tables(self, args, on_error):
         """A routine with tables counted by an argument: one Fortran call, no sweep.
         Here only types and shapes are looked at (and the counts, which are shapes);
         the driver screens every value."""
         named, actual, given = {}, [], {}
-        for (arg, what, ndim), value in zip(self._table_plan, args):
+        if on_error != "raise" and on_error != "nan":
+            raise ValueError(f"{self.name}: on_error must be 'raise' or 'nan', "
+                             f"not {on_error!r}")
+        for (arg, what, ndim, rule), value in zip(self._table_plan, args):
             if what >= _TABLE:
-                if type(value) is np.ndarray and value.dtype == _FLOAT64:
+                if type(value) is _NDARRAY and value.dtype is _FLOAT64 and \
+                        value.ndim == ndim:
                     a = value
                 else:
-                    a = as_real_array(self.name, arg, value)
-                given[arg] = a.shape
-                if a.ndim != ndim:
-                    if a.ndim == 1 and ndim == 2:           # a single column (GELG's R)
-                        a = a.reshape(-1, 1)
-                    else:
-                        raise ValueError(f"{self.name}: {arg} must be "
-                                         f"{('one', 'two')[ndim - 1]}-dimensional, not of "
-                                         f"shape {a.shape}")
+                    a = self._table(arg, ndim, value)
                 named[arg] = a
                 if what == _WRITTEN:                        # the routine overwrites it
+                    given[arg] = np.shape(value)
                     a = np.array(a, order="F")
                 actual.append(a.ravel(order="F") if ndim > 1 else a)
             else:
@@ -551,9 +584,8 @@ class Routine:
                 v = value if t is float else float(value) if t is int and \
                     -_BIG < value < _BIG else _as_float(self.name, arg, value)
                 if what == _COUNT:                          # a count: the shapes' business
-                    k = self.inputs.index(arg)
-                    if not self.rules[k].holds(v):
-                        raise self._bad_input(k, v)
+                    if not rule.holds(v):
+                        raise self._bad_input(self.inputs.index(arg), v)
                     v = int(v)
                 named[arg] = v
                 actual.append(v)
@@ -563,8 +595,10 @@ class Routine:
                 count = f"{d} = {want}" if isinstance(d, str) else f"{want}"
                 raise ValueError(f"{self.name}: {arg} has shape {named[arg].shape}: "
                                  f"{named[arg].shape[axis]} along axis {axis}, but {count}")
-        check = self._skip(named) if self.checks else None
+        check = self._skip(named, quiet=False) if self.checks else None
         o = self.one(MODE_CODE.get(), *actual, check.status if check else 0)
+        if type(check) is _Broken and o[-2] == 0:
+            raise check.exc
         if o[-3] == 0 and o[-2] == 0 and self.report is None and on_error == "raise" and \
                 not self._returned_tables:
             return _new(self.result, o[:-3])
