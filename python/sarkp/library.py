@@ -292,11 +292,14 @@ class Routine:
 
     @property
     def nonnegative(self):
-        return frozenset(r.name for r in self.rules if r.kind == K_NONNEGATIVE)
+        """>= 0 (a ``real > 0`` input is too: it was declared >= 0 and != 0)."""
+        return frozenset(r.name for r in self.rules if r.kind == K_NONNEGATIVE
+                         or r.word == "real > 0")
 
     @property
     def nonzero(self):
-        return frozenset(r.name for r in self.rules if r.kind == K_NONZERO)
+        return frozenset(r.name for r in self.rules if r.kind == K_NONZERO
+                         or r.word == "real > 0")
 
     @property
     def positive(self):
