@@ -6,7 +6,8 @@ are written against a small part of ``numpy.random.Generator`` (``uniform``,
 can run them for a million calls from seeds.  In the tests they draw from Hypothesis
 instead: ``rngs()`` gives an object with the same methods whose every number is a
 Hypothesis draw, so a failing example shrinks number by number (towards 0, the lower
-bound, or the first choice) and Hypothesis prints the drawn values, not a seed.
+bound, or the first choice) and Hypothesis prints the drawn values (``inputs``) or the
+calls (``rngs``), not a seed.
 
 ``inputs(gen)`` is the strategy of ``gen(rng)`` for one generator.
 
@@ -31,11 +32,17 @@ GRID = 2**32
 
 
 class DrawnRandom:
-    """The methods of ``numpy.random.Generator`` that the generators use, each number a
-    Hypothesis draw (``draw`` is ``data.draw`` or a composite strategy's ``draw``)."""
+    """The methods of ``numpy.random.Generator`` that the generators use, every number
+    made from integers that Hypothesis draws: ``integer(a, b)`` returns one in [a, b]
+    (``DrawnRandom.of(data.draw)`` inside a test or a composite strategy)."""
 
-    def __init__(self, draw):
-        self._draw = draw
+    def __init__(self, integer):
+        self._int = integer
+
+    @classmethod
+    def of(cls, draw):
+        """The DrawnRandom of a Hypothesis ``draw`` function (``data.draw``)."""
+        return cls(lambda a, b: draw(_integers(a, b)))
 
     def _many(self, one, size):
         """``one()`` once, or an array of ``size`` of them."""
@@ -53,10 +60,9 @@ class DrawnRandom:
         low, high = float(low), float(high)
         step = (high - low) / GRID
         if low <= 0.0 <= high:
-            index = _integers(math.ceil(low / step), math.floor(high / step))
-            return self._many(lambda: min(max(self._draw(index) * step, low), high), size)
-        index = _integers(0, GRID)
-        return self._many(lambda: min(low + self._draw(index) * step, high), size)
+            a, b = math.ceil(low / step), math.floor(high / step)
+            return self._many(lambda: min(max(self._int(a, b) * step, low), high), size)
+        return self._many(lambda: min(low + self._int(0, GRID) * step, high), size)
 
     def random(self):
         return self.uniform(0.0, 1.0)
@@ -70,14 +76,13 @@ class DrawnRandom:
         """An int in [low, high) (numpy's convention), or [0, low) with one bound."""
         if high is None:
             low, high = 0, low
-        index = _integers(int(low), int(high) - 1)
         if size is None:
-            return self._draw(index)
-        return self._many(lambda: self._draw(index), size).astype(int)
+            return self._int(int(low), int(high) - 1)
+        return self._many(lambda: self._int(int(low), int(high) - 1), size).astype(int)
 
     def choice(self, options):
         options = list(options)
-        return options[self._draw(_integers(0, len(options) - 1))]
+        return options[self._int(0, len(options) - 1)]
 
 
 @functools.lru_cache(maxsize=None)
@@ -87,8 +92,9 @@ def _integers(low, high):
 
 
 def rngs():
-    """A strategy of :class:`DrawnRandom` objects (one per example)."""
-    return st.data().map(lambda data: DrawnRandom(data.draw))
+    """A strategy of :class:`DrawnRandom` objects, one per example, drawing lazily (as
+    the test calls them) from Hypothesis's own random source (``st.randoms``)."""
+    return st.randoms(use_true_random=False).map(lambda r: DrawnRandom(r.randint))
 
 
 def inputs(gen):
@@ -96,5 +102,5 @@ def inputs(gen):
     draws."""
     @st.composite
     def drawn(draw):
-        return gen(DrawnRandom(draw))
+        return gen(DrawnRandom.of(draw))
     return drawn()
