@@ -1,6 +1,7 @@
-"""Random inputs and routine-independent invariants for every exported routine of
-chapters 2-4, shared by tests/test_fuzz.py (Hypothesis, bounded) and benchmarks/fuzz.py
-(the long campaign).
+"""Random inputs and routine-independent invariants for the routines of chapters 2-4, 7
+and 8 and four of chapter 6 (ROUTINES lists them), shared by tests/test_fuzz.py
+(Hypothesis, bounded) and benchmarks/fuzz.py (the long campaign).  Each section states
+its ranges; the paragraph below is chapters 2-4's.
 
 ``CASES[name] = (generate, check)``: ``generate(rng)`` draws valid inputs over wide
 ranges (lengths from 1e-3 to 1e3, so link ratios up to 1e6; a third of the mechanisms
@@ -1219,3 +1220,482 @@ for _name in ("DPRM1", "DPRM2", "DPRM3", "DPRM4", "DPRM5", "DSKOR1", "DSKOR2", "
               "DSKOR4", "DSKOR5", "DUSKR1", "DUSKR2", "DUSKR3", "DUSKR4", "DUSKR5",
               "DKNMA1", "DKNMA2", "DKNMA3", "DKNMA4", "DKNMA5"):
     _register(_name, *KINEMATICS[_name])
+
+
+# ------------------------------------------------------------------ chapter 7 forces
+# Groups of 0.05 to 20 m within 10 m of the origin, loads of 1e-2 to 1e4 N and moments up
+# to 1e4 N*m, directions at least 0.05 rad from a singular position (test_forces.py
+# holds the conventions; here statics is checked over the wider ranges).  The invariant:
+# every link of the group balances, forces and moments (about a joint of the group), to
+# what the routine vouched for, relative to the largest force times the largest length.
+
+def force(rng):
+    return length(rng, -2, 4)
+
+
+def moment(rng):
+    return float(rng.uniform(-1, 1)) * length(rng, -2, 4)
+
+
+def point(rng):
+    return np.array([float(rng.uniform(-10, 10)), float(rng.uniform(-10, 10))])
+
+
+def oblique_to(rng, fi, lo=0.05):
+    """A direction at least ``lo`` rad from fi and fi + pi."""
+    return fi + float(rng.choice([-1.0, 1.0])) * float(rng.uniform(lo, PI - lo))
+
+
+def loads_f(rng, S2, S3):
+    """The DNMAF loads: S2, F2, G2, S3, F3, G3, T2, T3."""
+    return [*S2, force(rng), angle(rng), *S3, force(rng), angle(rng), moment(rng),
+            moment(rng)]
+
+
+class Statics:
+    """Residuals of the balance of the group's links, relative to force x length."""
+
+    def __init__(self, bound, forces, lengths, coords):
+        self.F = max([1e-300] + [float(f) for f in forces])
+        self.L = max(lengths)
+        self.t = tol(bound, coords, min(lengths))
+        self.v = []
+
+    def forces(self, *vectors):
+        self.v.append(rel(sum(vectors), self.F) / self.t)
+
+    def moments(self, *terms):
+        self.v.append(abs(sum(terms)) / (self.F * self.L) / self.t)
+
+    def arm(self, f, *terms):
+        """A moment balance through an arm of the force f (no arm when f is 0)."""
+        if f > 1e-9 * self.F:
+            self.moments(*terms)
+
+    def normal(self, f, direction):
+        """A prismatic pair's reaction has no component along its guide."""
+        self.v.append(abs(f @ e(direction)) / self.F / self.t)
+
+    def worst(self):
+        return worst(*self.v)
+
+
+def gen_dnmaf1(rng):
+    A = point(rng)
+    B = A + vec(length(rng, -1.3, 1.3), angle(rng))
+    fab = math.atan2(*(A - B)[::-1])
+    C = B + vec(length(rng, -1.3, 1.3), oblique_to(rng, fab))
+    return [*A, *B, *C, *loads_f(rng, point(rng), point(rng))]
+
+
+def chk_dnmaf1(args, out, bound):
+    xa, ya, xb, yb, xc, yc, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3 = args
+    A, B, C, S2, S3 = (np.array(p) for p in ((xa, ya), (xb, yb), (xc, yc), (xs2, ys2),
+                                             (xs3, ys3)))
+    F12, F23, F43 = -vec(out.F21, out.G21), vec(out.F23, out.G23), -vec(out.F34, out.G34)
+    P2, P3 = vec(f2, g2), vec(f3, g3)
+    s = Statics(bound, (f2, f3, out.F21, out.F23, out.F34, abs(t2) / 20, abs(t3) / 20),
+                (np.hypot(*(B - A)), np.hypot(*(C - B)), 20.0), 10.0)
+    s.forces(F12, P2, -F23)
+    s.moments(t2, cross(A - B, F12), cross(S2 - B, P2))
+    s.forces(F23, P3, F43)
+    s.moments(t3, cross(S3 - B, P3), cross(C - B, F43))
+    return s.worst()
+
+
+def gen_dnmaf2(rng):
+    A = point(rng)
+    fim = angle(rng)
+    B = A + vec(length(rng, -1.3, 1.3), oblique_to(rng, fim + PI / 2))
+    return [*A, *B, fim, *loads_f(rng, point(rng), point(rng))]
+
+
+def chk_dnmaf2(args, out, bound):
+    xa, ya, xb, yb, fim, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3 = args
+    A, B, S2, S3 = (np.array(p) for p in ((xa, ya), (xb, yb), (xs2, ys2), (xs3, ys3)))
+    F12, F23, F43 = -vec(out.F21, out.G21), vec(out.F23, out.G23), -vec(out.F34, out.G34)
+    P2, P3 = vec(f2, g2), vec(f3, g3)
+    s = Statics(bound, (f2, f3, out.F21, out.F23, out.F34, abs(t2) / 20, abs(t3) / 20),
+                (np.hypot(*(B - A)), 20.0), 10.0)
+    s.forces(F12, P2, -F23)
+    s.moments(t2, cross(A - B, F12), cross(S2 - B, P2))
+    s.forces(F23, P3, F43)
+    s.normal(F43, fim)
+    s.arm(out.F34, t3, cross(S3 - B, P3), out.H34 * out.F34)   # H34: arm of F43 about B
+    return s.worst()
+
+
+def gen_dnmaf3(rng):
+    A = point(rng)
+    C = A + vec(length(rng, -1.3, 1.3), angle(rng))
+    fi3 = oblique_to(rng, math.atan2(*(C - A)[::-1]) + PI / 2)
+    return [*A, *C, fi3, *loads_f(rng, point(rng), point(rng))]
+
+
+def chk_dnmaf3(args, out, bound):
+    xa, ya, xc, yc, fi3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3 = args
+    A, C, S2, S3 = (np.array(p) for p in ((xa, ya), (xc, yc), (xs2, ys2), (xs3, ys3)))
+    F12, F23, F43 = -vec(out.F21, out.G21), vec(out.F23, out.G23), -vec(out.F34, out.G34)
+    P2, P3 = vec(f2, g2), vec(f3, g3)
+    s = Statics(bound, (f2, f3, out.F21, out.F23, out.F34, abs(t2) / 20, abs(t3) / 20),
+                (np.hypot(*(C - A)), 20.0), 10.0)
+    s.forces(F12, P2, -F23)
+    s.normal(F23, fi3)
+    s.forces(F23, P3, F43)
+    s.arm(out.F23, t3, cross(S3 - C, P3), out.H23 * out.F23)   # H23: arm of F23 about C
+    s.arm(out.F23, t2, cross(A - C, F12), cross(S2 - C, P2), -out.H23 * out.F23)
+    return s.worst()
+
+
+def gen_dnmaf4(rng):
+    fim = angle(rng)
+    return [fim, oblique_to(rng, fim), *point(rng), *loads_f(rng, point(rng), point(rng))]
+
+
+def chk_dnmaf4(args, out, bound):
+    fim, fin, xb, yb, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3 = args
+    B, S2, S3 = (np.array(p) for p in ((xb, yb), (xs2, ys2), (xs3, ys3)))
+    F12, F23, F43 = -vec(out.F21, out.G21), vec(out.F23, out.G23), -vec(out.F34, out.G34)
+    P2, P3 = vec(f2, g2), vec(f3, g3)
+    s = Statics(bound, (f2, f3, out.F21, out.F23, out.F34, abs(t2) / 20, abs(t3) / 20),
+                (20.0,), 10.0)
+    s.forces(F12, P2, -F23)
+    s.normal(F12, fim)
+    s.forces(F23, P3, F43)
+    s.normal(F43, fin)
+    s.arm(out.F21, t2, cross(S2 - B, P2), out.H21 * out.F21)   # arms about B (E-DNMAF4-3)
+    s.arm(out.F34, t3, cross(S3 - B, P3), out.H34 * out.F34)
+    return s.worst()
+
+
+def gen_dnmaf5(rng):
+    return [*point(rng), angle(rng), oblique_to(rng, 0.0),
+            *loads_f(rng, point(rng), point(rng))]
+
+
+def chk_dnmaf5(args, out, bound):
+    xa, ya, fim, tt3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3 = args
+    A, S2, S3 = (np.array(p) for p in ((xa, ya), (xs2, ys2), (xs3, ys3)))
+    F12, F32, F43 = -vec(out.F21, out.G21), vec(out.F32, out.G32), -vec(out.F34, out.G34)
+    P2, P3 = vec(f2, g2), vec(f3, g3)
+    s = Statics(bound, (f2, f3, out.F21, out.F32, out.F34, abs(t2) / 20, abs(t3) / 20),
+                (20.0,), 10.0)
+    s.forces(F12, P2, F32)
+    s.normal(F32, fim + tt3)
+    s.forces(-F32, P3, F43)
+    s.normal(F43, fim)
+    s.arm(out.F32, t2, cross(S2 - A, P2), out.H32 * out.F32)   # arms about A
+    s.arm(out.F34, t2 + t3, cross(S2 - A, P2), cross(S3 - A, P3), out.H34 * out.F34)
+    return s.worst()
+
+
+def loads_q(rng):
+    """The DNMA loads: M2, Q2, G2, M3, Q3, G3."""
+    return [moment(rng), force(rng), angle(rng), moment(rng), force(rng), angle(rng)]
+
+
+def gen_dnma1(rng):
+    fi2 = angle(rng)
+    return [length(rng, -1.3, 1.3), fi2, length(rng, -1.3, 1.3), oblique_to(rng, fi2),
+            float(rng.uniform(-20, 20)), float(rng.uniform(-20, 20)), *loads_q(rng)]
+
+
+def chk_dnma1(args, out, bound):
+    l2, fi2, l3, fi3, bs2, bs3, m2, q2, g2, m3, q3, g3 = args
+    # B at the origin, A = B - L2 e(FI2), C = B - L3 e(FI3), S = B + BS e(FI) (E-DNMA1-3)
+    A, C = -vec(l2, fi2), -vec(l3, fi3)
+    S2, S3 = vec(bs2, fi2), vec(bs3, fi3)
+    RA, RB, RC = vec(out.RA, out.GA), vec(out.RB, out.GB), vec(out.RC, out.GC)
+    P2, P3 = vec(q2, g2), vec(q3, g3)
+    s = Statics(bound, (q2, q3, out.RA, out.RB, out.RC, abs(m2) / 20, abs(m3) / 20),
+                (l2, l3, 20.0), 0.0)
+    s.forces(RA, P2, RB)
+    s.moments(m2, cross(A, RA), cross(S2, P2))
+    s.forces(-RB, P3, RC)
+    s.moments(m3, cross(S3, P3), cross(C, RC))
+    return s.worst()
+
+
+def gen_dnma2(rng):
+    fi2 = angle(rng)
+    return [length(rng, -1.3, 1.3), fi2, length(rng, -1.3, 1.3), angle(rng),
+            oblique_to(rng, fi2 + PI / 2), float(rng.uniform(-20, 20)),
+            float(rng.uniform(-20, 20)), *loads_q(rng)]
+
+
+def chk_dnma2(args, out, bound):
+    l2, fi2, l3, eta, fio, bs2, bs3, m2, q2, g2, m3, q3, g3 = args
+    A, S2, S3 = -vec(l2, fi2), vec(bs2, fi2), vec(bs3, fio + eta)     # B at the origin
+    RA, RB, RC = vec(out.RA, out.GA), vec(out.RB, out.GB), vec(out.RC, out.GC)
+    P2, P3 = vec(q2, g2), vec(q3, g3)
+    s = Statics(bound, (q2, q3, out.RA, out.RB, out.RC, abs(m2) / 20, abs(m3) / 20),
+                (l2, 20.0), 0.0)
+    s.forces(RA, P2, RB)
+    s.moments(m2, cross(A, RA), cross(S2, P2))
+    s.forces(-RB, P3, RC)
+    s.normal(RC, fio)
+    s.arm(out.RC, m3, cross(S3, P3), out.HC * out.RC)          # HC: arm of RC about B
+    return s.worst()
+
+
+def gen_dnma3(rng):
+    fiac = angle(rng)
+    return [length(rng, -1.3, 1.3), angle(rng), oblique_to(rng, fiac + PI / 2),
+            float(rng.uniform(0, 20)), angle(rng), float(rng.uniform(0, 20)), angle(rng),
+            length(rng, -1.3, 1.3), fiac, *loads_q(rng)]
+
+
+def chk_dnma3(args, out, bound):
+    l2, eta2, fi3, cs2, fics2, cs3, fics3, ac, fiac, m2, q2, g2, m3, q3, g3 = args
+    A, S2, S3 = -vec(ac, fiac), vec(cs2, fics2), vec(cs3, fics3)   # C at the origin
+    RA, RB, RC = vec(out.RA, out.GA), vec(out.RB, out.GB), vec(out.RC, out.GC)
+    P2, P3 = vec(q2, g2), vec(q3, g3)
+    s = Statics(bound, (q2, q3, out.RA, out.RB, out.RC, abs(m2) / 20, abs(m3) / 20),
+                (ac, 20.0), 0.0)
+    s.forces(RA, P2, RB)
+    s.normal(RB, fi3)
+    s.forces(-RB, P3, RC)
+    s.arm(out.RB, m3, cross(S3, P3), out.HB * out.RB)          # HB: of -RB about C
+    s.arm(out.RB, m2, cross(A, RA), cross(S2, P2), -out.HB * out.RB)
+    return s.worst()
+
+
+def gen_dnma4(rng):
+    fim = angle(rng)
+    return [fim, angle(rng), oblique_to(rng, fim), angle(rng), float(rng.uniform(-20, 20)),
+            float(rng.uniform(-20, 20)), *loads_q(rng)]
+
+
+def chk_dnma4(args, out, bound):
+    fim, eta2, fin, eta3, bs2, bs3, m2, q2, g2, m3, q3, g3 = args
+    RA, RB, RC = vec(out.RA, out.GA), vec(out.RB, out.GB), vec(out.RC, out.GC)
+    P2, P3 = vec(q2, g2), vec(q3, g3)
+    s = Statics(bound, (q2, q3, out.RA, out.RB, out.RC, abs(m2) / 20, abs(m3) / 20),
+                (20.0,), 0.0)
+    s.forces(RA, P2, RB)
+    s.normal(RA, fim)
+    s.forces(-RB, P3, RC)
+    s.normal(RC, fin)
+    s.arm(out.RA, m2, cross(bs2 * e(fim + eta2), P2), out.HA * out.RA)   # E-DNMA4-2
+    s.arm(out.RC, m3, cross(bs3 * e(fin + eta3), P3), out.HC * out.RC)
+    return s.worst()
+
+
+def gen_dnma5(rng):
+    return [oblique_to(rng, 0.0), angle(rng), float(rng.uniform(0, 20)),
+            float(rng.uniform(0, 20)), angle(rng), angle(rng), *loads_q(rng)]
+
+
+def chk_dnma5(args, out, bound):
+    eta3, fim, as2, as3, fias2, fias3, m2, q2, g2, m3, q3, g3 = args
+    S2, S3 = -vec(as2, fias2), -vec(as3, fias3)          # A at the origin (E-DNMA5-3)
+    RA, RB, RC = vec(out.RA, out.GA), vec(out.RB, out.GB), vec(out.RC, out.GC)
+    P2, P3 = vec(q2, g2), vec(q3, g3)
+    s = Statics(bound, (q2, q3, out.RA, out.RB, out.RC, abs(m2) / 20, abs(m3) / 20),
+                (20.0,), 0.0)
+    s.forces(RA, P2, -RB)                                # RB acts on 3, from 2
+    s.normal(RB, fim + eta3)
+    s.forces(RB, P3, RC)
+    s.normal(RC, fim)
+    s.arm(out.RB, m2, cross(S2, P2), out.HB * out.RB)
+    s.arm(out.RC, m2 + m3, cross(S2, P2), cross(S3, P3), out.HC * out.RC)
+    return s.worst()
+
+
+def gen_dugl6(rng):
+    rn, rt = force(rng), force(rng)
+    gn = angle(rng)
+    return [rn, gn, rt, oblique_to(rng, gn, 0.05) if rng.random() < 0.5 else angle(rng),
+            angle(rng, True)]
+
+
+def chk_dugl6(args, out, bound):
+    rn, gn, rt, gt, fi = args
+    total = vec(rn, gn) + vec(rt, gt)
+    size = float(np.hypot(*total))
+    if size <= 1e-6 * (rn + rt):                         # the sum vanishes: no direction
+        return 0.0
+    if not -PI / 2 < out < 1.5 * PI + 1e-15:
+        return math.inf
+    return rel(size * e(out) - total, rn + rt) / tol(bound)
+
+
+for _name in ("DNMAF1", "DNMAF2", "DNMAF3", "DNMAF4", "DNMAF5",
+              "DNMA1", "DNMA2", "DNMA3", "DNMA4", "DNMA5", "DUGL6"):
+    _register(_name, globals()["gen_" + _name.lower()], globals()["chk_" + _name.lower()])
+
+
+# ------------------------------------------------------------------ chapter 6 gears
+# Standard involute relations (ALPHA = 20 deg, addendum 1, root clearance 0.25), written
+# from the textbook formulas (6.12)-(6.24), not from sarkp: tooth numbers 17 to 200, shifts
+# from -0.5 (or the undercut limit) to 0.3, helix angles up to 0.6 rad, modules 0.1 to 100.
+
+ALPHA = PI / 9
+
+
+def inv(x):
+    return math.tan(x) - x
+
+
+def gen_duginv(rng):
+    x = float(rng.uniform(1e-3, 1.5))
+    return [inv(x), PI / 18, 1e-5]
+
+
+def chk_duginv(args, out, bound):
+    invx = args[0]
+    if not 0.0 <= out < PI / 2:
+        return math.inf
+    # the angle is exact when inv(out) = INVX to a few roundings of tan(out), whose
+    # derivative is 1/cos^2 (corrected mode: full precision)
+    return abs(inv(out) - invx) / (16 * U * (math.tan(out) + out) / math.cos(out) ** 2)
+
+
+def teeth(rng):
+    return float(rng.integers(17, 201))
+
+
+def gen_dgmtzk(rng):
+    z = teeth(rng)
+    beta = float(rng.uniform(0.0, 0.6)) * float(rng.choice([-1.0, 1.0]))
+    at = math.atan(math.tan(ALPHA) / math.cos(beta))
+    xmin = 1 - z * math.sin(at) ** 2 / (2 * math.cos(beta))
+    return [length(rng, -1, 2), z, beta, float(rng.uniform(max(xmin + 0.01, -0.5), 0.3))]
+
+
+def chk_dgmtzk(args, out, bound):
+    m, z, beta, x = args
+    at = math.atan(math.tan(ALPHA) / math.cos(beta))
+    d = m * z / math.cos(beta)
+    db = d * math.cos(at)
+    da, df = d + 2 * (1 + x) * m, d - 2 * (1.25 - x) * m
+    s = m * (PI / 2 + 2 * x * math.tan(ALPHA)) / math.cos(beta)     # transverse thickness
+    aat = math.acos(db / da)
+    sb = db * (s / d + inv(at))
+    sa = da * (s / d + inv(at) - inv(aat))
+    got = (out.D, out.S, out.DB, out.SB, out.DA, out.SA, out.DF)
+    want = (d, s, db, sb, da, sa, df)
+    return worst(*(abs(g - w) / (1e-12 * da) for g, w in zip(got, want)))
+
+
+def gen_dgmzpc(rng):
+    beta = float(rng.uniform(0.0, 0.6)) * float(rng.choice([-1.0, 1.0]))
+    at = math.atan(math.tan(ALPHA) / math.cos(beta))
+    args = [length(rng, -1, 2)]
+    shifts = []
+    for _ in range(2):
+        z = teeth(rng)
+        xmin = 1 - z * math.sin(at) ** 2 / (2 * math.cos(beta))
+        args.append(z)
+        shifts.append(float(rng.uniform(max(xmin + 0.01, -0.5), 0.3)))
+    return args + [beta, *shifts, float(rng.uniform(0, 100))]
+
+
+def chk_dgmzpc(args, out, bound):
+    m, z1, z2, beta, x1, x2, bw = args
+    at = math.atan(math.tan(ALPHA) / math.cos(beta))
+    a = m * (z1 + z2) / (2 * math.cos(beta))
+    xs = x1 + x2
+    inv_w = inv(at) + 2 * xs * math.tan(ALPHA) / (z1 + z2)
+    aw = a * math.cos(at) / math.cos(out.ALFAW)
+    y = (aw - a) / m
+    dy = xs - y
+    eps = 0.0
+    for z, x in ((z1, x1), (z2, x2)):
+        d = m * z / math.cos(beta)
+        eps += z * math.tan(math.acos(d * math.cos(at) / (d + 2 * (1 + x - dy) * m)))
+    eps = (eps - (z1 + z2) * math.tan(out.ALFAW)) / (2 * PI) + \
+        bw * abs(math.sin(beta)) / (PI * m)
+    # ALFAW through the involute equation (its root, to roundings of tan), the rest
+    # from it; E to 1e-9 (the tip angles' arccos near their base circles)
+    return worst(abs(inv(out.ALFAW) - inv_w) / (16 * U * (1 + inv_w) /
+                                                math.cos(out.ALFAW) ** 2),
+                 abs(out.A - a) / (1e-13 * a), abs(out.XS - xs) / (1e-13 * (1 + abs(xs))),
+                 abs(out.AW - aw) / (1e-12 * a), abs(out.XY - y) / (1e-9 * (1 + abs(y))),
+                 abs(out.XUR - dy) / (1e-9 * (1 + abs(dy))), abs(out.E - eps) / (1e-9 * eps))
+
+
+def gen_dkrkt(rng):
+    m, z1, z2 = length(rng, -1, 2), float(rng.integers(18, 201)), float(rng.integers(18, 201))
+    # a centre distance 0 to 0.4 modules above the standard one: shifts from 0 to about
+    # 0.45, neither undercut (x >= 0 > X1P = 1 - 0.5 z sin^2(alpha) from 18 teeth up; 17
+    # teeth undercut at x = 0) nor pointed (x < 0.15 z^0.7)
+    return [m, z1, z2, m * (z1 + z2) / 2 + float(rng.uniform(0.0, 0.4)) * m, 0]
+
+
+def chk_dkrkt(args, out, bound):
+    m, z1, z2, aw, sdvig = args
+    a = m * (z1 + z2) / 2
+    alfaw = math.acos(a * math.cos(ALPHA) / aw)                           # (6.12)
+    xs = (z1 + z2) * (inv(alfaw) - inv(ALPHA)) / (2 * math.tan(ALPHA))      # (6.13)
+    return worst(abs(out.ALFAW - alfaw) / 1e-12, abs(out.X1 + out.X2 - xs) / 1e-10)
+
+
+for _name in ("DUGINV", "DGMTZK", "DGMZPC", "DKRKT"):
+    _register(_name, globals()["gen_" + _name.lower()], globals()["chk_" + _name.lower()])
+
+
+# ------------------------------------------------------------------ chapter 8 dynamics
+# One cycle of a machine: a smooth periodic reduced moment and variable inertia on 5 to
+# 60 points, a constant inertia large enough that the speed stays positive.  The
+# invariants: the trapezoid work, the steady-state work, the energy equation (8.13)
+# (J_c + J_v) omega^2 / 2 - work = constant with (max + min)/2 = W1, the difference
+# quotient of omega; the flywheel formula (8.22).
+
+def periodic(rng, m, scale):
+    phi = np.linspace(0.0, 2 * PI, m)
+    out = np.full(m, float(rng.uniform(-0.5, 0.5)) * scale)
+    for k in (1, 2, 3):
+        # the first harmonic is never 0: the cycle has a swing
+        a = apart(rng) / 2 if k == 1 else float(rng.uniform(-1, 1))
+        out += a * scale * np.sin(k * phi + angle(rng))
+    return out
+
+
+def gen_dzkndv(rng):
+    m = int(rng.integers(5, 61))
+    w1, q = length(rng, -1, 3), length(rng, -2, 4)
+    mpr = periodic(rng, m, q)
+    ispr = np.abs(periodic(rng, m, q / w1**2)) * float(rng.uniform(0, 2))
+    # the energy swing over the cycle is below 2 pi * 3.5 q; an inertia 20 to 1000 times
+    # that over W1^2 keeps the speed within a few percent of W1
+    isc = 22 * q * float(10.0 ** rng.uniform(1.3, 3)) / w1**2
+    return [m, float(m), w1, isc, mpr, ispr]
+
+
+def chk_dzkndv(args, out, bound):
+    m, zm, w1, isc, mpr, ispr = args
+    h = 2 * PI / (m - 1)
+    work = np.concatenate([[0.0], np.cumsum((mpr[1:] + mpr[:-1]) * h / 2)])
+    asum = work - np.arange(m) * work[-1] / (m - 1)
+    ev = ispr * w1**2 / 2
+    dec = (asum - ev) - (asum[0] - ev[0])
+    scale = np.abs(mpr).max() * 2 * PI + np.abs(ev).max() + 1e-300
+    wpr = np.asarray(out.WPR)
+    energy = (isc + ispr) * wpr**2 / 2 - asum
+    e0 = energy.mean()
+    epr = np.diff(wpr) / h
+    return worst(rel(out.AS - work, scale) / 1e-12, rel(out.ASUM - asum, scale) / 1e-12,
+                 rel(out.EV - ev, scale) / 1e-12, rel(out.DEC - dec, scale) / 1e-12,
+                 np.abs(energy - e0).max() / (abs(e0) * 1e-11),
+                 abs((wpr.max() + wpr.min()) / 2 - w1) / (w1 * 1e-12),
+                 rel(out.EPR[1:] - epr, np.abs(epr).max() + w1 / h * 1e-12) / 1e-9,
+                 0.0 if out.EPR[0] == out.EPR[1] else math.inf)
+
+
+def gen_dmhvk(rng):
+    n = int(rng.integers(3, 61))
+    dec = periodic(rng, n, length(rng, -2, 4))
+    delta, w1 = float(rng.uniform(0.001, 0.5)), length(rng, -1, 3)
+    swing = dec.max() - dec.min()
+    return [n, delta, swing / (delta * w1**2) * float(rng.uniform(0.01, 0.99)), w1, dec]
+
+
+def chk_dmhvk(args, out, bound):
+    n, delta, isc, w1, dec = args
+    want = (dec.max() - dec.min()) / (delta * w1**2) - isc
+    return abs(out.IMHVK - want) / (1e-13 * (want + isc))
+
+
+for _name in ("DZKNDV", "DMHVK"):
+    _register(_name, globals()["gen_" + _name.lower()], globals()["chk_" + _name.lower()])
