@@ -13,13 +13,15 @@ both ends included: M points, step H = 2*pi/(M - 1).
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 
 import numpy as np
 
 from .errors import RequirementError, Status
 from .library import ST_REQUIREMENT, Check, as_real_array, book_routine
+from .modes import get_mode
 
-__all__ = ["DZKNDV", "DMHVK", "motion", "flywheel", "Motion", "Flywheel"]
+__all__ = ["DZKNDV", "DMHVK", "DMHVK_EXACT", "motion", "flywheel", "Motion", "Flywheel"]
 
 _COUNT = range(2, 2**31 - 1)
 
@@ -32,10 +34,13 @@ DZKNDV = book_routine(
     checks=(Check(lambda M, ZM, **_: ZM != M, ST_REQUIREMENT,
                   "ZM must equal M: the book passes the number of points twice, as an "
                   "integer and as a real (the step is 2*pi/(ZM - 1))"),),
+    kept={ST_REQUIREMENT: ("AS", "ASUM", "EV", "DEC")},
     messages={ST_REQUIREMENT: "the kinetic energy would go negative: no steady motion "
                               "with the mean speed W1 has real speeds (the machine would "
-                              "stall). More constant inertia ISC is needed, e.g. a "
-                              "flywheel from DMHVK (DEC does not depend on ISC)"},
+                              "stall). Size a flywheel from DEC (DEC does not depend on "
+                              "ISC, and is still computed): DZKNDV(..., "
+                              "on_error='nan').DEC (or this error's .result.DEC) into "
+                              "DMHVK, or DMHVK_EXACT for the exact flywheel"},
     doc="""Steady-state law of motion of the reduction link, energy form (listing VIII.1).
 
     Listing VIII.1 (L5939-5990), block diagram Fig. 70, eqs. (8.13)-(8.17), operator
@@ -87,8 +92,12 @@ DZKNDV = book_routine(
     ------
     RequirementError
         Corrected mode: no steady motion with mean speed W1 has real speeds -- the kinetic
-        energy would go negative somewhere in the cycle (the machine stalls).  Also when
-        ZM differs from M.
+        energy would go negative somewhere in the cycle (the machine stalls).  AS, ASUM,
+        EV and DEC are still computed (they do not depend on ISC): with
+        ``on_error="nan"`` they are returned, with WPR and EPR NaN and ``status``
+        REQUIREMENT; the error raised otherwise carries that result as ``.result``.  A
+        flywheel sized from DEC (DMHVK, or DMHVK_EXACT) gives the steady motion.  Also
+        raised when ZM differs from M (then every output is NaN under ``on_error="nan"``).
 
     Notes
     -----
@@ -100,7 +109,11 @@ DZKNDV = book_routine(
     ``(ISC + ISPR[k])*WPR[k]**2/2 = E0 + ASUM[k]``, with E0 fixed by the same normalisation
     (max WPR + min WPR)/2 = W1, so that WPR is exact up to the trapezoid rule's O(H**2)
     (ERRATA E-DZKNDV-2; tests/test_dynamics.py checks it against a closed form and
-    against scipy's solve_ivp).  PI is 3.14159 as printed (the listing's local PI, L5955).
+    against scipy's solve_ivp).  E0 comes in closed form from the two points where DEC
+    has its extremes (where omega has them, exactly so for ISPR = 0), checked by the pass
+    that computes WPR (repeated with WPR's extremes if they sit elsewhere; Newton's method
+    inside a bracket if that does not settle).  For a fourth-order law of motion on any
+    grid, from rest too, see :func:`sarkp.motion`.  PI is 3.14159 as printed (the listing's local PI, L5955).
     The printed DINTGR writes a line to unit 3 on every call; nothing is printed here.
     """)
 
@@ -665,3 +678,64 @@ def flywheel(phi, J, M, *, delta, omega_mean, J_constant=None):
     jf, _ = _exact_flywheel(asum, J, wm, delta)
     mo = motion(phi, J + jf, M, omega_mean=wm)
     return Flywheel(jf, _merkalov(asum, J, wm, delta, jc), mo)
+
+
+_DMHVK_EXACT = namedtuple("DMHVK_EXACT", ("IMHVK", "IMERK", "DELTA"))
+
+
+def DMHVK_EXACT(M, ZM, W1, ISC, MPR, ISPR, DELTA):
+    """The exact flywheel for DZKNDV (a sarkp extension beside DMHVK, listing VIII.2).
+
+    The moment of inertia IMHVK to add to ISC so that DZKNDV rerun with ``ISC + IMHVK``
+    gives the coefficient of speed fluctuation ``(max WPR - min WPR)/W1`` exactly DELTA
+    (to rounding), where DMHVK (Merkalov's method, eqs. (8.22)/(8.24)) neglects the
+    variable part ISPR of the inertia in corrected mode (its value, IMERK, is returned
+    beside).  It works whether or not DZKNDV finds a steady motion with ISC alone.
+
+    The arguments are DZKNDV's, in its order, and DELTA.  Corrected mode: at the two
+    points where WPR has its extremes, W1 (1 +- DELTA/2), the energy equation of DZKNDV
+    is linear in the added inertia, which gives it in closed form from DZKNDV's own ASUM
+    (the same trapezoid rule); one pass over the table checks that the extremes are
+    there (a bisection takes over if they move).  As printed, DZKNDV's linear law (8.17)
+    makes DMHVK itself exact: IMHVK = IMERK.
+
+    Parameters
+    ----------
+    M, ZM, W1, ISC, MPR, ISPR
+        As for DZKNDV.
+    DELTA : float
+        The coefficient of speed fluctuation, in (0, 1).
+
+    Returns
+    -------
+    DMHVK_EXACT(IMHVK, IMERK, DELTA)
+        ``IMHVK``: the exact flywheel (kg*m^2; negative when no flywheel is needed);
+        ``IMERK``: DMHVK's value from DZKNDV's DEC; ``DELTA``: the coefficient of
+        DZKNDV rerun with ``ISC + IMHVK``.
+
+    Raises
+    ------
+    ValueError
+        Bad input, as DZKNDV and DMHVK raise it (DELTA outside (0, 1) among them).
+    """
+    delta = _scalar("DMHVK_EXACT", "DELTA", DELTA)
+    if not 0.0 < delta < 1.0:
+        raise ValueError(f"DMHVK_EXACT: DELTA = {delta!r}, the coefficient of speed "
+                         f"fluctuation (omega_max - omega_min)/omega_sr, must lie in (0, 1)")
+    first = DZKNDV(M, ZM, W1, ISC, MPR, ISPR, on_error="nan")
+    if np.isnan(first.DEC).all():                      # ZM != M: raise its error
+        DZKNDV(M, ZM, W1, ISC, MPR, ISPR)
+    imerk = DMHVK(M, delta, ISC, W1, first.DEC)
+    imerk = float(imerk[0] if isinstance(imerk, tuple) else imerk)
+    if get_mode() == "as-printed":
+        imh = imerk
+    else:
+        j = ISC + np.asarray(ISPR, dtype=float)
+        imh, _ = _exact_flywheel(first.ASUM, j, float(W1), delta)
+    if not ISC + imh > 0.0:
+        raise RequirementError(
+            f"DMHVK_EXACT: no flywheel is needed: the fluctuation would reach DELTA = "
+            f"{delta!r} only with the constant inertia ISC + IMHVK = "
+            f"{float(ISC + imh)!r} <= 0 (IMHVK = {float(imh)!r})")
+    w = DZKNDV(M, ZM, W1, ISC + imh, MPR, ISPR).WPR
+    return _DMHVK_EXACT(float(imh), imerk, float((w.max() - w.min()) / W1))
