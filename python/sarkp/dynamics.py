@@ -3,7 +3,14 @@
 ``DZKNDV`` finds the steady-state law of motion omega(phi) of the reduction link from the
 reduced moment and the reduced moment of inertia over one cycle, in the integral (energy)
 form of the equation of motion, with the trapezoid rule; ``DMHVK`` the moment of inertia
-of the flywheel that keeps the coefficient of speed fluctuation at a given delta.
+of the flywheel that keeps the coefficient of speed fluctuation at a given delta
+(Merkalov's method, which neglects the variable part of the inertia).
+
+sarkp's extensions: ``DMHVK_EXACT`` (the flywheel with which DZKNDV's rerun has exactly
+the delta asked for, beside DMHVK's value); ``motion`` (omega(phi) and t(phi) at fourth
+order on any grid, from a given speed, from rest, or the steady cycle) and ``flywheel``
+(the exact flywheel at fourth order), which ``sarkp.Mechanism.motion`` and ``.flywheel``
+call with a mechanism's reduced inertia and moment.
 
 Units (section 9.3): angles rad, omega rad/s, moments N*m, inertias kg*m^2, work and
 energy J.  The tables span exactly one cycle of the reduction link, phi = 0 .. 2*pi with
@@ -696,7 +703,10 @@ def DMHVK_EXACT(M, ZM, W1, ISC, MPR, ISPR, DELTA):
     points where WPR has its extremes, W1 (1 +- DELTA/2), the energy equation of DZKNDV
     is linear in the added inertia, which gives it in closed form from DZKNDV's own ASUM
     (the same trapezoid rule); one pass over the table checks that the extremes are
-    there (a bisection takes over if they move).  As printed, DZKNDV's linear law (8.17)
+    there (a bisection takes over if they move).  This is the book's own tangent
+    construction on the energy-mass diagram, eqs. (8.20)-(8.21) (L6018-6030), with the
+    tangent points found exactly; DMHVK's (8.22)/(8.24) takes them at DEC's extremes,
+    which are omega's only for a constant inertia (ERRATA E-T8-3).  As printed, DZKNDV's linear law (8.17)
     makes DMHVK itself exact: IMHVK = IMERK.
 
     Parameters
