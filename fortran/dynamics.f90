@@ -58,8 +58,10 @@ contains
   ! no E0 gives real speeds (even the least, omega = 0 somewhere, gives a larger mean).
   ! The extremes of omega are where those of DEC are (exactly so for ISPR = 0): E0 in
   ! closed form from those two points, then one pass that computes WPR and checks that
-  ! its extremes are there -- else again with WPR's extremes; Newton's method inside a
-  ! bracket if that does not settle.
+  ! its extremes are there -- else again with WPR's extremes.  When the pair has no root
+  ! or one below the least E0 = -min ASUM, the pass is made at that least E0: a mean
+  ! above W1 there is a stall, else its extremes are tried next.  Newton's method inside
+  ! a bracket if that does not settle in 8 passes.
   ! k1, k2: where DEC has its largest and smallest value; amin = min ASUM.
   subroutine steady_speeds(m, w1, isc, ispr, asum, k1, k2, amin, wpr, ok)
     integer, intent(in) :: m
@@ -75,7 +77,8 @@ contains
     ok = .true.
     do it = 1, 8
       call pair_energy(asum(k1), isc + ispr(k1), asum(k2), isc + ispr(k2), w1, e0, root)
-      if (.not. root .or. e0 < lo) exit
+      if (.not. root) e0 = lo                        ! no root, or one below lo: look at
+      e0 = max(e0, lo)                               ! lo, and retry at its extremes
       wmax = 0.0_dp
       wmin = huge(1.0_dp)
       do k = 1, m                                    ! the speeds and their extremes
@@ -83,7 +86,11 @@ contains
         wmax = max(wmax, wpr(k))
         wmin = min(wmin, wpr(k))
       end do
-      if (wpr(k1) >= wmax .and. wpr(k2) <= wmin) return
+      if (e0 == lo .and. 0.5_dp*(wmax + wmin) > w1) then
+        ok = .false.                                 ! even the least E0 gives more than W1
+        return
+      end if
+      if (e0 > lo .and. wpr(k1) >= wmax .and. wpr(k2) <= wmin) return
       k1 = maxloc(wpr, 1)
       k2 = minloc(wpr, 1)
     end do

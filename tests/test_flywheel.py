@@ -162,3 +162,32 @@ def test_no_flywheel_needed():
     assert r.IMHVK < 0 and r.DELTA == pytest.approx(0.05, rel=1e-12)
     with pytest.raises(sarkp.RequirementError, match="no flywheel is needed"):
         DMHVK_EXACT(37, 37.0, W1, 0.2, np.sin(phi), np.full(37, 5.0), 0.5)
+
+
+def test_stall_decision_is_the_definition():
+    """300 random machines, many near a stall: DZKNDV stalls exactly when even the least
+    E0 (omega = 0 where ASUM is smallest) gives a mean above W1 (the midrange grows with
+    E0), computed here directly from ASUM; otherwise WPR satisfies the energy equation
+    with the book's mean."""
+    rng = np.random.default_rng(20)
+    stalls = 0
+    for _ in range(300):
+        m = int(rng.integers(5, 80))
+        phi = grid(m)
+        coeffs = rng.uniform(-50, 50, 6)
+        mpr = sum(c * np.sin((k + 1) * phi + k) for k, c in enumerate(coeffs)) - 5.0
+        isc = rng.uniform(0.05, 20.0)
+        ispr = rng.uniform(0, 30) * (1 + np.cos(phi + rng.uniform(0, 6))) ** 2
+        r = DZKNDV(m, float(m), W1, isc, mpr, ispr, on_error="nan")
+        j = isc + ispr
+        least = np.sqrt(np.maximum(2 * (r.ASUM - r.ASUM.min()) / j, 0.0))
+        if r.status == sarkp.Status.REQUIREMENT:
+            stalls += 1
+            assert (least.max() + least.min()) / 2 > W1
+        else:
+            assert r.status == sarkp.Status.OK
+            assert (least.max() + least.min()) / 2 <= W1 * (1 + 1e-14)
+            e = j * r.WPR**2 / 2 - r.ASUM
+            assert np.ptp(e) <= 1e-12 * (np.abs(r.ASUM).max() + (j * r.WPR**2).max())
+            assert (r.WPR.max() + r.WPR.min()) / 2 == pytest.approx(W1, rel=1e-13)
+    assert 30 < stalls < 270                     # both outcomes well represented

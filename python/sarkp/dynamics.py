@@ -405,18 +405,22 @@ def _steady_energy(a, j, w):
 
     The extremes of omega sit where those of a - (j - min j) w^2/2 (the book's DEC) sit,
     for a small fluctuation exactly: E0 in closed form from those two points, then one
-    pass to check that omega's extremes are there (else again with the new extremes;
-    bisection if that does not settle)."""
+    pass to check that omega's extremes are there (else again with the new extremes).
+    Without a root, or with one below the least E0 = -min a, the pass is made there: a
+    mean above w is a stall, else its extremes are tried next.  Bisection if that does
+    not settle in 8 passes (DZKNDV's steady_speeds does the same in Fortran)."""
     lo = -float(a.min())
     dec = a - (j - j.min()) * (w * w / 2.0)
     k1, k2 = int(dec.argmax()), int(dec.argmin())
     for _ in range(8):
         e0 = _pair_energy(a[k1], j[k1], a[k2], j[k2], w)
-        if e0 is None or e0 < lo:
-            break
+        if e0 is None or e0 < lo:               # no root, or one below lo: look at lo,
+            e0 = lo                             # and retry at its extremes
         om = _speeds(e0, a, j)
         n1, n2 = int(om.argmax()), int(om.argmin())
-        if om[k1] >= om[n1] and om[k2] <= om[n2]:
+        if e0 == lo and 0.5 * (om[n1] + om[n2]) > w:
+            return None                         # even the least E0 gives more than w
+        if e0 > lo and om[k1] >= om[n1] and om[k2] <= om[n2]:
             return e0
         k1, k2 = n1, n2
 
