@@ -331,15 +331,20 @@ def _grid(who, phi, J, M):
     return phi, J, M
 
 
-def _lagrange(d, x):
-    """Values at offsets x (shape (n, q)) of the 4 Lagrange basis cubics of the nodes
-    at offsets d (shape (n, 4)): shape (n, q, 4)."""
-    out = np.ones(x.shape + (4,))
+def _weights(d, x, wg, scale):
+    """Quadrature weights (n, 4) on each interval: the 4 Lagrange basis cubics of the
+    nodes at offsets d (n, 4), at the offsets x (n, q) of the interval's quadrature
+    points, times the point weights wg (q,), times scale (n,).  Basis j is the product of
+    x - d[m] over m != j over that of d[j] - d[m]."""
+    diff = [x - d[:, m, None] for m in range(4)]
+    w = np.empty(d.shape)
     for j in range(4):
-        for m in range(4):
-            if m != j:
-                out[..., j] *= (x - d[:, None, m]) / (d[:, None, j] - d[:, None, m])
-    return out
+        others = [m for m in range(4) if m != j]
+        num = diff[others[0]] * diff[others[1]] * diff[others[2]]
+        den = ((d[:, j] - d[:, others[0]]) * (d[:, j] - d[:, others[1]])
+               * (d[:, j] - d[:, others[2]]))
+        w[:, j] = (num @ wg) * (scale / den)
+    return w
 
 
 def _stencils(n):
@@ -355,7 +360,7 @@ def _cubic_weights(phi):
     d = phi[first[:, None] + np.arange(4)] - phi[:-1, None]        # node offsets
     x, wg = _GAUSS2
     pts = (h[:, None] / 2) * (1.0 + x[None, :])                       # Gauss points
-    return first, np.einsum("q,nqj->nj", wg, _lagrange(d, pts)) * (h[:, None] / 2)
+    return first, _weights(d, pts, wg, h / 2)
 
 
 def _singular_weights(phi, c):
@@ -370,7 +375,7 @@ def _singular_weights(phi, c):
     ug = u[:-1, None] + (du[:, None] / 2) * (1.0 + x[None, :])
     off = (ug - u[:-1, None]) * (ug + u[:-1, None])     # s(ug) - s[k]
     d = phi[first[:, None] + np.arange(4)] - phi[:-1, None]
-    return first, np.einsum("q,nqj->nj", wg, _lagrange(d, off)) * du[:, None]
+    return first, _weights(d, off, wg, du)
 
 
 def _cumulative(first, w, f):
