@@ -54,7 +54,7 @@ contains
   subroutine mech_solve(need, n, np, nl, ns, gi, gr, phi, omega, epsil, inc_w, inc_e, &
                         nm, mlink, mpoint, mval, gravity, &
                         nf, fpoint, flink, nfv, fval, nt, tlink, ntv, tval, &
-                        nsp, spp, spl, spv, npair, powner, lbase, &
+                        nsp, spp, spl, spv, npair, powner, lbase, x0, &
                         nv, na, nr, pos, vel, acc, th, om, ep, react, mbal, jred, mred, &
                         status, fgroup)
     !f2py threadsafe
@@ -63,6 +63,7 @@ contains
     integer, intent(in) :: gi(8, ns)
     real(dp), intent(in) :: gr(8, ns), phi(n), omega(*), epsil(*)
     integer, intent(in) :: powner(np), lbase(0:nl)
+    real(dp), intent(in) :: x0(2, np)
     integer, intent(in) :: mlink(nm), mpoint(nm)
     real(dp), intent(in) :: mval(2, nm), gravity
     integer, intent(in) :: fpoint(nf), flink(nf)
@@ -85,7 +86,7 @@ contains
 
     allocate(x(2, np), v(2, np), a(2, np), c(0:nl), s(0:nl), w(0:nl), e(0:nl), prev(0:nl))
     allocate(fl(2, 0:nl), ml(0:nl), aa(2, np), ee(0:nl), seen(0:nl))
-    x = 0.0_dp; v = 0.0_dp; a = 0.0_dp
+    x = x0; v = 0.0_dp; a = 0.0_dp
     c = 1.0_dp; s = 0.0_dp; w = 0.0_dp; e = 0.0_dp; prev = 0.0_dp
     seen = .false.
     seen(0) = .true.
