@@ -301,7 +301,9 @@ class Mechanism:
         for n in spec:
             self._known(who, n)
         if len(spec) == 1:
-            found = [lk for lk in self._links[1:] if lk.name == spec]
+            # a slider block (or a slotted link, a block) that carries this one joint
+            found = [lk for lk in self._links[1:] if lk.name == spec
+                     or (lk.name[0] == spec[0] and lk.rigid == {spec[0]})]
         elif len(spec) == 2:
             p, q = spec
             if p == q:
@@ -323,12 +325,19 @@ class Mechanism:
 
     def point(self, D, P, Q, dist, angle=0.0):
         """Point D rigidly on link P-Q: ``dist`` from P, at ``angle`` (counter-clockwise)
-        from the direction P->Q."""
+        from the direction P->Q.  ``Q = None``: on the slider block (or slotted link)
+        that P names, ``angle`` counted from its guide's direction."""
         who = f"point({D!r}, {P!r}, {Q!r})"
-        self._inputs(who, P, Q)
-        link = self._link(who, (P, Q))
-        if not self._rigid_name(link, P, Q):
-            raise ValueError(f"{who}: the direction {P}->{Q} does not turn with the link")
+        if Q is None:
+            self._inputs(who, P)
+            link = self._link(who, (P,))
+            Q = P
+        else:
+            self._inputs(who, P, Q)
+            link = self._link(who, (P, Q))
+            if not self._rigid_name(link, P, Q):
+                raise ValueError(f"{who}: the direction {P}->{Q} does not turn with the "
+                                 f"link")
         dist = _real(who, "dist", dist)
         if dist < 0:
             raise ValueError(f"{who}: dist must be >= 0, not {dist}")
@@ -377,16 +386,24 @@ class Mechanism:
         point = self._centre(who, link, P, Q, centre)
         self._masses.append((link.index, point, m, j))
 
-    def force(self, P, fx, fy):
-        """External force (N) at joint or point P, on its owner link: constants, or one
-        value per position of the solve."""
+    def force(self, P, fx, fy, *, link=None):
+        """External force (N) at joint or point P: constants, or one value per position
+        of the solve.  It acts on ``link`` (two joints naming it, or a slider's joint),
+        by default on P's owner (see the module's docstring)."""
         who = f"force({P!r})"
         self._known(who, P)
-        if self._owner[P] == _FRAME:
+        if link is None:
+            on = self._owner[P]
+        else:
+            lk = self._link(who, link)
+            if P not in lk.rigid:
+                raise ValueError(f"{who}: joint {P!r} is not on link {lk.label}")
+            on = lk.index
+        if on == _FRAME:
             raise ValueError(f"{who}: joint {P!r} is a frame point: a force there does "
                              f"nothing")
         fx, fy = self._load_values(who, "fx", fx), self._load_values(who, "fy", fy)
-        self._forces.append((self._points[P], self._owner[P], fx, fy))
+        self._forces.append((self._points[P], on, fx, fy))
 
     def torque(self, P, Q, M):
         """External moment (N m, counter-clockwise positive) on link P-Q: a constant or
