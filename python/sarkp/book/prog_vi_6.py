@@ -16,7 +16,7 @@ import math
 
 from ..gears import DGMZPC
 from ..modes import book_pi
-from .prog_v_5 import _R4, _f
+from .es_evm import Real4 as _R4, fn as _f
 
 LISTING = "VI.6"
 TITLE = "External involute mesh (DGMZPC example, chapter 6)"

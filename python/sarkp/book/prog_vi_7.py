@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 
 from ..gears import DGMZVN
-from .prog_v_5 import _R4, _f
+from .es_evm import Real4 as _R4, fn as _f
 from .prog_vi_6 import _duginv
 
 LISTING = "VI.7"

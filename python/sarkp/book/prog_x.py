@@ -62,7 +62,7 @@ from ..kinematics import DPRM1, DPRM2, DSKOR1, DSKOR2, DUSKR1, DUSKR2
 from ..modes import book_pi
 from ..report import fortran_write
 from ..synthesis import DSNTZ1, DSNTZR
-from .prog_v_5 import _R4      # a REAL*4 of the ES EVM (sarkp.book.es_evm)
+from .es_evm import Real4, fn
 
 LISTING = "X"
 TITLE = "Course project of chapter 10: the conveyor-feeder mechanism (program X)"
@@ -147,13 +147,12 @@ class StageError(SarkpError):
 
 def _number():
     """The main program's REAL: the ES EVM's as printed, a double corrected."""
-    return _R4 if get_mode() == "as-printed" else float
+    return Real4 if get_mode() == "as-printed" else float
 
 
 def _fn(function):
-    if get_mode() == "as-printed":
-        return lambda x: _R4(function(float(x)))
-    return function
+    """A library function in the main program's arithmetic (see :func:`_number`)."""
+    return fn(function) if get_mode() == "as-printed" else function
 
 
 # ---- stage 1: synthesis (Fig. 84) -----------------------------------------------------------
@@ -369,7 +368,7 @@ def crank_angles(positions: int = POSITIONS) -> np.ndarray:
     ``F = F + DF`` in the ES EVM's REAL*4, as program II.13 does (E-FIG4-4): the
     printed FI1 = 2.9670, 3.4906, ... (E-FIG91-7)."""
     if get_mode() == "as-printed":
-        R = _R4
+        R = Real4
         df = R(2.0) * R(book_pi()) / R(36.0)
         f, out = -df, []
         for _ in range(positions):
