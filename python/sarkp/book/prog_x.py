@@ -81,9 +81,15 @@ GAMMA_DIVISOR = 3.0              # L7467: DPRFPL's design angle PI/3.0
 G, ML = 9.81, 50.0               # L7542: gravity, mass per metre of a link
 POSITIONS = 37                   # L7503: DO 30 K = 1, 37
 CAM_POINTS = 26                  # L7434: DO 5 K = 1, 26
-#: E-X-LINKS-1: ROA, RAB, ROC fitted (least squares) to the 259 printed position cells of
-#: Fig. 91 with the other lengths from DSNTZR; the printed Fig. 84 has them to 3 decimals.
-FITTED_LINKS = {"ROA": 0.16646893, "RAB": 2.33535352, "ROC": 2.09023145}
+#: E-X-LINKS-1: the link lengths of the printed run, the output of scripts/fit_x_links.py
+#: (a minimax fit to 587 printed cells of Fig. 91; worst cell 0.544 units; standard
+#: uncertainties 0.4-4.3e-6 m).  Fig. 84 prints ROA RAB ROC to 3 decimals, and DSNTZR's
+#: RCD RDE (0.5787882, 0.7012536), which these round to as well.
+FITTED_LINKS = {"ROA": 0.16646745, "RAB": 2.33534586, "ROC": 2.09022290, "RCD": 0.57878712,
+                "RDE": 0.70125374}
+#: their standard uncertainties (m), from the same script
+FITTED_UNCERTAINTY = {"ROA": 4.3e-7, "RAB": 4.3e-6, "ROC": 4.0e-6, "RCD": 1.8e-6,
+                      "RDE": 1.1e-6}
 #: E-X-DELTA-1: the flywheel's coefficient of speed fluctuation, as run and as asked.
 DELTA_FLYWHEEL = {"as-printed": 0.01, "corrected": 0.02}
 
@@ -178,8 +184,8 @@ def synthesis() -> dict:
                          f"four-bar for K = {SKW} and the extreme positions "
                          f"{ficb1:.4f}, {ficb1 + DELTA:.4f} rad: {exc}") from exc
     out = {"RCD": r.L1, "RDE": r.L2, "FICD1": ficd1, "FI11": r.FI11, "FICB1": ficb1,
-           "DSNTZ1": (s.L1, s.L2, s.LO)}
-    if printed:                     # E-X-LINKS-1
+           "DSNTZ1": (s.L1, s.L2, s.LO), "RCD_DSNTZR": r.L1, "RDE_DSNTZR": r.L2}
+    if printed:                     # E-X-LINKS-1 (Fig. 84 prints DSNTZR's RCD, RDE)
         out.update(FITTED_LINKS)
     else:
         out.update(ROA=s.L1, RAB=s.L2, ROC=s.LO)
@@ -666,7 +672,8 @@ def stage_cells(stage: str, results: dict) -> dict:
     out = {}
     if stage == "synthesis":
         s = results
-        for name, key in (("RCD", "RCD"), ("RDE", "RDE"), ("FICD", "FICD1"), ("ROA", "ROA"),
+        for name, key in (("RCD", "RCD_DSNTZR"), ("RDE", "RDE_DSNTZR"), ("FICD", "FICD1"),
+                          ("ROA", "ROA"),
                           ("RAB", "RAB"), ("ROC", "ROC")):
             out[("1", name)] = float(s[key])
     elif stage == "cam":
