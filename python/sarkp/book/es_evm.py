@@ -31,6 +31,17 @@ def real4(x: float) -> float:
     return math.copysign(f * 16.0 ** e, x)
 
 
+def real4_rounded(x: float) -> float:
+    """``x`` rounded to the nearest System/360 short hexadecimal float (as a library
+    function that rounds its result, rather than truncating it, delivers it)."""
+    down = real4(x)
+    if down == x or x == 0.0 or not math.isfinite(x):
+        return down
+    step = 16.0 ** (math.floor(math.log(abs(down), 16)) + 1 - 6)   # one unit of the 6th
+    up = math.copysign(abs(down) + step, x)                          # hex digit of down
+    return real4(up) if abs(up - x) < abs(x - down) else down
+
+
 def add(a: float, b: float) -> float:
     """``a + b`` as the ES EVM computed it: the exact sum truncated to a short float."""
     return real4(real4(a) + real4(b))

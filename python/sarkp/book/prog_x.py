@@ -62,6 +62,7 @@ from ..kinematics import DPRM1, DPRM2, DSKOR1, DSKOR2, DUSKR1, DUSKR2
 from ..modes import book_pi
 from ..report import fortran_write
 from ..synthesis import DSNTZ1, DSNTZR
+from . import es_evm
 from .es_evm import Real4, fn
 
 LISTING = "X"
@@ -87,6 +88,8 @@ CAM_POINTS = 26                  # L7434: DO 5 K = 1, 26
 #: RCD RDE (0.5787882, 0.7012536), which these round to as well.
 FITTED_LINKS = {"ROA": 0.16646745, "RAB": 2.33534586, "ROC": 2.09022290, "RCD": 0.57878712,
                 "RDE": 0.70125374}
+#: the cells of Fig. 91 the fit leaves out, by their ERRATA ids (scripts/fit_x_links.py)
+FIT_LEFT_OUT = frozenset({"E-FIG91-9", "E-FIG91-10"})
 #: their standard uncertainties (m), from the same script
 FITTED_UNCERTAINTY = {"ROA": 4.3e-7, "RAB": 4.3e-6, "ROC": 4.0e-6, "RCD": 1.8e-6,
                       "RDE": 1.1e-6}
@@ -290,7 +293,7 @@ def render_gears(g: dict) -> str:
 
 # ---- stage 4: cam (Fig. 89) -----------------------------------------------------------------
 
-def cam_law() -> dict:
+def cam_law(sin_rounds: bool = False) -> dict:
     """The follower's motion law, loop DO 5 (L7414-7463), formulas (10.1)-(10.3).
 
     As printed, in the ES EVM's arithmetic: it puts FI(11) just below FIU (row 11 is the
@@ -299,6 +302,9 @@ def cam_law() -> dict:
     the row number, exact pi, double precision."""
     R = _number()
     cos, sin = _fn(math.cos), _fn(math.sin)
+    if sin_rounds and get_mode() == "as-printed":    # E-FIG89-4: the library's SIN
+        def sin(x):                                  # rounds its result to REAL*4
+            return Real4(es_evm.real4_rounded(math.sin(float(x))))
     pi = R(book_pi())
     beta = pi * (R(SKW) - R(1.0)) / (R(SKW) + R(1.0))
     fiu = (pi - beta) * R(0.4)
@@ -726,6 +732,56 @@ def figure_cells(number: str) -> dict:
     """Figure ``number`` of program X as computed, {(row, column): value}."""
     stage = next(s for s, f in STAGE_FIGURE.items() if f == str(number))
     return stage_cells(stage, run([stage])[stage])
+
+
+def fitted_cells() -> list:
+    """The printed cells of Fig. 91 that :data:`FITTED_LINKS` were fitted to: every cell
+    that depends on the lengths (all but FI1), less those of :data:`FIT_LEFT_OUT`."""
+    from .figures import load_figure
+    return [c for c in load_figure("91").cells
+            if c.reproducible and not c.column.startswith("FI1")
+            and not FIT_LEFT_OUT & set(c.errata.split(";"))]
+
+
+def evidence(number: str):
+    """What shows more about a printed figure than the double-precision run
+    (:class:`sarkp.book.figures.Evidence`): the cells the link lengths were fitted to
+    (Fig. 91), program X's chain in the ES EVM's arithmetic and in IEEE single
+    (:mod:`sarkp.book.x_arithmetic`; Figs. 91, 94, 96), the ES EVM's DGMZVN (Fig. 87),
+    the cam's law with a rounding SIN (Fig. 89) and the demonstrated causes."""
+    from . import x_arithmetic
+    from .figures import Evidence
+    from .x_causes import causes
+    number = str(number)
+    arithmetics = {}
+    if number in x_arithmetic.FIGURES:
+        arithmetics = {"ES EVM": x_arithmetic.figure_cells(number, "es-evm"),
+                       "IEEE single": x_arithmetic.figure_cells(number, "ieee-single")}
+    elif number == "87":
+        arithmetics = {"ES EVM": _gears_es_evm()}
+    elif number == "89":
+        arithmetics = {"ES EVM, SIN rounded": _cam_law_cells(cam_law(sin_rounds=True))}
+    fitted = frozenset((c.row, c.column) for c in fitted_cells()) if number == "91" else \
+        frozenset()
+    return Evidence(fitted=fitted, arithmetics=arithmetics, causes=causes(number),
+                    fit="scripts/fit_x_links.py, prog_x.FITTED_LINKS" if fitted else "")
+
+
+def _gears_es_evm() -> dict:
+    """Fig. 87's DGMZVN block as the ES EVM computed it (prog_vi_7.emulate with program
+    X's call; X1 from as-printed DKRKT)."""
+    from .. import as_printed
+    from . import prog_vi_7
+    with as_printed():
+        x = sarkp.DKRKT(**GEAR_CALLS["DKRKT"]).X2
+    call = dict(GEAR_CALLS["DGMZVN"], X1=x)
+    inputs = tuple(call[n] for n in sarkp.DGMZVN.spec.inputs if n != "AAA")
+    return {("DGMZVN", name): v for (_, name), v in prog_vi_7.emulate({"X": inputs}).items()}
+
+
+def _cam_law_cells(law: dict) -> dict:
+    return {(str(k + 1), name): float(law[name][k])
+            for k in range(CAM_POINTS) for name in ("AT", "VT", "ST")}
 
 
 # ---- corrected mode: the design the task card asks for -------------------------------------
