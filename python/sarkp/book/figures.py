@@ -256,8 +256,8 @@ def classify(comparisons: list, evidence: Evidence | None = None) -> list:
 def summary(figure: Figure, comparisons: list, evidence: Evidence | None = None,
             corrected_differences: dict | None = None) -> dict:
     """Counts of a diff by class (:func:`classify`), the cells left out and the ids why,
-    and ``no_id``: differing cells that carry no ERRATA id at all (nor, in corrected mode,
-    a reason of ``corrected_differences``)."""
+    ``no_id``: differing cells that carry no ERRATA id of their own, and of those
+    ``corrected_mode`` the ones that ``corrected_differences`` names a reason for."""
     explain = corrected_differences or {}
     classes = classify(comparisons, evidence)
     skipped = [c for c in comparisons if not (c.cell.reproducible or c.cell.magnitude)]
@@ -265,8 +265,10 @@ def summary(figure: Figure, comparisons: list, evidence: Evidence | None = None,
     row = {"figure": figure.number, "compared": len(classes),
            "left_out": len(skipped), "why": ", ".join(reasons),
            "no_id": sum(k not in (REPRODUCED, FITTED) and not c.cell.errata
-                        and not (explain.get(c.cell.column) or explain.get("*"))
                         for c, k, _ in classes),
+           "corrected_mode": sum(k not in (REPRODUCED, FITTED) and not c.cell.errata
+                                 and bool(explain.get(c.cell.column) or explain.get("*"))
+                                 for c, k, _ in classes),
            "arithmetic_names": ", ".join(sorted({w.split(":")[0] for _, k, w in classes
                                                  if k == ARITHMETIC}))}
     for name in CLASSES:

@@ -371,3 +371,14 @@ def arithmetic_table() -> str:
     for name in runs:
         lines.append(f"- {name} misses: {', '.join(missed[name]) or 'none'}")
     return "\n".join(lines)
+
+
+def evidence(number: str = "4"):
+    """Fig. 4 run in the ES EVM's arithmetic (:func:`emulate`) and in IEEE single
+    (:func:`single`), for :func:`sarkp.book.figures.classify`."""
+    from .figures import Evidence
+
+    def keyed(table):
+        return {(str(k + 1), name): float(table[name][k])
+                for name in COLUMNS for k in range(len(table["FI"]))}
+    return Evidence(arithmetics={"ES EVM": keyed(emulate()), "IEEE single": keyed(single())})

@@ -275,3 +275,10 @@ def plots(directory) -> list:
                                 title=f"V.5: pressure angle and radius of curvature "
                                       f"({mode})"), paths[1])
     return paths
+
+
+def evidence(number: str = "35"):
+    """Fig. 35 run in the ES EVM's arithmetic (:func:`emulate`), for
+    :func:`sarkp.book.figures.classify`."""
+    from .figures import Evidence
+    return Evidence(arithmetics={"ES EVM": emulated_cells()})

@@ -88,3 +88,10 @@ def emulate() -> dict:
                                (a, xs, alfaw, aw, xy, xur, ealfa + ebeta)):
             out[(row, name)] = float(value)
     return out
+
+
+def evidence(number: str = "47"):
+    """Fig. 47 run in the ES EVM's arithmetic (:func:`emulate`), for
+    :func:`sarkp.book.figures.classify`."""
+    from .figures import Evidence
+    return Evidence(arithmetics={"ES EVM": emulate()})

@@ -85,3 +85,10 @@ def emulate(calls=None) -> dict:
         for name, value in zip(DGMZVN.spec.outputs, values):
             out[(row, name)] = float(value)
     return out
+
+
+def evidence(number: str = "48"):
+    """Fig. 48 run in the ES EVM's arithmetic (:func:`emulate`), for
+    :func:`sarkp.book.figures.classify`."""
+    from .figures import Evidence
+    return Evidence(arithmetics={"ES EVM": emulate()})

@@ -29,8 +29,9 @@ import numpy as np
 from . import es_evm
 from .prog_ii_13 import _gelg_es_evm
 
-#: the arithmetics this module runs
-ARITHMETICS = ("es-evm", "ieee-single")
+#: the arithmetics this module runs ("double": the same statements in IEEE double, the
+#: check that they are the program sarkp runs)
+ARITHMETICS = ("es-evm", "ieee-single", "double")
 #: the figures it computes
 FIGURES = ("91", "94", "96")
 
@@ -42,6 +43,8 @@ def _number(arithmetic: str):
         def fn(function):
             return lambda *x: np.float32(function(*(float(v) for v in x)))
         return np.float32, fn
+    if arithmetic == "double":
+        return float, lambda function: function
     raise ValueError(f"arithmetic must be one of {', '.join(ARITHMETICS)}, "
                      f"not {arithmetic!r}")
 
