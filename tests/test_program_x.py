@@ -47,10 +47,6 @@ def columns(number):
 
 # ---- as printed: the figures ----------------------------------------------------------------
 
-NO_GEARS = pytest.mark.skipif(not prog_x.available("gears"),
-                              reason="chapter 6 (gears) not in this build")
-
-
 def classes(number):
     """Fig. ``number``'s compared cells by class, as ``sarkp book diff`` sorts them."""
     figure, comparisons = diff(number)
@@ -330,10 +326,9 @@ def test_fig86_ocr_fix_from_coaxiality():
     z1, z2, z3, z4 = (int(p[("8", f"Z{i}")]) for i in range(1, 5))
     assert 1 + Fraction(z4, z1) == Fraction(71, 10) and (z1 + z4) % 3 == 0
     assert z1 + z2 != z4 - z3
-    if prog_x.available("teeth"):
-        with sarkp.mode("corrected"):
-            variants = prog_x.run(["teeth"])["teeth"]["variants"]
-        assert [r is None for _, r in variants] == [False] * 7 + [True]
+    with sarkp.mode("corrected"):
+        variants = prog_x.run(["teeth"])["teeth"]["variants"]
+    assert [r is None for _, r in variants] == [False] * 7 + [True]
 
 
 def test_fig87_identities_of_the_printed_cells():
@@ -347,7 +342,6 @@ def test_fig87_identities_of_the_printed_cells():
         assert abs(half - p[("DGMZVN", h)]) <= 0.5e-4 + 1e-9
 
 
-@NO_GEARS
 def test_fig87_sa1_is_on_its_rounding_edge():
     """E-FIG87-3: SA1 of the internal mesh, for any DA1 within the printed 157.2092's
     interval, straddles the rounding edge of the printed 2.4346 (x of the gear 51 from
@@ -367,7 +361,6 @@ def test_fig87_sa1_is_on_its_rounding_edge():
     assert lo < p[("DGMZVN", "SA1")] - 0.5e-4 < hi
 
 
-@NO_GEARS
 def test_fig87_internal_mesh_cells_are_what_the_es_evm_computed():
     """E-FIG87-3: DGMZVN run statement by statement in the ES EVM's REAL*4
     (prog_vi_7.emulate, independent of sarkp's Fortran) with program X's call gives the
@@ -403,10 +396,65 @@ def test_fig94_ocr_fixes_from_the_printed_columns():
 
 # ---- corrected mode: the design the task card asks for ---------------------------------------
 
+def checks(done):
+    """The task card's measures of a run (x_report.design) and its physical checks:
+    the accelerations against central differences of the velocities over a fine sweep,
+    and the moment M1 against the virtual work of the loads (relative to each quantity's
+    largest value)."""
+    from sarkp.book import x_report
+    out = x_report.design(done)
+    W1, G = prog_x.W1, prog_x.G
+    if "kinematics" in done:
+        links = done["synthesis"]
+        fine = np.linspace(0.0, 2.0 * math.pi, 3601)
+        k = prog_x.kinematics(links, fine)
+        h = 1e-5
+        plus, minus = prog_x.kinematics(links, fine + h), prog_x.kinematics(links, fine - h)
+
+        def rel(a, b):
+            return float(np.max(np.abs(a - b)) / np.max(np.abs(b)))
+
+        def vex(t):
+            return t["VE"] * np.cos(t["ALE"])
+
+        def aex(t):
+            return t["AE"] * np.cos(t["BE"])
+        out["E2_vs_dW2/dt"] = rel(k["E2"], W1 * (plus["W2"] - minus["W2"]) / (2 * h))
+        out["E3_vs_dW3/dt"] = rel(k["E3"], W1 * (plus["W3"] - minus["W3"]) / (2 * h))
+        out["E4_vs_dW4/dt"] = rel(k["E4"], W1 * (plus["W4"] - minus["W4"]) / (2 * h))
+        out["AE_vs_dVE/dt"] = rel(aex(k), W1 * (vex(plus) - vex(minus)) / (2 * h))
+    if "forces" in done:
+        # virtual work (no inertia loads): the moment M1 of link 2's force on the crank
+        # about O times omega1 is the power of the loads, FS on 5 and the weights of 2-5;
+        # the points' velocities as central differences of their positions
+        links = done["synthesis"]
+        fine = np.linspace(0.0, 2.0 * math.pi, 721)[:-1]
+        h = 1e-6
+        k, kp, km = (prog_x.kinematics(links, fine + d) for d in (0.0, h, -h))
+        fo = prog_x.forces(links, k)
+        m = prog_x.masses(links)
+        pi = sarkp.modes.book_pi()
+
+        def centres(t):
+            c3 = (t["XC"] + 0.15 * links["RCD"] * np.cos(t["FICB"] + pi),
+                  t["YC"] + 0.15 * links["RCD"] * np.sin(t["FICB"] + pi))
+            s4y = t["YD"] + 0.3 * links["RDE"] * np.sin(t["FIDE"])
+            s2y = t["YA"] + 0.5 * links["RAB"] * np.sin(t["FI2"])
+            return t["XE"], s2y, c3[1], s4y
+        (xe_p, s2_p, s3_p, s4_p), (xe_m, s2_m, s3_m, s4_m) = centres(kp), centres(km)
+        rate = W1 / (2.0 * h)
+        power = (-fo["FS"] * (xe_p - xe_m) * rate
+                 - G * (m["M2"] * (s2_p - s2_m) + m["M3"] * (s3_p - s3_m)
+                        + m["M4"] * (s4_p - s4_m)) * rate)      # slider 5 moves level
+        out["virtual_work"] = float(np.max(np.abs(fo["M1"] * W1 - power))
+                                    / np.max(np.abs(power)))
+    return out
+
+
 def test_corrected_design_meets_the_task_card():
     with sarkp.mode("corrected"):
         done = prog_x.run(["synthesis", "cam", "kinematics"])
-        c = prog_x.checks(done)
+        c = checks(done)
     s = done["synthesis"]
     # E-X-FICD1-1: with CD at FICD1 to the guide the slider is at the card's x_E = 0.82
     ficd1 = s["FICD1"]
@@ -428,11 +476,9 @@ def test_corrected_design_meets_the_task_card():
 def test_corrected_forces_and_flywheel():
     """Virtual work: M1 w1 is the loads' power; the flywheel for the card's delta = 0.02
     gives it (E-X-DELTA-1); without it the machine stalls (E-DZKNDV-2)."""
-    if not prog_x.available("dynamics"):
-        pytest.skip("chapters 7-8 not in this build")
     with sarkp.mode("corrected"):
         done = prog_x.run(["dynamics"])
-        c = prog_x.checks(done)
+        c = checks(done)
     assert c["virtual_work"] < 1e-6
     d = done["dynamics"]
     assert d["DELTA"] == 0.02 and d["STALLS"] and np.isnan(d["WPR"]).all()
@@ -442,7 +488,7 @@ def test_corrected_forces_and_flywheel():
 def test_the_book_run_fails_the_task_card():
     with sarkp.as_printed():
         done = prog_x.run(["synthesis", "kinematics"])
-        c = prog_x.checks(done)
+        c = checks(done)
     xe = columns("91")["XE"]                 # the printed 10-degree table brackets it
     assert xe.max() - xe.min() - 1e-4 <= c["stroke"] <= xe.max() - xe.min() + 2e-3 < 0.3
     assert abs(c["K_realized"] - 1.1) > 0.03
@@ -480,17 +526,6 @@ def test_stage_alone_prints_only_that_stage():
     assert "РАЗМЕРЫ" not in kin and kin.count("\n") > 111
 
 
-def test_stage_with_an_upstream_stage_that_cannot_run(monkeypatch):
-    monkeypatch.delattr(sarkp, "DPRM1")
-    with pytest.raises(prog_x.StageError, match="stage 'kinematics'.*DPRM1"):
-        prog_x.run(["kinematics"])
-    monkeypatch.undo()
-    monkeypatch.delattr(sarkp, "DSNTZ1")
-    with pytest.raises(sarkp.SarkpError,
-                       match="stage 'kinematics'.*stage 'synthesis'.*DSNTZ1"):
-        prog_x.render("kinematics")
-
-
 def test_task_card_without_a_mechanism(monkeypatch):
     monkeypatch.setattr(prog_x, "X5", (0.82, 0.82, 0.82))
     with pytest.raises(sarkp.SarkpError, match="stage 'synthesis'.*DSNTZR"):
@@ -502,6 +537,22 @@ def test_cli_stage(capsys):
     out = capsys.readouterr().out
     assert out.startswith(" РАЗМЕРЫ ЗВЕНЬЕВ МАНИПУЛЯТОРА")
     assert "RCD =   0.579 RDE =   0.701 FICD =   0.000" in out
+
+
+def test_cli_run_in_the_es_evm_arithmetic(capsys):
+    """``sarkp book run X --arithmetic es-evm``: the kinematics, forces and dynamics
+    printed from x_arithmetic's ES EVM run (the printed Fig. 91's first row, and rows the
+    ES EVM reproduces where double does not)."""
+    from sarkp.book import x_arithmetic
+    assert main(["book", "run", "X", "--arithmetic", "es-evm", "--stage", "kinematics"]) == 0
+    out = capsys.readouterr().out
+    es = x_arithmetic.run("es-evm")["kinematics"]
+    with sarkp.as_printed():
+        double = prog_x.run(["kinematics"])["kinematics"]
+    assert prog_x.RENDER["kinematics"](es) == out.rstrip("\n")
+    assert prog_x.RENDER["kinematics"](double) != out.rstrip("\n")
+    assert main(["book", "run", "X", "--arithmetic", "es-evm", "--mode", "corrected"]) == 2
+    assert "as-printed mode only" in capsys.readouterr().err
 
 
 @pytest.mark.parametrize("args, message, status", [

@@ -1,9 +1,11 @@
 """The ``sarkp`` command line (also ``python -m sarkp``).
 
     sarkp book list                       the reproduced programs and figures
-    sarkp book run PROGRAM [--mode M] [--plots DIR] [--stage S]
+    sarkp book run PROGRAM [--mode M] [--plots DIR] [--stage S] [--arithmetic A]
                                           a program's printout, in the book's layout
-                                          (--stage: one stage of program X alone)
+                                          (--stage: one stage of program X alone;
+                                          --arithmetic es-evm|ieee-single: program X's
+                                          chain in the ES EVM's REAL*4 or IEEE single)
     sarkp book diff FIG|all [--mode M]    compare a reproduction with the printed figure
                                           (all: ends with a summary table, every cell
                                           reproduced, fitted, reproduced under a named
@@ -96,6 +98,11 @@ def _main(argv=None) -> int:
     run.add_argument("--stage", metavar="STAGE",
                      help="program X only: run one stage alone (synthesis, teeth, gears, "
                           "cam, kinematics, forces, dynamics)")
+    run.add_argument("--arithmetic", choices=("double", "es-evm", "ieee-single"),
+                     default="double",
+                     help="program X only, as printed: run kinematics, forces and "
+                          "dynamics statement by statement in the ES EVM's REAL*4 or IEEE "
+                          "single (default: sarkp's double precision)")
     run.add_argument("--printed", action="store_true",
                      help="the book's main program compiled as printed (sarkp.printed)")
     run.add_argument("--plots", metavar="DIR",
@@ -151,9 +158,15 @@ def _main(argv=None) -> int:
             raise UsageError(f"--stage {args.stage!r}: " + (
                 f"program {args.program} has the stages {', '.join(stages)}" if stages
                 else f"program {args.program} has no stages"))
+        if args.arithmetic != "double" and (not stages or args.mode != "as-printed"):
+            raise UsageError(f"--arithmetic {args.arithmetic}: program X in as-printed mode "
+                             f"only (the emulation of the printed run)")
         with modes.mode(args.mode):
             try:
-                text = prog.render(args.stage) if stages else prog.render()
+                if args.arithmetic != "double":
+                    text = prog.render(args.stage, arithmetic=args.arithmetic)
+                else:
+                    text = prog.render(args.stage) if stages else prog.render()
             except SarkpError as exc:       # a stage that cannot run: nothing printed
                 print(f"sarkp: error: {exc}", file=sys.stderr)
                 return 1
