@@ -293,3 +293,25 @@ def test_readme_arithmetic_table_is_current():
     assert text[start:end].strip() == table
     misses = re.findall(r"\(([+-]\d\.\d\d)\)", table)
     assert misses and all(0.5 < abs(float(u)) < 0.6 for u in misses)
+
+
+def test_fig44_rejected_run_is_the_listings_E_FIG44_1():
+    """E-FIG44-1: sarkp refuses run 4 (AW = 110: pointed teeth); the listing's formulas
+    (6.12), (6.14) give the dump's ALFAW, XS, X1, X2 to the printed digit, and the printed
+    cells agree with each other: XS = X1 + X2."""
+    from sarkp.book import prog_vi_3
+    with pytest.raises(sarkp.RequirementError):
+        sarkp.DKRKT(4.0, 13.0, 34.0, 110.0, 0)
+    cells = {(c.row, c.column): c for c in figures.load_figure("44").cells}
+    got = prog_vi_3.rejected_run()
+    for column, name in (("ALFAW/55", "ALFAW"), ("XS", "XS"), ("X1/55", "X1"),
+                         ("X2/55", "X2")):
+        cell = cells[("4", column)]
+        assert abs(got[name] - cell.value) <= 0.5 * cell.unit, column
+    assert abs(cells[("4", "X1/55")].value + cells[("4", "X2/55")].value
+               - cells[("4", "XS")].value) < 1e-9
+    _, comparisons = diff("44", "as-printed")
+    shown = [(c.cell.row, c.cell.column) for c, kind, _ in
+             figures.classify(comparisons, book.figure_evidence("44"))
+             if kind == figures.CAUSE_SHOWN]
+    assert sorted(shown) == [("4", "ALFAW/55"), ("4", "X1/55"), ("4", "X2/55"), ("4", "XS")]

@@ -379,6 +379,41 @@ def test_fig87_internal_mesh_cells_are_what_the_es_evm_computed():
         assert abs(emulated[("X", name)] - cell.cell.value) <= 0.5 * cell.cell.unit
 
 
+def test_fig87_dgmzpc_cells_are_not_what_the_es_evm_gives_E_FIG87_2():
+    """E-FIG87-2: DGMZPC run statement by statement in the ES EVM's REAL*4
+    (prog_vi_6.emulate, program X's call) gives AW = 106.497101, -0.92 units from the
+    printed 106.4972: the machine's arithmetic as emulated does not reproduce AW, XU, XUR,
+    and the diff says "no cause shown" for them."""
+    p = printed("87")
+    with sarkp.as_printed():
+        emulated = book.figure_evidence("87").arithmetics["ES EVM"]
+    assert abs(emulated[("DGMZPC", "AW")] - 106.497101) < 5e-7
+    assert abs(emulated[("DGMZPC", "AW")] - p[("DGMZPC", "AW")]) > 0.5e-4
+    got = classes("87")
+    assert {c.cell.column for c, _ in got[figures.NO_CAUSE] if c.cell.row == "DGMZPC"} == {
+        "AW", "XU", "XUR"}
+
+
+def test_fig91_slider_is_on_the_guide_E_X_DPRM2_1():
+    """E-X-DPRM2-1: the 13-argument DPRM2 call (L7512) is read as the guide y = H5 + YC
+    (K = (0, H5 + YC), FIM = 0, RZ2 = RDE): the printed FICB and FIDE of every row of
+    Fig. 91 satisfy RDE sin(FIDE) = H5 + YC - YD, YD = YC + RCD sin(FICB + PI).  The
+    printed angles are known to half a unit (0.5e-4 rad): the identity's residual in FIDE
+    is bounded by 0.5e-4 (FIDE) + 0.5e-4 RCD |cos FICB| / (RDE cos FIDE) (FICB), and the
+    lengths' uncertainty (E-X-LINKS-1, < 5e-6 m) adds less than 1e-5 rad."""
+    c = columns("91")
+    links = prog_x.FITTED_LINKS
+    rcd, rde = links["RCD"], links["RDE"]
+    yc = links["ROC"] * math.cos(prog_x.DELTA)
+    yd = yc + rcd * np.sin(c["FICB"] + 3.14159)
+    fide = np.arcsin((prog_x.H5 + yc - yd) / rde)
+    bound = (0.5e-4 + 0.5e-4 * rcd * np.abs(np.cos(c["FICB"])) / (rde * np.cos(c["FIDE"]))
+             + 1e-5)
+    assert np.all(np.abs(fide - c["FIDE"]) <= bound)
+    # the call as written (XK = 0, YK = 0, FIM = H5 + YC, RZ2 = 0) has no link DE
+    assert sarkp.listing("X").count("CALL DPRM2(XD, YD, 0.0, 0.0, H5 + YC, 0.0, RDE,") == 1
+
+
 def test_fig94_ocr_fixes_from_the_printed_columns():
     """E-FIG94-5: cos(G45) = FS/F45 (the guide holds 5 vertically); E-FIG94-6:
     M1 = ROA F21 sin(G21 - FI1) with the printed M1, F21 of the row."""

@@ -57,14 +57,18 @@ def _duginv(invx, xnach, tchnst):
         x = x1
 
 
-def emulate() -> dict:
+def emulate(calls=None) -> dict:
     """DGMZPC (L4420-4443, with E-DGMZPC-1, -2) statement by statement in the ES EVM's
     truncating hexadecimal REAL*4, left to right as written; library functions are the
     exact values truncated.  Independent of sarkp's Fortran: the evidence for E-FIG47-1.
-    Returns ``{(row, name): value}`` keyed as :func:`cells`."""
+    Returns ``{(row, name): value}`` keyed as :func:`cells`; ``calls`` ({row: (M, Z1, Z2,
+    BETA, X1, X2, BW)}, BETA None for 16 degrees) replaces the figure's calls (program X
+    uses it for Fig. 87)."""
     out = {}
-    for row, call in {"a": (5.0, 11.0, 26.0, 0.0, 0.5, 0.5, 30.0),
-                      "b": (7.0, 18.0, 60.0, None, 0.0, 0.0, 100.0)}.items():
+    if calls is None:
+        calls = {"a": (5.0, 11.0, 26.0, 0.0, 0.5, 0.5, 30.0),
+                 "b": (7.0, 18.0, 60.0, None, 0.0, 0.0, 100.0)}
+    for row, call in calls.items():
         pi = _R4(3.14159)
         m, z1, z2, beta, x1, x2, bw = (_R4(v) if v is not None else None for v in call)
         if beta is None:

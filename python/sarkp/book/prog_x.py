@@ -647,15 +647,23 @@ def evidence(number: str):
 
 
 def _gears_es_evm() -> dict:
-    """Fig. 87's DGMZVN block as the ES EVM computed it (prog_vi_7.emulate with program
-    X's call; X1 from as-printed DKRKT)."""
+    """Fig. 87's DGMZPC and DGMZVN blocks as the ES EVM computed them (prog_vi_6.emulate,
+    prog_vi_7.emulate with program X's calls; the shifts from as-printed DKRKT)."""
     from .. import as_printed
-    from . import prog_vi_7
+    from . import prog_vi_6, prog_vi_7
     with as_printed():
         x = sarkp.DKRKT(**GEAR_CALLS["DKRKT"]).X2
     call = dict(GEAR_CALLS["DGMZVN"], X1=x)
     inputs = tuple(call[n] for n in sarkp.DGMZVN.spec.inputs if n != "AAA")
-    return {("DGMZVN", name): v for (_, name), v in prog_vi_7.emulate({"X": inputs}).items()}
+    out = {("DGMZVN", name): v for (_, name), v in prog_vi_7.emulate({"X": inputs}).items()}
+    pc = GEAR_CALLS["DGMZPC"]
+    with as_printed():
+        k = sarkp.DKRKT(**GEAR_CALLS["DKRKT"])
+    call = (pc["M"], pc["Z1"], pc["Z2"], pc["BETA"], k.X1, k.X2, pc["BW"])
+    rename = {"ALFAW": "ALFA", "XY": "XU"}               # the printed names
+    out.update((("DGMZPC", rename.get(name, name)), v)
+               for (_, name), v in prog_vi_6.emulate({"X": call}).items())
+    return out
 
 
 def _cam_law_cells(law: dict) -> dict:
