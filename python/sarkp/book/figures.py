@@ -7,7 +7,8 @@ A figure is a CSV file in ``sarkp/book/data`` named ``fig<N>.csv``: ``#`` lines 
 
 ``printed`` is the value as printed with OCR errors corrected (``ocr`` then holds what
 the OCR read), ``decimals`` the digits printed after the point, ``errata`` the ids of
-docs/ERRATA.md that explain the cell, ``reproducible`` = ``no`` where the printed
+docs/ERRATA.md that discuss the cell (an id alone explains nothing: :func:`classify` says
+what is shown), ``reproducible`` = ``no`` where the printed
 program computed the cell wrongly in a way no run can repeat, ``magnitude`` where only
 its absolute value is reproducible (its sign came from what no run can repeat; the cell's
 ``errata`` say why): the diff then compares magnitudes and says so.
