@@ -79,14 +79,15 @@ def test_the_fit_reaches_the_audited_minimax():
     """E-X-LINKS-1: an independent audit's minimax fit of the five lengths (Fig. 91's
     cells less the five of E-FIG91-9/-10) reached a worst cell of 0.544 units with
     683/539/351 cells of Figs. 91/94/96 within half a unit; the shipped fit must do as
-    well (at least those counts; the fitted cells' worst within 0.55 units)."""
+    well: at least those counts, and a worst fitted cell no larger than the audit's 0.544
+    (given to three decimals: 0.5445)."""
     for number, least in (("91", 683), ("94", 539), ("96", 351)):
         _, comparisons = diff(number)
         assert sum(c.matches for c in comparisons if c.cell.reproducible) >= least
     fitted = {(c.row, c.column) for c in prog_x.fitted_cells()}
     _, comparisons = diff("91")
     worst = max(abs(c.units) for c in comparisons if (c.cell.row, c.cell.column) in fitted)
-    assert worst <= 0.55
+    assert worst <= 0.5445
 
 
 def test_fit_script_gives_the_fitted_links():
