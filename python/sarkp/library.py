@@ -34,7 +34,6 @@ import os
 import re
 import sys
 import warnings
-from collections import namedtuple
 from typing import Callable, Mapping, Sequence
 
 import numpy as np
@@ -43,6 +42,7 @@ from . import _sarkp
 from .errors import (AssemblyError, RangeError, RequirementError, SignificanceWarning,
                      SingularError, Status)
 from .modes import MODE_CODE
+from .results import result_type
 
 ST_OK = int(Status.OK)
 ST_ASSEMBLY = int(Status.ASSEMBLY)
@@ -223,8 +223,8 @@ class Routine:
         self._python_checked = {a for a in self.integers if _kind(self, a) == 0}
         if self.report is not None and self._aaa_index is None:
             raise TypeError(f"{name}: a report needs the print flag AAA among the inputs")
-        self.result = namedtuple(name, self.outputs)
-        self.result_with_status = namedtuple(name + "_status", self.outputs + ("status",))
+        self.result = result_type(name, self.outputs)
+        self.result_with_status = result_type(name, self.outputs + ("status",))
 
     # -- the declaration against the Fortran signature ----------------------------------
     def _bind_fortran(self):
@@ -385,8 +385,9 @@ class Routine:
 
     def _settle_scalar(self, status, out, check, on_error):
         if status == ST_SIGNIFICANCE or status > ST_DIGITS:
-            warnings.warn(f"{self.name}: {_significance_message(self.messages, status)}",
-                          SignificanceWarning, stacklevel=_caller_stacklevel())
+            warnings.warn(SignificanceWarning(
+                f"{self.name}: {_significance_message(self.messages, status)}",
+                digits=_digits(status)), stacklevel=_caller_stacklevel())
             return out
         if on_error == "raise":
             message = check.message if check is not None else None
@@ -654,6 +655,11 @@ def _status_code(status):
     return int(status) // 10 if 10 <= status < 100 else int(status)
 
 
+def _digits(status):
+    """The significant digits left by a Fortran status 100 + d, or None (GELG IER > 0)."""
+    return int(status) - ST_DIGITS if status > ST_DIGITS else None
+
+
 def _significance_message(messages, status):
     if status > ST_DIGITS:
         d = int(status) - ST_DIGITS
@@ -670,7 +676,8 @@ def status_error(name, status, index, messages, message=None):
     if message is None:
         message = messages.get(status) or messages.get(code) or \
             _DEFAULT_MESSAGES.get(code, f"status {status}")
-    return _ERRORS.get(code, SingularError)(f"{name}{where}: {message}")
+    return _ERRORS.get(code, SingularError)(f"{name}{where}: {message}",
+                                            status=code, index=index)
 
 
 def settle_arrays(name, out, status, on_error, messages, message_at=None):
@@ -696,8 +703,10 @@ def settle_arrays(name, out, status, on_error, messages, message_at=None):
         idx = _first_index(lost, status.shape)
         digits = status[status > ST_DIGITS]
         worst = int(digits.min()) if digits.size else ST_SIGNIFICANCE
-        warnings.warn(f"{name}: {_significance_message(messages, worst)} (first at index "
-                      f"{list(idx)})", SignificanceWarning, stacklevel=_caller_stacklevel())
+        warnings.warn(SignificanceWarning(
+            f"{name}: {_significance_message(messages, worst)} (first at index "
+            f"{list(idx)})", digits=_digits(worst), index=idx),
+            stacklevel=_caller_stacklevel())
         status = np.where(status > ST_DIGITS, ST_SIGNIFICANCE, status).astype(np.int32)
     reason = (status >= 10) & (status < 100)             # 10 c + k: code c
     if reason.any():
