@@ -171,6 +171,37 @@ def test_fig87_sa_is_a_misprint_E_FIG87_1():
     assert shown == [("DGMTZK1", "SA")]
 
 
+def test_lengths_within_their_uncertainty_show_the_cause_E_X_LINKS_1():
+    """A cell of Figs. 94, 96 classified "cause shown" by the lengths' uncertainty: the
+    lengths applied lie within one standard uncertainty of the fitted ones (each length
+    within its own: a necessary condition of the Mahalanobis distance <= 1 the cause
+    requires), and program X's chain rerun here with them puts the cell within half a
+    unit of its print."""
+    sigma = prog_x.FITTED_UNCERTAINTY
+    found = 0
+    for number, stage in (("94", "forces"), ("96", "dynamics")):
+        figure = figures.load_figure(number)
+        got = classes(number)
+        for c, why in got.get(figures.CAUSE_SHOWN, []):
+            with sarkp.as_printed():
+                cause = book.figure_evidence(number).causes[(c.cell.row, c.cell.column)]
+                assert cause.errata == "E-X-LINKS-1" and cause.applied
+                for name, value in cause.applied.items():
+                    # sigma is stored to two digits: at most 0.05e-6 of 1.1e-6, 4.5%
+                    assert abs(value - prog_x.FITTED_LINKS[name]) <= sigma[name] * 1.046, name
+                s = prog_x.synthesis()
+                s.update(cause.applied)
+                s["RCB"] = s["RCD"]
+                k = prog_x.kinematics(s)
+                f = prog_x.forces(s, k)
+                r = f if stage == "forces" else prog_x.dynamics(s, k, f)
+            value = prog_x.stage_cells(stage, r)[(c.cell.row, c.cell.column)]
+            assert abs(value - c.cell.value) <= 0.5 * c.cell.unit
+            assert figure.number == number
+            found += 1
+    assert found >= 1
+
+
 def test_cli_diff_classifies_every_cell(capsys):
     for number in ("84", "89", "91", "94", "96"):
         main(["book", "diff", number])

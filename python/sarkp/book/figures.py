@@ -189,6 +189,7 @@ class Cause:
     how: str
     moved: float | None = None
     misprint: tuple | None = None
+    applied: dict | None = None       # the inputs the cause was applied with, if any
 
     def shown(self, comparison: Comparison) -> bool:
         cell = comparison.cell

@@ -642,7 +642,13 @@ def evidence(number: str):
         arithmetics = {"ES EVM, SIN rounded": _cam_law_cells(cam_law(sin_rounds=True))}
     fitted = frozenset((c.row, c.column) for c in fitted_cells()) if number == "91" else \
         frozenset()
-    return Evidence(fitted=fitted, arithmetics=arithmetics, causes=causes(number),
+    shown = causes(number)
+    if number in x_arithmetic.FIGURES:               # the fitted lengths' uncertainty
+        from .figures import compare, load_figure
+        from .x_causes import length_causes
+        figure = load_figure(number)
+        shown.update(length_causes({number: compare(figure, figure_cells(number))})[number])
+    return Evidence(fitted=fitted, arithmetics=arithmetics, causes=shown,
                     fit="scripts/fit_x_links.py, prog_x.FITTED_LINKS" if fitted else "")
 
 
