@@ -1,5 +1,5 @@
 """Random inputs and routine-independent invariants for the routines of chapters 2-4, 7
-and 8 and four of chapter 6 (ROUTINES lists them), shared by tests/test_fuzz.py
+and 8, three of chapter 5 and four of chapter 6 (ROUTINES lists them), shared by tests/test_fuzz.py
 (Hypothesis, bounded) and benchmarks/fuzz.py (the long campaign).  Each section states
 its ranges; the paragraph below is chapters 2-4's.
 
@@ -1698,4 +1698,150 @@ def chk_dmhvk(args, out, bound):
 
 
 for _name in ("DZKNDV", "DMHVK"):
+    _register(_name, globals()["gen_" + _name.lower()], globals()["chk_" + _name.lower()])
+
+
+# ------------------------------------------------------------------ chapter 5 cams
+# A cycle of 5 to 60 cam angles (any order), a harmonic rise and return of the follower
+# (its displacement, velocity W s' and acceleration W^2 s'' exact for the angles), the
+# cam at W of 0.1 to 1e3.  The invariants, in the cam's frame P(FI) = Rot(-FI) T, T the
+# follower's point in the fixed frame: P turned back by FI is T; the pressure angle is
+# the angle between the profile's normal (normal to P', by the chain rule from s', or
+# psi') and the follower point's velocity; the radius of curvature is |P'|^3/(P' x P''),
+# positive where the profile turns towards the cam centre (convex); sarkp's extensions
+# ALFMAX/NOVER and ROKMIN/NCONC from those.
+
+def cycle(rng, amplitude):
+    """Cam angles and the follower's s, s', s'' = amplitude (1 - cos(k FI))/2 and its
+    derivatives, k = 1 or 2 (one or two rises per turn)."""
+    n = int(rng.integers(5, 61))
+    fi = np.sort(rng.uniform(0.0, 2 * PI, n)) if rng.random() < 0.5 else \
+        np.linspace(0.0, 2 * PI, n)
+    k = float(rng.integers(1, 3))
+    s = amplitude * (1 - np.cos(k * fi)) / 2
+    s1 = amplitude * k * np.sin(k * fi) / 2
+    s2 = amplitude * k * k * np.cos(k * fi) / 2
+    return n, fi, s, s1, s2
+
+
+def turned(fi, x, y):
+    """Rot(FI) (x, y): a point of the cam's frame in the fixed frame."""
+    return x * np.cos(fi) - y * np.sin(fi), x * np.sin(fi) + y * np.cos(fi)
+
+
+def curve_checks(fi, tx, ty, dtx, dty, d2tx, d2ty, out_x, out_y, r1, delta, radius, scale):
+    """The profile P = Rot(-FI) T against the outputs: the point, R1, DELTA, and the
+    radius of curvature from P' and P'' (T, T', T'' given in the fixed frame; the frame
+    turns, so P' = Rot(-FI) (T' - J T), P'' = Rot(-FI) (T'' - 2 J T' - T), J = +90 deg)."""
+    px, py = turned(-fi, tx, ty)
+    ax, ay = dtx + ty, dty - tx                     # T' - J T
+    bx, by = d2tx + 2 * dty - tx, d2ty - 2 * dtx - ty
+    d1x, d1y = turned(-fi, ax, ay)
+    d2x, d2y = turned(-fi, bx, by)
+    speed = np.hypot(d1x, d1y)
+    bend = d1x * d2y - d1y * d2x
+    turning = np.sign(px * d1y - py * d1x)          # the sense the profile goes round O
+    kappa = turning * bend / speed**3                # > 0: convex
+    v = [np.abs(out_x - px).max() / scale, np.abs(out_y - py).max() / scale,
+         np.abs(r1 - np.hypot(px, py)).max() / scale,
+         np.abs(np.sin(delta - np.arctan(px / py))).max()]
+    # curvature compared as 1/radius, relative to the curvature of a circle of R1
+    v.append(np.abs(1.0 / radius - kappa).max() * scale)
+    return v, (d1x, d1y), (px, py)
+
+
+def line_angle(u, v):
+    """The angle between the lines of vectors u and v, in [0, pi/2]."""
+    return np.arctan2(np.abs(u[0] * v[1] - u[1] * v[0]), np.abs(u[0] * v[0] + u[1] * v[1]))
+
+
+def gen_dprflp(rng):
+    h = length(rng, -2, 0)
+    n, fi, s, s1, s2 = cycle(rng, h)
+    w = length(rng, -1, 3)
+    ro = h * float(rng.uniform(1.5, 5.0))
+    return [n, ro, float(rng.uniform(-0.5, 0.5)) * ro, w, fi, s2 * w * w, s1 * w, s,
+            float(rng.uniform(0.1, 1.4))]
+
+
+def chk_dprflp(args, out, bound):
+    n, ro, e_, w, fi, a, v, s, ald = args
+    s1, s2 = v / w, a / w**2
+    c = ro + s
+    # the tip (e, RO + S) moves along the axis x = e: T' = (0, s'), T'' = (0, s'')
+    z = np.zeros_like(fi)
+    checks, d1, p = curve_checks(fi, e_ + z, c, z, s1, z, s2, out.XA, out.YA, out.R1,
+                                 out.DELTA, out.ROK, ro + abs(e_) + np.abs(s).max())
+    # the pressure angle: the profile's normal (in the fixed frame, Rot(FI) J P') against
+    # the axis (0, 1)
+    nx, ny = turned(fi, -d1[1], d1[0])
+    alfa = line_angle((nx, ny), (z, z + 1.0))
+    checks.append(np.abs(np.abs(out.ALFA) - alfa).max())
+    checks.append(abs(out.ALFMAX - np.abs(out.ALFA).max()))
+    checks.append(float(out.NOVER != np.count_nonzero(np.abs(out.ALFA) > ald)))
+    return worst(*checks) / 1e-9
+
+
+def gen_dprfpl(rng):
+    h = length(rng, -2, 0)
+    n, fi, s, s1, s2 = cycle(rng, h)
+    w = length(rng, -1, 3)
+    return [n, float(rng.uniform(0.05, 1.5)), w, fi, s2 * w * w, s1 * w, s]
+
+
+def chk_dprfpl(args, out, bound):
+    n, gamma, w, fi, a, v, s = args
+    s1, s2 = v / w, a / w**2
+    low = int(np.argmin(a))                          # the first smallest acceleration
+    rksh = abs(s2[low] / math.tan(gamma) + s[low])   # the convexity rule (5.4), as printed
+    c = rksh + s
+    # the contact point (s', RKSH + S) on the face y = RKSH + S: T' = (s'', s'),
+    # T'' = (s''', s''), s''' from the tables' law is not given: use the envelope
+    # instead -- the profile's tangent lies along the face (P' turned back has y = 0)
+    # and the radius of curvature of an envelope of lines is RKSH + S + s''
+    px, py = turned(-fi, s1, c)
+    tx, ty = turned(fi, out.XA, out.YA)
+    scale = rksh + np.abs(s).max() + np.abs(s1).max() + np.abs(s2).max()
+    checks = [abs(out.RKSH - rksh) / scale, np.abs(tx - s1).max() / scale,
+              np.abs(ty - c).max() / scale, np.abs(out.R1 - np.hypot(px, py)).max() / scale,
+              np.abs(np.sin(out.DELTA - np.arctan(px / py))).max(),
+              np.abs(out.ROK - (c + s2)).max() / scale,
+              abs(out.ROKMIN - np.min(out.ROK)) / scale,
+              float(out.NCONC != np.count_nonzero(out.ROK < -16 * 2.2e-16 * (
+                  rksh + np.abs(s).max() + np.abs(s2).max())))]
+    return worst(*checks) / 1e-9
+
+
+def gen_dprflk(rng):
+    amp = float(rng.uniform(0.05, 0.6))
+    n, fi, psi, p1, p2 = cycle(rng, amp)
+    w1 = length(rng, -1, 3)
+    big, r = length(rng, -2, 1), 0.0
+    r = big * float(rng.uniform(0.2, 0.8))
+    etao = float(rng.uniform(0.2, PI - 0.2 - amp))    # psi + ETAO within (0.2, pi - 0.2)
+    return [n, w1, etao, fi, big, big, r, p2 * w1 * w1, p1 * w1, psi,
+            float(rng.uniform(0.1, 1.4))]
+
+
+def chk_dprflk(args, out, bound):
+    n, w1, etao, fi, ro, big, r, e2, w2, psi, ald = args
+    p1, p2 = w2 / w1, e2 / w1**2
+    q = psi + etao
+    # the tip O2 + R (-cos q, sin q), O2 = (L, 0): T' = R (sin q, cos q) psi', T'' by psi''
+    tx, ty = big - r * np.cos(q), r * np.sin(q)
+    dtx, dty = r * np.sin(q) * p1, r * np.cos(q) * p1
+    d2tx = r * (np.cos(q) * p1**2 + np.sin(q) * p2)
+    d2ty = r * (-np.sin(q) * p1**2 + np.cos(q) * p2)
+    checks, d1, p = curve_checks(fi, tx, ty, dtx, dty, d2tx, d2ty, out.XA, out.YA, out.R1,
+                                 out.DELTA, out.RKRZVN, big + r)
+    # the pressure angle: the normal against the tip's velocity (normal to O2 -> tip)
+    nx, ny = turned(fi, -d1[1], d1[0])
+    alfa = line_angle((nx, ny), (np.sin(q), np.cos(q)))
+    checks.append(np.abs(np.abs(out.ALFA) - alfa).max())
+    checks.append(abs(out.ALFMAX - np.abs(out.ALFA).max()))
+    checks.append(float(out.NOVER != np.count_nonzero(np.abs(out.ALFA) > ald)))
+    return worst(*checks) / 1e-9
+
+
+for _name in ("DPRFLP", "DPRFPL", "DPRFLK"):
     _register(_name, globals()["gen_" + _name.lower()], globals()["chk_" + _name.lower()])
