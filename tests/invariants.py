@@ -1,5 +1,5 @@
 """Random inputs and routine-independent invariants for the routines of chapters 2-4, 7
-and 8, three of chapter 5 and four of chapter 6 (ROUTINES lists them), shared by tests/test_fuzz.py
+and 8, three of chapter 5 and six of chapter 6 (ROUTINES lists them), shared by tests/test_fuzz.py
 (Hypothesis, bounded) and benchmarks/fuzz.py (the long campaign).  Each section states
 its ranges; the paragraph below is chapters 2-4's.
 
@@ -1845,3 +1845,88 @@ def chk_dprflk(args, out, bound):
 
 for _name in ("DPRFLP", "DPRFPL", "DPRFLK"):
     _register(_name, globals()["gen_" + _name.lower()], globals()["chk_" + _name.lower()])
+
+
+def gen_dchrvc(rng):
+    m, q = length(rng, -1, 2), float(rng.uniform(6.0, 20.0))
+    z2 = float(rng.integers(20, 201))
+    aw = m * (z2 + q) / 2 + float(rng.uniform(-0.7, 0.7)) * m      # shift -0.7 .. 0.7
+    return [m, q, float(rng.choice([1.0, 2.0, 4.0])), z2, aw]
+
+
+def chk_dchrvc(args, out, bound):
+    """The worm's operating circle and the wheel's reference circle touch at AW; the lead
+    angles from the pitch m z1 over the diameters; Table 26's proportions."""
+    m, q, z1, z2, aw = args
+    x = out.X
+    want = {"D1": q * m, "D2": z2 * m, "DW1": 2 * aw - z2 * m, "H1": 2.2 * m, "HA1": m,
+            "DA1": q * m + 2 * m, "DA2": z2 * m + 2 * (1 + x) * m,
+            "DAM2": z2 * m + 2 * (1 + x) * m + 6 * m / (z1 + 2), "B1": (11 + 0.1 * z2) * m,
+            "B2": 0.75 * (q + 2) * m, "R": q * m / 2 - m}
+    v = [abs(getattr(out, k) - w) / (1e-13 * aw) for k, w in want.items()]
+    v.append(abs(math.tan(out.G) - z1 / q) / 1e-14)
+    v.append(abs(math.tan(out.GW) * out.DW1 - z1 * m) / (1e-13 * aw))
+    v.append(abs((out.DW1 + out.D2) / 2 - aw) / (1e-13 * aw))
+    v.append(abs(out.DW1 - (q + 2 * x) * m) / (1e-13 * aw))
+    return worst(*v)
+
+
+_register("DCHRVC", gen_dchrvc, chk_dchrvc)
+
+
+def _planetary(z1, l2, l3, t, k, scheme):
+    """The set of scheme 1 (1-2 external, 3-4 internal) or 2 (both external) with
+    z2 = L2 t, z3 = L3 t, coaxial, and its ratio i_1h = 1 -+ z2 z4/(z1 z3) (Willis, wheel
+    4 fixed) as P/Q in lowest terms; None if a condition of the text fails."""
+    z2, z3 = l2 * t, l3 * t
+    z4 = z1 + z2 + z3 if scheme == 1 else z1 + z2 - z3
+    sign = 1 if scheme == 1 else -1
+    num, den = z1 * z3 + sign * z2 * z4, z1 * z3
+    g = math.gcd(num, den)
+    p, q = num // g, den // g
+    ok = (min(z2, z3) >= 20 and (z4 >= 85 if scheme == 1 else z4 >= 20) and p != 0
+          and abs(p) <= 1000 and q <= 1000                              # DZBPL's ranges
+          and (z1 * p) % (k * q) == 0                                   # assembly (6.4)
+          and math.sin(PI / k) > (max(z2, z3) + 2) / (z1 + z2))          # neighbours (6.5)
+    return (z1, z2, z3, z4, p, q) if ok else None
+
+
+def gen_dzbpl(rng):
+    """A train that exists: scheme 1 or 2, k = 2..4 satellites, z2 : z3 = L2 : L3
+    coprime, z1 20..120; Z1MIN..Z1MAX around its z1 (the routine returns the first
+    admissible set in that range, which need not be this one)."""
+    for _ in range(40):
+        scheme = int(rng.integers(1, 3))
+        k = int(rng.integers(2, 5))
+        l2, l3 = int(rng.integers(1, 6)), int(rng.integers(1, 6))
+        if math.gcd(l2, l3) != 1 or (scheme == 2 and l2 == l3):
+            continue
+        t0 = -(-20 // min(l2, l3))                 # the least t with z2, z3 >= 20
+        t = int(rng.integers(t0, t0 + 10))
+        z1 = int(rng.integers(20, 121))
+        found = _planetary(z1, l2, l3, t, k, scheme)
+        if found:
+            z1, z2, z3, z4, p, q = found
+            return [k, p, q, l2, l3, max(8, z1 - int(rng.integers(0, 30))),
+                    z1 + int(rng.integers(0, 30)), scheme]
+    return [3, 4, 1, 1, 1, 20, 200, 1]        # i = 4 with z2 = z3 (Fig. 38a's kind)
+
+
+def chk_dzbpl(args, out, bound):
+    k, p, q, l2, l3, z1min, z1max, scheme = args
+    z1, z2, z3, z4 = (int(round(v)) for v in out)
+    sign = 1 if scheme == 1 else -1
+    conditions = [
+        all(float(v).is_integer() for v in out),
+        z1min <= z1 <= z1max,
+        z2 * l3 == z3 * l2,                                             # z2 : z3 = L2 : L3
+        (z1 + z2 + z3 == z4) if scheme == 1 else (z1 + z2 == z4 + z3),  # coaxial (6.2)
+        p * z1 * z3 == q * (z1 * z3 + sign * z2 * z4),                   # the ratio
+        (z1 * p) % (k * q) == 0,                                         # assembly (6.4)
+        math.sin(PI / k) > (max(z2, z3) + 2) / (z1 + z2),                # neighbours (6.5)
+        min(z2, z3) >= 20 and (z4 >= 85 if scheme == 1 else z4 >= 20),
+        scheme != 1 or z4 - z3 >= 8]
+    return 0.0 if all(conditions) else math.inf
+
+
+_register("DZBPL", gen_dzbpl, chk_dzbpl)
