@@ -1,7 +1,6 @@
-"""Random inputs and routine-independent invariants for the routines of chapters 2-4, 7
-and 8, three of chapter 5 and six of chapter 6 (ROUTINES lists them), shared by tests/test_fuzz.py
-(Hypothesis, bounded) and benchmarks/fuzz.py (the long campaign).  Each section states
-its ranges; the paragraph below is chapters 2-4's.
+"""Random inputs and routine-independent invariants for every book routine, chapters 2-8,
+shared by tests/test_fuzz.py (Hypothesis, bounded) and benchmarks/fuzz.py (the long
+campaign).  Each section states its ranges; the paragraph below is chapters 2-4's.
 
 ``CASES[name] = (generate, check)``: ``generate(rng)`` draws valid inputs over wide
 ranges (lengths from 1e-3 to 1e3, so link ratios up to 1e6; a third of the mechanisms
@@ -1930,3 +1929,102 @@ def chk_dzbpl(args, out, bound):
 
 
 _register("DZBPL", gen_dzbpl, chk_dzbpl)
+
+
+def gen_dklchk(rng):
+    """A harmonic rise (one or two per turn) on 13 to 60 equal steps and, half the time,
+    a rocker (INDEX = 2) with its centre distance and length.  ALD up to 0.6 rad keeps
+    the rule's RO > 0: at the sampled largest velocity (within pi/12 of the true one)
+    s'/tan(ALD) > s.  BETA keeps sin(ALD + BETA) > 0."""
+    index = int(rng.integers(1, 3))
+    h = length(rng, -2, 0) if index == 1 else float(rng.uniform(0.05, 0.6))
+    n = int(rng.integers(13, 61))
+    fi = np.linspace(0.0, 2 * PI, n)
+    k = float(rng.integers(1, 3))
+    s, s1, s2 = (h * (1 - np.cos(k * fi)) / 2, h * k * np.sin(k * fi) / 2,
+                 h * k * k * np.cos(k * fi) / 2)
+    w1 = length(rng, -1, 3)
+    ald = float(rng.uniform(0.1, 0.6))
+    beta = float(rng.uniform(-0.8 * ald, 0.5)) if index == 1 else 0.0
+    big = length(rng, -2, 1)
+    return [n, s, s1 * w1, s2 * w1 * w1, ald, beta, w1, big,
+            big * float(rng.uniform(0.2, 0.8)), index]
+
+
+def chk_dklchk(args, out, bound):
+    n, prm, vlst, akslrt, ald, beta, w1, rscntr, rzmr, index = args
+    k = int(np.argmax(vlst))                         # the first largest velocity
+    ifi, s = vlst[k] / w1, prm[k]
+    if index == 1:
+        # offset e = RO sin(BETA) and axial distance RO cos(BETA): the pressure angle at
+        # that point is ALD exactly, tan = (s' - e)/(RO cos(BETA) + s)
+        tan_alpha = (ifi - out.EXCST) / (out.RO * math.cos(beta) + s)
+        return worst(abs(tan_alpha - math.tan(ald)) / (1e-13 * (1 + math.tan(ald))),
+                     abs(out.EXCST - out.RO * math.sin(beta)) / (1e-15 * out.RO),
+                     0.0 if out.ETAO == 0.0 and out.RO > 0 else math.inf)
+    # the rocker: the book's initial angle, and RO the distance from the cam centre of
+    # the rocker's tip at that angle from the line of centres (law of cosines)
+    etao = ifi / math.tan(ald) - s
+    tip = np.array([rscntr - rzmr * math.cos(etao), rzmr * math.sin(etao)])
+    return worst(abs(out.ETAO - etao) / (1e-14 * (1 + abs(etao))),
+                 abs(out.RO - np.hypot(*tip)) / (1e-14 * (rscntr + rzmr)),
+                 0.0 if out.EXCST == 0.0 else math.inf)
+
+
+_register("DKLCHK", gen_dklchk, chk_dklchk)
+
+
+def gen_dgmzvn(rng):
+    """A pinion of 18-60 teeth in a wheel of 20-80 more, cut by a standard shaper of
+    18-40 teeth (DAO = m (ZO2 + 2.5), XO = 0), shifts 0 to 0.3 with X2 >= X1."""
+    m, z1 = length(rng, -1, 2), float(rng.integers(18, 61))
+    z2 = z1 + float(rng.integers(20, 81))
+    zo2 = float(rng.integers(18, 41))
+    x1 = float(rng.uniform(0.0, 0.3))
+    return [m, z1, z2, x1, float(rng.uniform(x1, 0.3)), zo2, m * zo2, 0.0, m * (zo2 + 2.5)]
+
+
+def chk_dgmzvn(args, out, bound):
+    """The mesh: A, XD, the involute equation of the internal mesh for ALFAW, AW, the
+    reference and operating pitch circles (their radii differ by AW, in the ratio of the
+    teeth), y and dy; then the teeth (_dgmzvn_teeth).  The tip and root diameters
+    themselves are not derived here (test_gears.py compares them with Fig. 48)."""
+    m, z1, z2, x1, x2, zo2, do, xo, dao = args
+    a = m * (z2 - z1) / 2
+    xd = x2 - x1
+    inv_w = inv(ALPHA) + 2 * xd * math.tan(ALPHA) / (z2 - z1)
+    aw = a * math.cos(ALPHA) / math.cos(out.ALFAW)
+    dw1, dw2 = 2 * aw * z1 / (z2 - z1), 2 * aw * z2 / (z2 - z1)
+    y = (aw - a) / m
+    d = m * z2
+    return worst(abs(inv(out.ALFAW) - inv_w) / (16 * U * (1 + inv_w) /
+                                                math.cos(out.ALFAW) ** 2),
+                 abs(out.A - a) / (1e-13 * d), abs(out.XD - xd) / 1e-13,
+                 abs(out.AW - aw) / (1e-12 * d), abs(out.D1 - m * z1) / (1e-13 * d),
+                 abs(out.D2 - d) / (1e-13 * d), abs(out.DW1 - dw1) / (1e-12 * d),
+                 abs(out.DW2 - dw2) / (1e-12 * d), abs(out.XY - y) / (1e-9 * (1 + abs(y))),
+                 abs(out.XUR - (xd - y)) / (1e-9 * (1 + abs(y))),
+                 *_dgmzvn_teeth(m, z1, z2, x1, x2, out))
+
+
+def _dgmzvn_teeth(m, z1, z2, x1, x2, out):
+    """Depths as tip-to-root; tip thicknesses from the involute, s_a = d_a (s/d -+ (inv
+    alpha - inv alpha_a)) with s = m (pi/2 +- 2 x tan alpha) (+ the pinion, - the
+    internal wheel); the contact ratio from the tip circles the routine gives."""
+    out_v = []
+    d1, d2 = m * z1, m * z2
+    aa1 = math.acos(d1 * math.cos(ALPHA) / out.DA1)
+    aa2 = math.acos(d2 * math.cos(ALPHA) / out.DA2)
+    s1 = m * (PI / 2 + 2 * x1 * math.tan(ALPHA))
+    s2 = m * (PI / 2 - 2 * x2 * math.tan(ALPHA))
+    sa1 = out.DA1 * (s1 / d1 + inv(ALPHA) - inv(aa1))
+    sa2 = out.DA2 * (s2 / d2 - inv(ALPHA) + inv(aa2))
+    eps = (z1 * math.tan(aa1) - z2 * math.tan(aa2) + (z2 - z1) * math.tan(out.ALFAW)) / (2 * PI)
+    for got, want in ((out.H1, (out.DA1 - out.DF1) / 2), (out.H2, (out.DF2 - out.DA2) / 2),
+                      (out.SA1, sa1), (out.SA2, sa2)):
+        out_v.append(abs(got - want) / (1e-12 * d2))
+    out_v.append(abs(out.EALFA - eps) / (1e-10 * eps))
+    return out_v
+
+
+_register("DGMZVN", gen_dgmzvn, chk_dgmzvn)
