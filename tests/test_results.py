@@ -203,3 +203,19 @@ def test_significance_warning_carries_digits():
         assert isinstance(w.digits, int) and 1 <= w.digits <= 7
         assert f"about {w.digits} significant digit" in str(w)
     assert scalar.index is None and array.index == (1,)
+
+
+def test_readme_section_runs(capsys):
+    """README.md's 'Results and errors as objects' example runs and prints what it says."""
+    import re
+    from pathlib import Path
+    text = (Path(__file__).resolve().parent.parent / "README.md").read_text()
+    section = text.split("## Results and errors as objects", 1)[1].split("\n## ", 1)[0]
+    code = re.search(r"```python\n(.*?)```", section, re.S).group(1)
+    namespace = {}
+    exec(compile(code, "README.md", "exec"), namespace)
+    printed = capsys.readouterr().out
+    assert printed.startswith("DPRM1(shape (361,),") and len(printed) < 600
+    assert namespace["frame"].shape == (361, 4)
+    assert namespace["same"].XB.tolist() == namespace["r"].XB.tolist()
+    assert printed.rstrip().endswith("1 (1,)")
