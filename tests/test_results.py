@@ -156,6 +156,10 @@ def test_result_type_is_reusable_and_cached():
     assert p.norm == 5.0 and repr(p) == "P(X=3.0, Y=4.0)"
     back = pickle.loads(pickle.dumps(p))
     assert type(back) is cls and back.norm == 5.0
+    class Local(cls):                       # not importable: unpickles as its result class
+        __slots__ = ()
+    back = pickle.loads(pickle.dumps(Local(6.0, 8.0)))
+    assert type(back) is cls and back.norm == 10.0
     with pytest.raises(ValueError, match="_x"):
         result_type("Q", ("_x",))
     with pytest.raises(TypeError):
