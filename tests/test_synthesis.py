@@ -351,10 +351,24 @@ def test_course_project_call_L7316():
     # Program X: CALL DSNTZR(X5, H5, FICD, FI5, 1.0, RCD, RDE, FICD1); Fig. 84 prints
     # RCD = 0.579, RDE = 0.701, FICD = -0.000.  The 8th result is Table 3 step 12; the
     # printed -0.000 is not reproduced (ERRATA E-DSNTZR-3).
+    lo, l3, fi1, fi3 = [0.82, 0.62, 0.42], 0.64, [0.0, 0.349, 0.698], [1.57] * 3
     with sarkp.as_printed():
-        r = DSNTZR([0.82, 0.62, 0.42], 0.64, [0.0, 0.349, 0.698], [1.57] * 3, 1.0)
+        r = DSNTZR(lo, l3, fi1, fi3, 1.0)
     assert (round(r.L1, 3), round(r.L2, 3)) == (0.579, 0.701)
-    assert r.FI11 == pytest.approx(1.3562568, abs=1e-7)
+    # Table 3 by hand: C_i in the crank's frame, B the centre of the circle through them,
+    # FI11 the direction of B from the crank pivot
+    pts = [(lo[i] * math.cos(fi1[0] - fi1[i]) + l3 * math.cos(fi3[i] + fi1[0] - fi1[i]),
+            lo[i] * math.sin(fi1[0] - fi1[i]) + l3 * math.sin(fi3[i] + fi1[0] - fi1[i]))
+           for i in range(3)]
+    (ax, ay), (bx, by), (cx, cy) = pts
+    d = 2 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by))
+    ux = ((ax**2 + ay**2) * (by - cy) + (bx**2 + by**2) * (cy - ay)
+          + (cx**2 + cy**2) * (ay - by)) / d
+    uy = ((ax**2 + ay**2) * (cx - bx) + (bx**2 + by**2) * (ax - cx)
+          + (cx**2 + cy**2) * (bx - ax)) / d
+    assert r.L1 == pytest.approx(math.hypot(ux, uy), rel=1e-12)
+    assert r.L2 == pytest.approx(math.hypot(ax - ux, ay - uy), rel=1e-12)
+    assert r.FI11 == pytest.approx(math.atan2(uy, ux), abs=1e-12)
 
 
 # ---- DSNTZR: three precision positions -----------------------------------------------
@@ -676,11 +690,15 @@ def test_dsntzk_rotating(kw3, s, h):
 
 
 def test_dsntzk_values_and_bad_input():
-    # no printed example; values of the listing (notes, REAL*4) in double precision
-    assert DSNTZK(1.5, 0.3, 0.05, 1.0)[:3] == pytest.approx(
-        (0.1027864, 0.3326238, 0.4854102), abs=1e-7)
-    assert DSNTZK(1.5, 0.3, 0.05, 0.0)[:3] == pytest.approx((0.0763932, 0.0236068, 0.15),
-                                                             abs=1e-7)
+    # no printed example; the closed forms of (3.3) with BETA = pi/2 (KW3 - 1)/(KW3 + 1)
+    # = pi/10: oscillating, L3 = S/(2 sin BETA), L1 = LO sin BETA, LO + L1 = L3 - H;
+    # rotating, L3 = S/2, LO = L1 sin BETA, L1 + LO = L3 - H
+    sb = math.sin(math.pi / 10)
+    l3 = 0.3 / (2 * sb)
+    lo = (l3 - 0.05) / (1 + sb)
+    assert DSNTZK(1.5, 0.3, 0.05, 1.0)[:3] == pytest.approx((lo * sb, lo, l3), rel=1e-14)
+    l1 = (0.15 - 0.05) / (1 + sb)
+    assert DSNTZK(1.5, 0.3, 0.05, 0.0)[:3] == pytest.approx((l1, l1 * sb, 0.15), rel=1e-14)
     with pytest.raises(RequirementError, match="KW3 <= 1"):
         DSNTZK(1.0, 0.3, 0.05, 1.0)
     with pytest.raises(RequirementError, match="reserve H"):
