@@ -223,3 +223,27 @@ def test_readme_section_runs(capsys):
     assert namespace["frame"].shape == (361, 4)
     assert namespace["same"].XB.tolist() == namespace["r"].XB.tolist()
     assert printed.rstrip().endswith("1 (1,)")
+
+
+def test_every_routine_result_pickles_and_converts():
+    """One valid call of each of the 62 routines (the fuzz generators of
+    tests/invariants.py, seed 0): the result pickles to equal values and converts to a
+    frame with a column per field and a row per position."""
+    from pathlib import Path
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    from invariants import CASES
+    pytest.importorskip("pandas")
+    for name, (gen, _) in CASES.items():
+        args = gen(np.random.default_rng(0))
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", sarkp.SignificanceWarning)
+            r = getattr(sarkp, name)(*args, on_error="nan")
+        back = pickle.loads(pickle.dumps(r))
+        assert type(back) is type(r) and back._fields == r._fields, name
+        for a, b in zip(r, back):
+            np.testing.assert_array_equal(a, b, err_msg=name)
+        frame = r.to_frame()
+        shape = np.broadcast_shapes(*(np.shape(v) for v in r))
+        assert list(frame.columns) == list(r._fields), name
+        assert len(frame) == max(1, math.prod(shape)), name
+        assert len(repr(r)) < 3000, name
