@@ -622,6 +622,22 @@ def test_cli_run_in_the_es_evm_arithmetic(capsys):
     assert "as-printed mode only" in capsys.readouterr().err
 
 
+def test_cli_diff_in_the_es_evm_arithmetic(capsys):
+    """``sarkp book diff 91 --arithmetic es-evm`` compares x_arithmetic's run cell by cell:
+    its count is the emulation's own (computed here from the same data)."""
+    from sarkp.book import x_arithmetic
+    for number in x_arithmetic.FIGURES:
+        main(["book", "diff", number, "--arithmetic", "es-evm"])
+        out = capsys.readouterr().out
+        figure = figures.load_figure(number)
+        comparisons = figures.compare(figure, x_arithmetic.figure_cells(number, "es-evm"))
+        done = [c for c in comparisons if c.cell.reproducible]
+        assert out.rstrip().endswith(f"{sum(c.matches for c in done)} of {len(done)} cells "
+                                     f"match")
+        assert "(es-evm)" in out
+    assert main(["book", "diff", "4", "--arithmetic", "es-evm"]) == 2
+
+
 @pytest.mark.parametrize("args, message, status", [
     (["book", "run", "X", "--stage", "gearbox"], "program X has the stages", 2),
     (["book", "run", "II.13", "--stage", "cam"], "program II.13 has no stages", 2),
