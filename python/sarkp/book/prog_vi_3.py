@@ -26,7 +26,7 @@ M, Z1, Z2 = 4.0, 13.0, 34.0
 #: (AW, SDVIG) of the five runs, in print order.
 RUNS = ((100.0, 0), (0.0, 1), (0.0, 3), (110.0, 0), (0.0, 2))
 #: the book's message number for sarkp's reasons (FORMATs 50, 51, 54 after labels 20-22)
-_MESSAGES = (("undercut", 50), ("pointed", 51), ("message 22", 54))
+_MESSAGES = (("undercut", 50), ("pointed", 51), ("no system of shifts", 54))
 CORRECTED_DIFFERENCES = {"ALFAW": "E-DUGINV-1 (corrected: the exact root)",
                          "ALFAW/55": "E-DUGINV-1 (corrected: the exact root)"}
 
@@ -38,7 +38,9 @@ def _run():
         try:
             yield inputs, DKRKT(M, Z1, Z2, aw, sdvig), 52
         except RequirementError as err:
-            fmt = next((f for word, f in _MESSAGES if word in str(err)), 54)
+            # the reason opens the message (what follows it may name the other limit)
+            reason = str(err).partition(": ")[2]
+            fmt = next((f for word, f in _MESSAGES if reason.startswith(word)), 54)
             yield inputs, None, fmt
 
 
