@@ -22,7 +22,6 @@ from sarkp.book import figures, prog_x
 from sarkp.cli import main
 
 
-
 def diff(number, mode="as-printed"):
     figure = figures.load_figure(number)
     with sarkp.mode(mode):
