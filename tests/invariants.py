@@ -1976,10 +1976,11 @@ _register("DKLCHK", gen_dklchk, chk_dklchk)
 
 def gen_dgmzvn(rng):
     """A pinion of 18-60 teeth in a wheel of 20-80 more, cut by a standard shaper of
-    18-40 teeth (DAO = m (ZO2 + 2.5), XO = 0), shifts 0 to 0.3 with X2 >= X1."""
+    18-40 teeth, 10 fewer than the wheel's at least (DAO = m (ZO2 + 2.5), XO = 0), shifts
+    0 to 0.3 with X2 >= X1."""
     m, z1 = length(rng, -1, 2), float(rng.integers(18, 61))
     z2 = z1 + float(rng.integers(20, 81))
-    zo2 = float(rng.integers(18, 41))
+    zo2 = float(rng.integers(18, min(41, int(z2) - 9)))      # 10 teeth fewer than z2 at least
     x1 = float(rng.uniform(0.0, 0.3))
     return [m, z1, z2, x1, float(rng.uniform(x1, 0.3)), zo2, m * zo2, 0.0, m * (zo2 + 2.5)]
 
