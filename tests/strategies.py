@@ -59,6 +59,8 @@ class DrawnRandom:
         outside the generators' claimed ranges (ratios up to 1e6) and are not drawn."""
         low, high = float(low), float(high)
         step = (high - low) / GRID
+        if not step > 0.0:                        # an empty or one-point interval
+            return self._many(lambda: low, size)
         if low <= 0.0 <= high:
             a, b = math.ceil(low / step), math.floor(high / step)
             return self._many(lambda: min(max(self._int(a, b) * step, low), high), size)

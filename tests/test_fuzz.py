@@ -86,3 +86,18 @@ def test_dknma4_slider_at_the_pivot():
 def test_every_book_routine_is_fuzzed():
     from sarkp.library import declared_routines
     assert sorted(ROUTINES) == sorted(declared_routines())
+
+
+@settings(max_examples=50, deadline=None)
+@given(data=st.data(), low=st.floats(-1e3, 1e3), width=st.floats(0.0, 1e3),
+       n=st.integers(1, 50))
+def test_drawn_random_keeps_numpy_ranges(data, low, width, n):
+    """The Hypothesis-backed generator keeps numpy's ranges: uniform in [low, high]
+    (numpy: [low, high)), integers in [low, high), choice among the options."""
+    rng = DrawnRandom.of(data.draw)
+    high = low + width
+    u = rng.uniform(low, high, 3)
+    assert u.shape == (3,) and np.all((low <= u) & (u <= high))
+    assert 0 <= rng.integers(n) < n and -n <= rng.integers(-n, n) < n
+    assert rng.choice(["a", "b"]) in ("a", "b") and 0.0 <= rng.random() <= 1.0
+    assert abs(rng.standard_normal()) <= 6.0
