@@ -38,12 +38,11 @@
 ! M_red = sum (F . v' + M w') over the external loads (no inertia).
 module mechanism
   use prmtr, only: dp, st_ok, st_assembly, st_singular, st_range, st_digits, norm2d
-  use numerics, only: uround, system2, factor2, solve2f, solve2e, tri_apex, apex_vectors, &
+  use numerics, only: uround, system2, cramer_set, cramer, solve2e, tri_apex, apex_vectors, &
                       unscale, angle_sensitivity, policy, failed
   implicit none
   private
   public :: mech_solve
-  real(dp), parameter :: twopi = 6.283185307179586476925287_dp
 
 contains
 
@@ -54,12 +53,12 @@ contains
   subroutine mech_solve(need, n, np, nl, ns, gi, gr, phi, omega, epsil, inc_w, inc_e, &
                         nm, mlink, mpoint, mval, gravity, &
                         nf, fpoint, flink, nfv, fval, nt, tlink, ntv, tval, &
-                        nsp, spp, spl, spv, npair, powner, lbase, x0, &
+                        nsp, spp, spl, spv, npair, powner, lbase, x0, nop, outp, nol, outl, &
                         nv, na, nr, pos, vel, acc, th, om, ep, react, mbal, jred, mred, &
                         status, fgroup)
     !f2py threadsafe
     integer, intent(in) :: need, n, np, nl, ns, nm, nf, nfv, nt, ntv, nsp, npair, nv, na, nr
-    integer, intent(in) :: inc_w, inc_e
+    integer, intent(in) :: inc_w, inc_e, nop, nol, outp(nop), outl(nol)
     integer, intent(in) :: gi(8, ns)
     real(dp), intent(in) :: gr(8, ns), phi(n), omega(*), epsil(*)
     integer, intent(in) :: powner(np), lbase(0:nl)
@@ -72,24 +71,21 @@ contains
     real(dp), intent(in) :: tval(nt, ntv)
     integer, intent(in) :: spp(2, nsp), spl(2, nsp)
     real(dp), intent(in) :: spv(2, nsp)
-    real(dp), intent(inout) :: pos(2, np, n), vel(2, np, nv), acc(2, np, na)
-    real(dp), intent(inout) :: th(0:nl, n), om(0:nl, nv), ep(0:nl, na)
+    real(dp), intent(inout) :: pos(2, nop, n), vel(2, nop, nv), acc(2, nop, na)
+    real(dp), intent(inout) :: th(2, nol, n), om(nol, nv), ep(nol, na)
     real(dp), intent(inout) :: react(3, npair, nr), mbal(nr), jred(nv), mred(nr)
     integer, intent(inout) :: status(n), fgroup(n)
     ! work arrays of one position (allocated once per call, none per group)
-    real(dp), allocatable :: x(:, :), v(:, :), a(:, :), c(:), s(:), w(:), e(:), prev(:)
+    real(dp), allocatable :: x(:, :), v(:, :), a(:, :), c(:), s(:), w(:), e(:)
     real(dp), allocatable :: fl(:, :), ml(:), aa(:, :), ee(:)
-    logical, allocatable :: seen(:)
     integer, allocatable :: gslot(:)
-    integer :: i, k, kind, st, worst, jf, jt, fg, g, pos_index
+    integer :: i, k, kind, st, worst, jf, jt, fg, g
     real(dp) :: est, maxest, wi, ei
 
-    allocate(x(2, np), v(2, np), a(2, np), c(0:nl), s(0:nl), w(0:nl), e(0:nl), prev(0:nl))
-    allocate(fl(2, 0:nl), ml(0:nl), aa(2, np), ee(0:nl), seen(0:nl))
+    allocate(x(2, np), v(2, np), a(2, np), c(0:nl), s(0:nl), w(0:nl), e(0:nl))
+    allocate(fl(2, 0:nl), ml(0:nl), aa(2, np), ee(0:nl))
     x = x0; v = 0.0_dp; a = 0.0_dp
-    c = 1.0_dp; s = 0.0_dp; w = 0.0_dp; e = 0.0_dp; prev = 0.0_dp
-    seen = .false.
-    seen(0) = .true.
+    c = 1.0_dp; s = 0.0_dp; w = 0.0_dp; e = 0.0_dp
     ! the reaction slots of the groups: 1 the crank's O, then three per group in order
     allocate(gslot(ns))
     g = 0
@@ -105,8 +101,6 @@ contains
       worst = st_ok
       fg = 0
       maxest = 0.0_dp
-      th(0, i) = 0.0_dp
-      pos_index = i
       do k = 1, ns
         kind = gi(1, k)
         call step(k, kind, i, st, est)
@@ -129,8 +123,9 @@ contains
         fgroup(i) = fg
         cycle
       end if
-      do k = 1, np
-        if (.not. (abs(x(1, k)) <= huge(1.0_dp) .and. abs(x(2, k)) <= huge(1.0_dp))) then
+      do k = 1, nop
+        if (.not. (abs(x(1, outp(k))) <= huge(1.0_dp) .and. &
+                   abs(x(2, outp(k))) <= huge(1.0_dp))) then
           worst = st_range
           fg = 0
         end if
@@ -138,41 +133,43 @@ contains
       status(i) = worst
       fgroup(i) = fg
       if (worst == st_range) cycle
-      pos(:, :, i) = x
+      ! the outputs: the moving points and links only (the caller knows the frame's)
+      pos(:, :, i) = x(:, outp)
+      th(1, :, i) = c(outl)
+      th(2, :, i) = s(outl)
       if (need >= 2) then
         wi = omega(1 + (i - 1)*inc_w)
-        vel(:, :, i) = v*wi
-        om(:, i) = w*wi
+        vel(:, :, i) = v(:, outp)*wi
+        om(:, i) = w(outl)*wi
         jred(i) = reduced_inertia()
       end if
       if (need >= 3) then
         ei = epsil(1 + (i - 1)*inc_e)
-        aa = a*wi*wi + v*ei
-        ee = e*wi*wi + w*ei
-        acc(:, :, i) = aa
-        ep(:, i) = ee
+        if (need >= 4) then
+          aa = a*wi*wi + v*ei
+          ee = e*wi*wi + w*ei
+          acc(:, :, i) = aa(:, outp)
+          ep(:, i) = ee(outl)
+        else
+          acc(:, :, i) = a(:, outp)*(wi*wi) + v(:, outp)*ei
+          ep(:, i) = e(outl)*(wi*wi) + w(outl)*ei
+        end if
       end if
       if (need >= 4) call forces(i)
     end do
-    deallocate(x, v, a, c, s, w, e, prev, fl, ml, aa, ee, seen, gslot)
+    deallocate(x, v, a, c, s, w, e, fl, ml, aa, ee, gslot)
 
   contains
 
     ! ------------------------------------------------------------------ kinematics
 
-    ! A link's direction (cosine cl, sine sl) set, its angle continued from the previous
-    ! position (continuous across 2 pi), w' and e'' set by the caller.
-    subroutine set_link(l, cl, sl, ang)
+    ! A link's direction (cosine cl, sine sl): the angle itself is not computed here (the
+    ! Python layer takes it, continuous along the sweep, only for the links asked for)
+    subroutine set_link(l, cl, sl)
       integer, intent(in) :: l
-      real(dp), intent(in) :: cl, sl, ang
-      real(dp) :: t
+      real(dp), intent(in) :: cl, sl
       c(l) = cl
       s(l) = sl
-      t = ang
-      if (seen(l)) t = t + twopi*anint((prev(l) - t)/twopi)
-      seen(l) = .true.
-      prev(l) = t
-      th(l, pos_index) = t
     end subroutine set_link
 
     ! velocity analogue of a point X moving with link l, whose point p is known:
@@ -226,7 +223,6 @@ contains
       sp = sin(phi(i))
       x(:, pa) = x(:, po) + r*[cp, sp]
       c(1) = cp; s(1) = sp
-      th(1, i) = phi(i)
       w(1) = 1.0_dp
       e(1) = 0.0_dp
       v(:, pa) = r*[-sp, cp]
@@ -260,14 +256,14 @@ contains
       r2 = [unscale(r2(1), ex), unscale(r2(2), ex)]
       r3 = [unscale(r3(1), ex), unscale(r3(2), ex)]
       x(:, pb) = x(:, pa) + r2
-      call set_link(l2, r2(1)/len2, r2(2)/len2, atan2(r2(2), r2(1)))
-      call set_link(l3, r3(1)/len3, r3(2)/len3, atan2(r3(2), r3(1)))
+      call set_link(l2, r2(1)/len2, r2(2)/len2)
+      call set_link(l3, r3(1)/len3, r3(2)/len3)
       est = dang
       if (need < 2) return
       ! v_A + w2 k x r2 = v_C + w3 k x r3
-      call factor2(-r2(2), r3(2), r2(1), -r3(1), f)
-      sb = norm2d(v(1, pa), v(2, pa)) + norm2d(v(1, pc), v(2, pc))
-      call solve2f(f, v(1, pc) - v(1, pa), v(2, pc) - v(2, pa), dang, 4.0_dp*uround*sb, sb, &
+      call cramer_set(-r2(2), r3(2), r2(1), -r3(1), f)
+      sb = abs(v(1, pa)) + abs(v(2, pa)) + abs(v(1, pc)) + abs(v(2, pc))
+      call cramer(f, v(1, pc) - v(1, pa), v(2, pc) - v(2, pa), dang, 4.0_dp*uround*sb, sb, &
                    y1, y2, st, rel)
       if (failed(st)) return
       est = max(est, rel)
@@ -275,7 +271,7 @@ contains
       w(l3) = y2
       v(:, pb) = v(:, pa) + y1*[-r2(2), r2(1)]
       if (need < 3) return
-      call solve2f(f, a(1, pc) - a(1, pa) - y2**2*r3(1) + y1**2*r2(1), &
+      call cramer(f, a(1, pc) - a(1, pa) - y2**2*r3(1) + y1**2*r2(1), &
                    a(2, pc) - a(2, pa) - y2**2*r3(2) + y1**2*r2(2), dang, &
                    4.0_dp*uround*(sb + y1**2*len2 + y2**2*len3), sb, y1, y2, st, rel)
       if (failed(st)) return
@@ -323,17 +319,17 @@ contains
       sl = along + gr(2, k)*root
       x(:, pb) = x(:, pk) + sl*u + off*nn
       r2 = x(:, pb) - x(:, pa)
-      call set_link(l2, r2(1)/len2, r2(2)/len2, atan2(r2(2), r2(1)))
-      call set_link(l3, u(1), u(2), th(lm, pos_index) + gr(6, k))
+      call set_link(l2, r2(1)/len2, r2(2)/len2)
+      call set_link(l3, u(1), u(2))
       dc = 4.0_dp*uround*(abs(perp) + abs(off) + len2 + abs(wv(1)) + abs(wv(2)))/len2
       est = angle_sensitivity(cq, dc)
       st = st_ok
       if (need < 2) return
       ! v_A + w2 k x r2 = v_G(B) + s' u
       call carried(lm, pk, x(:, pb), vg, ag)
-      call factor2(-r2(2), -u(1), r2(1), -u(2), f)
-      sb = norm2d(v(1, pa), v(2, pa)) + norm2d(vg(1), vg(2))
-      call solve2f(f, vg(1) - v(1, pa), vg(2) - v(2, pa), est + 4.0_dp*uround, &
+      call cramer_set(-r2(2), -u(1), r2(1), -u(2), f)
+      sb = abs(v(1, pa)) + abs(v(2, pa)) + abs(vg(1)) + abs(vg(2))
+      call cramer(f, vg(1) - v(1, pa), vg(2) - v(2, pa), est + 4.0_dp*uround, &
                    4.0_dp*uround*sb, sb, y1, y2, st, rel)
       if (failed(st)) return
       est = max(est, rel)
@@ -342,7 +338,7 @@ contains
       v(:, pb) = v(:, pa) + y1*[-r2(2), r2(1)]
       if (need < 3) return
       ag = ag + 2.0_dp*w(lm)*y2*nn - a(:, pa) + y1**2*r2
-      call solve2f(f, ag(1), ag(2), est + 4.0_dp*uround, &
+      call cramer(f, ag(1), ag(2), est + 4.0_dp*uround, &
                    4.0_dp*uround*(sb + y1**2*len2), sb, y1, y2, st, rel)
       if (failed(st)) return
       est = max(est, rel)
@@ -391,17 +387,17 @@ contains
       end if
       e3 = (x(:, pb) - x(:, pc))/sl
       n3 = [-e3(2), e3(1)]
-      call set_link(l3, e3(1), e3(2), atan2(e3(2), e3(1)))
-      call set_link(l2, e3(1), e3(2), th(l3, pos_index))
+      call set_link(l3, e3(1), e3(2))
+      call set_link(l2, e3(1), e3(2))
       ds = 4.0_dp*uround*(1.0_dp + sq)
       est = angle_sensitivity(sq, ds)
       st = st_ok
       if (need < 2) return
       ! v_A = v_C + w3 k x (A - C) + s' e3
       rac = x(:, pa) - x(:, pc)
-      call factor2(-rac(2), e3(1), rac(1), e3(2), f)
-      sb = norm2d(v(1, pa), v(2, pa)) + norm2d(v(1, pc), v(2, pc))
-      call solve2f(f, v(1, pa) - v(1, pc), v(2, pa) - v(2, pc), est + 4.0_dp*uround, &
+      call cramer_set(-rac(2), e3(1), rac(1), e3(2), f)
+      sb = abs(v(1, pa)) + abs(v(2, pa)) + abs(v(1, pc)) + abs(v(2, pc))
+      call cramer(f, v(1, pa) - v(1, pc), v(2, pa) - v(2, pc), est + 4.0_dp*uround, &
                    4.0_dp*uround*sb, sb, y1, y2, st, rel)
       if (failed(st)) return
       est = max(est, rel)
@@ -410,7 +406,7 @@ contains
       sd = y2
       v(:, pb) = v(:, pc) + y1*sl*n3 + sd*e3
       if (need < 3) return
-      call solve2f(f, a(1, pa) - a(1, pc) + y1**2*rac(1) - 2.0_dp*y1*sd*n3(1), &
+      call cramer(f, a(1, pa) - a(1, pc) + y1**2*rac(1) - 2.0_dp*y1*sd*n3(1), &
                    a(2, pa) - a(2, pc) + y1**2*rac(2) - 2.0_dp*y1*sd*n3(2), &
                    est + 4.0_dp*uround, 4.0_dp*uround*(sb + y1**2*d + abs(y1*sd)), sb, &
                    y1, y2, st, rel)
@@ -444,14 +440,14 @@ contains
                    4.0_dp*uround, 4.0_dp*uround*sb, sb, bx, by, st, est)
       if (failed(st)) return
       x(:, pb) = x(:, pa) + [bx, by]
-      call set_link(l2, um(1), um(2), th(lm, pos_index) + gr(7, k))
-      call set_link(l3, un(1), un(2), th(ln, pos_index) + gr(8, k))
+      call set_link(l2, um(1), um(2))
+      call set_link(l3, un(1), un(2))
       if (need < 2) return
       call carried(lm, pa, x(:, pb), vgm, agm)
       call carried(ln, pc, x(:, pb), vgn, agn)
-      call factor2(um(1), -un(1), um(2), -un(2), f)
-      sb = norm2d(vgm(1), vgm(2)) + norm2d(vgn(1), vgn(2))
-      call solve2f(f, vgn(1) - vgm(1), vgn(2) - vgm(2), est + 4.0_dp*uround, &
+      call cramer_set(um(1), -un(1), um(2), -un(2), f)
+      sb = abs(vgm(1)) + abs(vgm(2)) + abs(vgn(1)) + abs(vgn(2))
+      call cramer(f, vgn(1) - vgm(1), vgn(2) - vgm(2), est + 4.0_dp*uround, &
                    4.0_dp*uround*sb, sb, s2, s3, st, rel)
       if (failed(st)) return
       est = max(est, rel)
@@ -459,7 +455,7 @@ contains
       w(l3) = w(ln)
       v(:, pb) = vgm + s2*um
       if (need < 3) return
-      call solve2f(f, agn(1) + 2.0_dp*w(ln)*s3*nn(1) - agm(1) - 2.0_dp*w(lm)*s2*nm_(1), &
+      call cramer(f, agn(1) + 2.0_dp*w(ln)*s3*nn(1) - agm(1) - 2.0_dp*w(lm)*s2*nm_(1), &
                    agn(2) + 2.0_dp*w(ln)*s3*nn(2) - agm(2) - 2.0_dp*w(lm)*s2*nm_(2), &
                    est + 4.0_dp*uround, 4.0_dp*uround*(sb + abs(w(ln)*s3) + abs(w(lm)*s2)), &
                    sb, y1, y2, st, rel)
@@ -492,14 +488,14 @@ contains
                    4.0_dp*uround*sb, sb, s2, s3, st, est)
       if (failed(st)) return
       x(:, pk) = x(:, pa) + s2*um
-      call set_link(l2, um(1), um(2), th(lm, pos_index) + gr(5, k))
-      call set_link(l3, us(1), us(2), th(l2, pos_index) + gr(6, k))
+      call set_link(l2, um(1), um(2))
+      call set_link(l3, us(1), us(2))
       if (need < 2) return
       call carried(lm, pa, x(:, pc), vgc, agc)
       call carried(lm, pa, x(:, pk), vgk, agk)
-      call factor2(um(1), us(1), um(2), us(2), f)
-      sb = norm2d(v(1, pc), v(2, pc)) + norm2d(vgc(1), vgc(2))
-      call solve2f(f, v(1, pc) - vgc(1), v(2, pc) - vgc(2), est + 4.0_dp*uround, &
+      call cramer_set(um(1), us(1), um(2), us(2), f)
+      sb = abs(v(1, pc)) + abs(v(2, pc)) + abs(vgc(1)) + abs(vgc(2))
+      call cramer(f, v(1, pc) - vgc(1), v(2, pc) - vgc(2), est + 4.0_dp*uround, &
                    4.0_dp*uround*sb, sb, d2, d3, st, rel)
       if (failed(st)) return
       est = max(est, rel)
@@ -507,7 +503,7 @@ contains
       w(l3) = w(lm)
       v(:, pk) = vgk + d2*um
       if (need < 3) return
-      call solve2f(f, a(1, pc) - agc(1) - 2.0_dp*w(lm)*(d2*nm_(1) + d3*ns_(1)), &
+      call cramer(f, a(1, pc) - agc(1) - 2.0_dp*w(lm)*(d2*nm_(1) + d3*ns_(1)), &
                    a(2, pc) - agc(2) - 2.0_dp*w(lm)*(d2*nm_(2) + d3*ns_(2)), &
                    est + 4.0_dp*uround, 4.0_dp*uround*(sb + abs(w(lm))*(abs(d2) + abs(d3))), &
                    sb, y1, y2, st, rel)

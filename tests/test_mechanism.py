@@ -350,36 +350,33 @@ def test_slider_kinds_virtual_work(kind):
         m.fixed("C", 0.0, -0.25)
         m.rpr("B", "A", "C", 0.02, math.pi / 2)
         m.point("T", "C", "B", 0.4)
-        m.mass("C", "B", mass=2.0, inertia=0.05, centre=0.15)
-        m.mass("A", "B", mass=0.3, inertia=1e-4)
+        m.point("S3", "C", "B", 0.15)
+        centres = [("S3", ("C", "B"), 2.0, 0.05), ("A", ("A", "B"), 0.3, 1e-4)]
         link, pt = ("C", "B"), "T"
         phi = PHI
     elif kind == 4:
         m.fixed("G", 0.0, 0.05)
         m.prp("B", "A", math.pi / 2, "G", 0.0, guide_m=("O", "A"))
-        m.mass("B", "G", mass=1.2, inertia=2e-3)
-        m.mass("B", "A", mass=0.4, inertia=1e-3)
+        centres = [("B", ("B", "G"), 1.2, 2e-3), ("B", ("B", "A"), 0.4, 1e-3)]
         link, pt = ("B", "G"), "B"
         phi = np.linspace(-1.0, 1.0, 21)
     else:
         m.fixed("G", 0.2, -0.3)
         m.rpp("K", "G", 0.0, "A", math.pi / 2)
-        m.mass("K", "G", mass=2.5, inertia=0.1)
-        m.mass("A", "K", mass=0.2, inertia=1e-4)
+        centres = [("K", ("K", "G"), 2.5, 0.1), ("A", ("A", "K"), 0.2, 1e-4)]
         link, pt = ("K", "G"), "K"
         phi = PHI
+    for point, lk, mass, inertia in centres:
+        m.mass(point, lk[1] if lk[0] == point else lk[0], mass=mass, inertia=inertia)
     m.force(pt, -50.0, 20.0)
     m.torque(*link, 3.0)
     w1, e1 = 6.0, -1.0
     r = m.solve(phi, omega=w1, epsilon=e1, need="forces", gravity=G)
-    # virtual work with every mass's centre velocity from the result's own rigid points
     total = 0.0
-    for (li, p, mass, inertia) in m._masses:
-        name = [n for n, i in m._points.items() if i == p][0]
-        v = r.positions[..., p, :] * 0 + r.velocities[..., p, :]
-        a = r.accelerations[..., p, :]
+    for point, lk, mass, inertia in centres:
+        v, a = r.velocity(point), r.acceleration(point)
         total = total + np.sum((-mass * a - mass * np.array([0.0, G])) * v, -1) \
-            - inertia * r.epsilons[..., li] * r.omegas[..., li]
+            - inertia * r.epsilon(*lk) * r.omega(*lk)
     total = total + np.sum(np.array([-50.0, 20.0]) * r.velocity(pt), -1) \
         + 3.0 * r.omega(*link)
     vw = -total / w1
