@@ -624,64 +624,116 @@ contains
       owner = powner(p)
     end function owner
 
-    ! the six equations of one group (forces and moment of link 2, then of link 3) in the
-    ! reactions of its three pairs: 1 (the outside on link 2), 2 (link 2 on link 3),
-    ! 3 (the outside on link 3); a revolute's unknowns are (fx, fy), a slider's the normal
-    ! force (along the sliding direction turned by +pi/2) and the couple
+    ! One group's reactions (the chapter 7 method): its six equilibrium equations (forces
+    ! and moment of link 2, of link 3) in the reactions of its three pairs -- 1 (the
+    ! outside on link 2), 2 (link 2 on link 3), 3 (the outside on link 3); a revolute's
+    ! unknowns are the force (fx, fy) at its joint, a slider's the normal force N (along its
+    ! sliding direction turned by +pi/2) and the couple C.  Pair 1 drops out of one
+    ! equation of link 2 (a revolute: the moment about its joint; a slider: the forces
+    ! along its direction), pair 3 out of one of link 3: two equations in pair 2's two
+    ! unknowns (numerics' Cramer kernel), then pairs 1 and 3 from the rest.
     subroutine group_forces(k, kind, slot, i)
       integer, intent(in) :: k, kind, slot, i
       integer :: pt(3), ty(3), frl(3), l2, l3, j, st
-      real(dp) :: dir(2, 3), m(6, 6), rhs(6), fx, fy, cpl
+      real(dp) :: dir(2, 3), n2(2), a(2, 2), b(2), z(2), rel, r(2), c2, d(2), f(2), cp
+      real(dp) :: out(3, 3), mp
+      type(system2) :: sys
       l2 = gi(5, k); l3 = gi(6, k)
       call pairs(k, kind, pt, ty, dir, frl)
-      m = 0.0_dp
-      call pair_columns(m, 1, pt(1), ty(1), dir(:, 1), l2, 1, 1.0_dp)
-      call pair_columns(m, 3, pt(2), ty(2), dir(:, 2), l3, 4, 1.0_dp)
-      call pair_columns(m, 3, pt(2), ty(2), dir(:, 2), l2, 1, -1.0_dp)
-      call pair_columns(m, 5, pt(3), ty(3), dir(:, 3), l3, 4, 1.0_dp)
-      rhs = -[fl(1, l2), fl(2, l2), ml(l2), fl(1, l3), fl(2, l3), ml(l3)]
-      call gauss6(m, rhs, st)
+      n2 = [-dir(2, 2), dir(1, 2)]
+      ! pair 2 as unknowns z: R = (z1, z2), C = 0 (revolute) or R = z1 n2, C = z2 (slider)
+      ! row 1: link 2 without pair 1
+      if (ty(1) == 0) then
+        d = x(:, pt(2)) - x(:, pt(1))           ! -(d x R) - C = -M2(about P1)
+        call coefficients(d(2), -d(1), -1.0_dp, ty(2), n2, a(1, :))
+        b(1) = -moment_about(l2, pt(1))
+      else
+        call coefficients(-dir(1, 1), -dir(2, 1), 0.0_dp, ty(2), n2, a(1, :))  ! -R.u1 = -F2.u1
+        b(1) = -(fl(1, l2)*dir(1, 1) + fl(2, l2)*dir(2, 1))
+      end if
+      ! row 2: link 3 without pair 3
+      if (ty(3) == 0) then
+        d = x(:, pt(2)) - x(:, pt(3))           ! d x R + C = -M3(about P3)
+        call coefficients(-d(2), d(1), 1.0_dp, ty(2), n2, a(2, :))
+        b(2) = -moment_about(l3, pt(3))
+      else
+        call coefficients(dir(1, 3), dir(2, 3), 0.0_dp, ty(2), n2, a(2, :))    ! R.u3 = -F3.u3
+        b(2) = -(fl(1, l3)*dir(1, 3) + fl(2, l3)*dir(2, 3))
+      end if
+      call cramer_set(a(1, 1), a(1, 2), a(2, 1), a(2, 2), sys)
+      call cramer(sys, b(1), b(2), 0.0_dp, 0.0_dp, 0.0_dp, z(1), z(2), st, rel)
       if (st /= st_ok) then
         status(i) = st
         fgroup(i) = k
       end if
+      if (ty(2) == 0) then
+        r = z
+        c2 = 0.0_dp
+      else
+        r = z(1)*n2
+        c2 = z(2)
+      end if
+      out(:, 2) = [r(1), r(2), c2]
+      ! pair 1: F2 + f1 - R = 0 (and, a slider, its couple from the moment about P1)
+      f = r - fl(:, l2)
+      if (ty(1) == 0) then
+        out(:, 1) = [f(1), f(2), 0.0_dp]
+      else
+        call normal(f, dir(:, 1), out(:, 1))
+        d = x(:, pt(2)) - x(:, pt(1))
+        mp = moment_about(l2, pt(1))
+        out(3, 1) = -mp + (d(1)*r(2) - d(2)*r(1)) + c2
+      end if
+      ! pair 3: F3 + R + f3 = 0
+      f = -r - fl(:, l3)
+      if (ty(3) == 0) then
+        out(:, 3) = [f(1), f(2), 0.0_dp]
+      else
+        call normal(f, dir(:, 3), out(:, 3))
+        d = x(:, pt(2)) - x(:, pt(3))
+        mp = moment_about(l3, pt(3))
+        out(3, 3) = -mp - (d(1)*r(2) - d(2)*r(1)) - c2
+      end if
       do j = 1, 3
-        if (ty(j) == 0) then
-          fx = rhs(2*j - 1); fy = rhs(2*j); cpl = 0.0_dp
-        else
-          fx = -dir(2, j)*rhs(2*j - 1); fy = dir(1, j)*rhs(2*j - 1); cpl = rhs(2*j)
-        end if
-        react(:, slot + j - 1, i) = [fx, fy, cpl]
+        react(:, slot + j - 1, i) = out(:, j)
         if (j /= 2 .and. frl(j) > 0) then
-          call load(frl(j), pt(j), -fx, -fy)     ! the outside link bears the opposite
-          ml(frl(j)) = ml(frl(j)) - cpl
+          cp = out(3, j)
+          call load(frl(j), pt(j), -out(1, j), -out(2, j))   ! the outside bears the opposite
+          ml(frl(j)) = ml(frl(j)) - cp
         end if
       end do
 
-
     end subroutine group_forces
 
-    ! columns col, col + 1 (one pair's unknowns) in rows r0..r0 + 2 (link l's equations)
-    subroutine pair_columns(m, col, p, t, d, l, r0, sg)
-      real(dp), intent(inout) :: m(6, 6)
-      integer, intent(in) :: col, p, t, l, r0
-      real(dp), intent(in) :: d(2), sg
-      real(dp) :: rx, ry, nx, ny
-      rx = x(1, p) - x(1, base(l))
-      ry = x(2, p) - x(2, base(l))
-      if (t == 0) then
-        m(r0, col) = sg
-        m(r0 + 2, col) = -sg*ry
-        m(r0 + 1, col + 1) = sg
-        m(r0 + 2, col + 1) = sg*rx
+    ! the coefficients of pair 2's unknowns in one equation: (cx, cy) multiply R (a
+    ! revolute's two unknowns; a slider's N through R = N n2) and cc its couple C
+    pure subroutine coefficients(cx, cy, cc, t2, n2, row)
+      real(dp), intent(in) :: cx, cy, cc, n2(2)
+      integer, intent(in) :: t2
+      real(dp), intent(out) :: row(2)
+      if (t2 == 0) then
+        row = [cx, cy]
       else
-        nx = -d(2); ny = d(1)
-        m(r0, col) = sg*nx
-        m(r0 + 1, col) = sg*ny
-        m(r0 + 2, col) = sg*(rx*ny - ry*nx)
-        m(r0 + 2, col + 1) = sg
+        row = [cx*n2(1) + cy*n2(2), cc]
       end if
-    end subroutine pair_columns
+    end subroutine coefficients
+
+    ! a slider's reaction f: its normal part (the guide takes no force along u)
+    pure subroutine normal(f, u, out)
+      real(dp), intent(in) :: f(2), u(2)
+      real(dp), intent(out) :: out(3)
+      real(dp) :: nn
+      nn = -f(1)*u(2) + f(2)*u(1)
+      out = [-nn*u(2), nn*u(1), 0.0_dp]
+    end subroutine normal
+
+    ! the moment of link l's loads about point p (they are gathered about its base)
+    real(dp) function moment_about(l, p)
+      integer, intent(in) :: l, p
+      integer :: b
+      b = base(l)
+      moment_about = ml(l) + (x(1, b) - x(1, p))*fl(2, l) - (x(2, b) - x(2, p))*fl(1, l)
+    end function moment_about
 
     ! the pairs of a group: point, type (0 revolute, 1 slider, with its sliding direction),
     ! the outside link of pairs 1 and 3
@@ -727,36 +779,5 @@ contains
 
   end subroutine mech_solve
 
-  ! Gaussian elimination with partial pivoting of a 6x6 system (a group's equilibrium);
-  ! b is overwritten by the solution.  st_singular when a pivot vanishes against the
-  ! largest entry (a group at a dead centre cannot carry its load).
-  pure subroutine gauss6(m, b, st)
-    real(dp), intent(inout) :: m(6, 6), b(6)
-    integer, intent(out) :: st
-    integer :: j, r, p
-    real(dp) :: amax, t, row(6)
-    amax = maxval(abs(m))
-    st = st_singular
-    if (.not. amax > 0.0_dp) return
-    do j = 1, 6
-      p = j - 1 + maxloc(abs(m(j:6, j)), 1)
-      if (.not. abs(m(p, j)) > 16.0_dp*epsilon(1.0_dp)*amax) return
-      if (p /= j) then
-        row = m(j, :); m(j, :) = m(p, :); m(p, :) = row
-        t = b(j); b(j) = b(p); b(p) = t
-      end if
-      do r = j + 1, 6
-        if (m(r, j) /= 0.0_dp) then
-          t = m(r, j)/m(j, j)
-          m(r, j + 1:6) = m(r, j + 1:6) - t*m(j, j + 1:6)
-          b(r) = b(r) - t*b(j)
-        end if
-      end do
-    end do
-    do j = 6, 1, -1
-      b(j) = (b(j) - dot_product(m(j, j + 1:6), b(j + 1:6)))/m(j, j)
-    end do
-    st = st_ok
-  end subroutine gauss6
 
 end module mechanism
