@@ -3,7 +3,14 @@
 ``DZKNDV`` finds the steady-state law of motion omega(phi) of the reduction link from the
 reduced moment and the reduced moment of inertia over one cycle, in the integral (energy)
 form of the equation of motion, with the trapezoid rule; ``DMHVK`` the moment of inertia
-of the flywheel that keeps the coefficient of speed fluctuation at a given delta.
+of the flywheel that keeps the coefficient of speed fluctuation at a given delta
+(Merkalov's method, which neglects the variable part of the inertia).
+
+sarkp's extensions: ``DMHVK_EXACT`` (the flywheel with which DZKNDV's rerun has exactly
+the delta asked for, beside DMHVK's value); ``motion`` (omega(phi) and t(phi) at fourth
+order on any grid, from a given speed, from rest, or the steady cycle) and ``flywheel``
+(the exact flywheel at fourth order), which ``sarkp.Mechanism.motion`` and ``.flywheel``
+call with a mechanism's reduced inertia and moment.
 
 Units (section 9.3): angles rad, omega rad/s, moments N*m, inertias kg*m^2, work and
 energy J.  The tables span exactly one cycle of the reduction link, phi = 0 .. 2*pi with
@@ -13,13 +20,15 @@ both ends included: M points, step H = 2*pi/(M - 1).
 from __future__ import annotations
 
 import math
+from collections import namedtuple
 
 import numpy as np
 
 from .errors import RequirementError, Status
 from .library import ST_REQUIREMENT, Check, as_real_array, book_routine
+from .modes import get_mode
 
-__all__ = ["DZKNDV", "DMHVK", "motion", "flywheel", "Motion", "Flywheel"]
+__all__ = ["DZKNDV", "DMHVK", "DMHVK_EXACT", "motion", "flywheel", "Motion", "Flywheel"]
 
 _COUNT = range(2, 2**31 - 1)
 
@@ -32,10 +41,13 @@ DZKNDV = book_routine(
     checks=(Check(lambda M, ZM, **_: ZM != M, ST_REQUIREMENT,
                   "ZM must equal M: the book passes the number of points twice, as an "
                   "integer and as a real (the step is 2*pi/(ZM - 1))"),),
+    kept={ST_REQUIREMENT: ("AS", "ASUM", "EV", "DEC")},
     messages={ST_REQUIREMENT: "the kinetic energy would go negative: no steady motion "
                               "with the mean speed W1 has real speeds (the machine would "
-                              "stall). More constant inertia ISC is needed, e.g. a "
-                              "flywheel from DMHVK (DEC does not depend on ISC)"},
+                              "stall). Size a flywheel from DEC (DEC does not depend on "
+                              "ISC, and is still computed): DZKNDV(..., "
+                              "on_error='nan').DEC (or this error's .result.DEC) into "
+                              "DMHVK, or DMHVK_EXACT for the exact flywheel"},
     doc="""Steady-state law of motion of the reduction link, energy form (listing VIII.1).
 
     Listing VIII.1 (L5939-5990), block diagram Fig. 70, eqs. (8.13)-(8.17), operator
@@ -87,8 +99,12 @@ DZKNDV = book_routine(
     ------
     RequirementError
         Corrected mode: no steady motion with mean speed W1 has real speeds -- the kinetic
-        energy would go negative somewhere in the cycle (the machine stalls).  Also when
-        ZM differs from M.
+        energy would go negative somewhere in the cycle (the machine stalls).  AS, ASUM,
+        EV and DEC are still computed (they do not depend on ISC): with
+        ``on_error="nan"`` they are returned, with WPR and EPR NaN and ``status``
+        REQUIREMENT; the error raised otherwise carries that result as ``.result``.  A
+        flywheel sized from DEC (DMHVK, or DMHVK_EXACT) gives the steady motion.  Also
+        raised when ZM differs from M (then every output is NaN under ``on_error="nan"``).
 
     Notes
     -----
@@ -100,7 +116,11 @@ DZKNDV = book_routine(
     ``(ISC + ISPR[k])*WPR[k]**2/2 = E0 + ASUM[k]``, with E0 fixed by the same normalisation
     (max WPR + min WPR)/2 = W1, so that WPR is exact up to the trapezoid rule's O(H**2)
     (ERRATA E-DZKNDV-2; tests/test_dynamics.py checks it against a closed form and
-    against scipy's solve_ivp).  PI is 3.14159 as printed (the listing's local PI, L5955).
+    against scipy's solve_ivp).  E0 comes in closed form from the two points where DEC
+    has its extremes (where omega has them, exactly so for ISPR = 0), checked by the pass
+    that computes WPR (repeated with WPR's extremes if they sit elsewhere; Newton's method
+    inside a bracket if that does not settle).  For a fourth-order law of motion on any
+    grid, from rest too, see :func:`sarkp.motion`.  PI is 3.14159 as printed (the listing's local PI, L5955).
     The printed DINTGR writes a line to unit 3 on every call; nothing is printed here.
     """)
 
@@ -311,15 +331,20 @@ def _grid(who, phi, J, M):
     return phi, J, M
 
 
-def _lagrange(d, x):
-    """Values at offsets x (shape (n, q)) of the 4 Lagrange basis cubics of the nodes
-    at offsets d (shape (n, 4)): shape (n, q, 4)."""
-    out = np.ones(x.shape + (4,))
+def _weights(d, x, wg, scale):
+    """Quadrature weights (n, 4) on each interval: the 4 Lagrange basis cubics of the
+    nodes at offsets d (n, 4), at the offsets x (n, q) of the interval's quadrature
+    points, times the point weights wg (q,), times scale (n,).  Basis j is the product of
+    x - d[m] over m != j over that of d[j] - d[m]."""
+    diff = [x - d[:, m, None] for m in range(4)]
+    w = np.empty(d.shape)
     for j in range(4):
-        for m in range(4):
-            if m != j:
-                out[..., j] *= (x - d[:, None, m]) / (d[:, None, j] - d[:, None, m])
-    return out
+        others = [m for m in range(4) if m != j]
+        num = diff[others[0]] * diff[others[1]] * diff[others[2]]
+        den = ((d[:, j] - d[:, others[0]]) * (d[:, j] - d[:, others[1]])
+               * (d[:, j] - d[:, others[2]]))
+        w[:, j] = (num @ wg) * (scale / den)
+    return w
 
 
 def _stencils(n):
@@ -335,7 +360,7 @@ def _cubic_weights(phi):
     d = phi[first[:, None] + np.arange(4)] - phi[:-1, None]        # node offsets
     x, wg = _GAUSS2
     pts = (h[:, None] / 2) * (1.0 + x[None, :])                       # Gauss points
-    return first, np.einsum("q,nqj->nj", wg, _lagrange(d, pts)) * (h[:, None] / 2)
+    return first, _weights(d, pts, wg, h / 2)
 
 
 def _singular_weights(phi, c):
@@ -350,7 +375,7 @@ def _singular_weights(phi, c):
     ug = u[:-1, None] + (du[:, None] / 2) * (1.0 + x[None, :])
     off = (ug - u[:-1, None]) * (ug + u[:-1, None])     # s(ug) - s[k]
     d = phi[first[:, None] + np.arange(4)] - phi[:-1, None]
-    return first, np.einsum("q,nqj->nj", wg, _lagrange(d, off)) * du[:, None]
+    return first, _weights(d, off, wg, du)
 
 
 def _cumulative(first, w, f):
@@ -385,18 +410,22 @@ def _steady_energy(a, j, w):
 
     The extremes of omega sit where those of a - (j - min j) w^2/2 (the book's DEC) sit,
     for a small fluctuation exactly: E0 in closed form from those two points, then one
-    pass to check that omega's extremes are there (else again with the new extremes;
-    bisection if that does not settle)."""
+    pass to check that omega's extremes are there (else again with the new extremes).
+    Without a root, or with one below the least E0 = -min a, the pass is made there: a
+    mean above w is a stall, else its extremes are tried next.  Bisection if that does
+    not settle in 8 passes (DZKNDV's steady_speeds does the same in Fortran)."""
     lo = -float(a.min())
     dec = a - (j - j.min()) * (w * w / 2.0)
     k1, k2 = int(dec.argmax()), int(dec.argmin())
     for _ in range(8):
         e0 = _pair_energy(a[k1], j[k1], a[k2], j[k2], w)
-        if e0 is None or e0 < lo:
-            break
+        if e0 is None or e0 < lo:               # no root, or one below lo: look at lo,
+            e0 = lo                             # and retry at its extremes
         om = _speeds(e0, a, j)
         n1, n2 = int(om.argmax()), int(om.argmin())
-        if om[k1] >= om[n1] and om[k2] <= om[n2]:
+        if e0 == lo and 0.5 * (om[n1] + om[n2]) > w:
+            return None                         # even the least E0 gives more than w
+        if e0 > lo and om[k1] >= om[n1] and om[k2] <= om[n2]:
             return e0
         k1, k2 = n1, n2
 
@@ -665,3 +694,67 @@ def flywheel(phi, J, M, *, delta, omega_mean, J_constant=None):
     jf, _ = _exact_flywheel(asum, J, wm, delta)
     mo = motion(phi, J + jf, M, omega_mean=wm)
     return Flywheel(jf, _merkalov(asum, J, wm, delta, jc), mo)
+
+
+_DMHVK_EXACT = namedtuple("DMHVK_EXACT", ("IMHVK", "IMERK", "DELTA"))
+
+
+def DMHVK_EXACT(M, ZM, W1, ISC, MPR, ISPR, DELTA):
+    """The exact flywheel for DZKNDV (a sarkp extension beside DMHVK, listing VIII.2).
+
+    The moment of inertia IMHVK to add to ISC so that DZKNDV rerun with ``ISC + IMHVK``
+    gives the coefficient of speed fluctuation ``(max WPR - min WPR)/W1`` exactly DELTA
+    (to rounding), where DMHVK (Merkalov's method, eqs. (8.22)/(8.24)) neglects the
+    variable part ISPR of the inertia in corrected mode (its value, IMERK, is returned
+    beside).  It works whether or not DZKNDV finds a steady motion with ISC alone.
+
+    The arguments are DZKNDV's, in its order, and DELTA.  Corrected mode: at the two
+    points where WPR has its extremes, W1 (1 +- DELTA/2), the energy equation of DZKNDV
+    is linear in the added inertia, which gives it in closed form from DZKNDV's own ASUM
+    (the same trapezoid rule); one pass over the table checks that the extremes are
+    there (a bisection takes over if they move).  This is the book's own tangent
+    construction on the energy-mass diagram, eqs. (8.20)-(8.21) (L6018-6030), with the
+    tangent points found exactly; DMHVK's (8.22)/(8.24) takes them at DEC's extremes,
+    which are omega's only for a constant inertia (ERRATA E-T8-3).  As printed, DZKNDV's linear law (8.17)
+    makes DMHVK itself exact: IMHVK = IMERK.
+
+    Parameters
+    ----------
+    M, ZM, W1, ISC, MPR, ISPR
+        As for DZKNDV.
+    DELTA : float
+        The coefficient of speed fluctuation, in (0, 1).
+
+    Returns
+    -------
+    DMHVK_EXACT(IMHVK, IMERK, DELTA)
+        ``IMHVK``: the exact flywheel (kg*m^2; negative when no flywheel is needed);
+        ``IMERK``: DMHVK's value from DZKNDV's DEC; ``DELTA``: the coefficient of
+        DZKNDV rerun with ``ISC + IMHVK``.
+
+    Raises
+    ------
+    ValueError
+        Bad input, as DZKNDV and DMHVK raise it (DELTA outside (0, 1) among them).
+    """
+    delta = _scalar("DMHVK_EXACT", "DELTA", DELTA)
+    if not 0.0 < delta < 1.0:
+        raise ValueError(f"DMHVK_EXACT: DELTA = {delta!r}, the coefficient of speed "
+                         f"fluctuation (omega_max - omega_min)/omega_sr, must lie in (0, 1)")
+    first = DZKNDV(M, ZM, W1, ISC, MPR, ISPR, on_error="nan")
+    if np.isnan(first.DEC).all():                      # ZM != M: raise its error
+        DZKNDV(M, ZM, W1, ISC, MPR, ISPR)
+    imerk = DMHVK(M, delta, ISC, W1, first.DEC)
+    imerk = float(imerk[0] if isinstance(imerk, tuple) else imerk)
+    if get_mode() == "as-printed":
+        imh = imerk
+    else:
+        j = ISC + np.asarray(ISPR, dtype=float)
+        imh, _ = _exact_flywheel(first.ASUM, j, float(W1), delta)
+    if not ISC + imh > 0.0:
+        raise RequirementError(
+            f"DMHVK_EXACT: no flywheel is needed: the fluctuation would reach DELTA = "
+            f"{delta!r} only with the constant inertia ISC + IMHVK = "
+            f"{float(ISC + imh)!r} <= 0 (IMHVK = {float(imh)!r})")
+    w = DZKNDV(M, ZM, W1, ISC + imh, MPR, ISPR).WPR
+    return _DMHVK_EXACT(float(imh), imerk, float((w.max() - w.min()) / W1))
