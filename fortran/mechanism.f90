@@ -9,14 +9,15 @@
 !                 computed once per position from the points that define it;
 !   steps gi(:, k), gr(:, k), k = 1..ns, in order (gi(1, k) = the kind):
 !     0 crank   gi = 0, A, O, 1                       gr = r
-!     1 RRR     gi = 1, B, A, C, L2, L3, 0, 0         gr = l2, l3, branch
+!     1 RRR     gi = 1, B, A, C, L2, L3, 0, 0         gr = l2, l3, branch, 1/l2, 1/l3
 !     2 RRP     gi = 2, B, A, K, L2, L3, LM           gr = l2, branch, cos, sin (guide angle
-!               on LM), offset
+!               on LM), offset, angle, 1/l2
 !     3 RPR     gi = 3, B, A, C, L2, L3               gr = h, branch
 !     4 PRP     gi = 4, B, A, C, L2, L3, LM, LN       gr = cos, sin (guide M), cos, sin (guide
 !               N), offset M, offset N
 !     5 RPP     gi = 5, K, A, C, L2, L3, LM           gr = cos, sin (guide M), cos, sin (slot T2)
 !     6 point   gi = 6, D, P, Q, L                    gr = dist, cos, sin of the angle from P->Q
+!               (Q = P: from the link's own direction)
 !   Branch +1: the new joint on the left of A->C (kinds 1, 3), ahead along the guide of the
 !   foot of the perpendicular from A (kind 2); kinds 4, 5 have one position.
 !
@@ -134,26 +135,35 @@ contains
       fgroup(i) = fg
       if (worst == st_range) cycle
       ! the outputs: the moving points and links only (the caller knows the frame's)
-      pos(:, :, i) = x(:, outp)
-      th(1, :, i) = c(outl)
-      th(2, :, i) = s(outl)
+      do k = 1, nop
+        pos(:, k, i) = x(:, outp(k))
+      end do
+      do k = 1, nol
+        th(1, k, i) = c(outl(k))
+        th(2, k, i) = s(outl(k))
+      end do
       if (need >= 2) then
         wi = omega(1 + (i - 1)*inc_w)
-        vel(:, :, i) = v(:, outp)*wi
-        om(:, i) = w(outl)*wi
+        do k = 1, nop
+          vel(:, k, i) = v(:, outp(k))*wi
+        end do
+        do k = 1, nol
+          om(k, i) = w(outl(k))*wi
+        end do
         jred(i) = reduced_inertia()
       end if
       if (need >= 3) then
         ei = epsil(1 + (i - 1)*inc_e)
         if (need >= 4) then
-          aa = a*wi*wi + v*ei
-          ee = e*wi*wi + w*ei
-          acc(:, :, i) = aa(:, outp)
-          ep(:, i) = ee(outl)
-        else
-          acc(:, :, i) = a(:, outp)*(wi*wi) + v(:, outp)*ei
-          ep(:, i) = e(outl)*(wi*wi) + w(outl)*ei
+          aa = a*(wi*wi) + v*ei
+          ee = e*(wi*wi) + w*ei
         end if
+        do k = 1, nop
+          acc(:, k, i) = a(:, outp(k))*(wi*wi) + v(:, outp(k))*ei
+        end do
+        do k = 1, nol
+          ep(k, i) = e(outl(k))*(wi*wi) + w(outl(k))*ei
+        end do
       end if
       if (need >= 4) call forces(i)
     end do
@@ -256,8 +266,8 @@ contains
       r2 = [unscale(r2(1), ex), unscale(r2(2), ex)]
       r3 = [unscale(r3(1), ex), unscale(r3(2), ex)]
       x(:, pb) = x(:, pa) + r2
-      call set_link(l2, r2(1)/len2, r2(2)/len2)
-      call set_link(l3, r3(1)/len3, r3(2)/len3)
+      call set_link(l2, r2(1)*gr(4, k), r2(2)*gr(4, k))      ! gr(4:5) = 1/l2, 1/l3
+      call set_link(l3, r3(1)*gr(5, k), r3(2)*gr(5, k))
       est = dang
       if (need < 2) return
       ! v_A + w2 k x r2 = v_C + w3 k x r3
@@ -319,7 +329,7 @@ contains
       sl = along + gr(2, k)*root
       x(:, pb) = x(:, pk) + sl*u + off*nn
       r2 = x(:, pb) - x(:, pa)
-      call set_link(l2, r2(1)/len2, r2(2)/len2)
+      call set_link(l2, r2(1)*gr(7, k), r2(2)*gr(7, k))      ! gr(7) = 1/l2
       call set_link(l3, u(1), u(2))
       dc = 4.0_dp*uround*(abs(perp) + abs(off) + len2 + abs(wv(1)) + abs(wv(2)))/len2
       est = angle_sensitivity(cq, dc)

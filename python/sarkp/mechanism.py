@@ -70,9 +70,10 @@ def _name(who, name):
 
 
 class _Link:
-    __slots__ = ("index", "name", "rigid", "axis", "base", "label")
+    __slots__ = ("index", "name", "rigid", "axis", "base", "label", "own")
 
-    def __init__(self, index, name, rigid, base, axis=(), label=""):
+    def __init__(self, index, name, rigid, base, axis=(), label="", own=False):
+        self.own = own            # its cosine and sine are those of its name's direction
         self.index = index
         self.name = name          # its defining name: the direction of its angle
         self.rigid = set(rigid)   # joints rigidly on it
@@ -137,8 +138,8 @@ class Mechanism:
         if self._crank is None:
             raise ValueError(f"{who}: define the crank first (m.crank)")
 
-    def _add_link(self, name, rigid, base, axis=(), label=""):
-        link = _Link(len(self._links), tuple(name), rigid, base, axis, label)
+    def _add_link(self, name, rigid, base, axis=(), label="", own=False):
+        link = _Link(len(self._links), tuple(name), rigid, base, axis, label, own)
         self._links.append(link)
         return link.index
 
@@ -161,7 +162,7 @@ class Mechanism:
         if O not in self._fixed:
             raise ValueError(f"{who}: joint {O!r} must be a frame point (m.fixed)")
         self._new(who, A)
-        link = self._add_link((O, A), {O, A}, O, label="crank")
+        link = self._add_link((O, A), {O, A}, O, label="crank", own=True)
         self._owner[A] = link
         self._crank = (A, O)
         self._steps.append((0, [self._points[A], o, link], [r], A))
@@ -198,10 +199,10 @@ class Mechanism:
         l2, l3 = _length(who, "l2", l2), _length(who, "l3", l3)
         q = _branch(who, branch)
         self._new(who, B)
-        L2 = self._add_link((A, B), {A, B}, A, label=f"{A}-{B}")
-        L3 = self._add_link((C, B), {C, B}, C, label=f"{C}-{B}")
+        L2 = self._add_link((A, B), {A, B}, A, label=f"{A}-{B}", own=True)
+        L3 = self._add_link((C, B), {C, B}, C, label=f"{C}-{B}", own=True)
         self._owner[B] = L2
-        self._group(1, B, [a, c, L2, L3, 0, 0], [l2, l3, q], (L2, L3),
+        self._group(1, B, [a, c, L2, L3, 0, 0], [l2, l3, q, 1.0 / l2, 1.0 / l3], (L2, L3),
                     [(A, L2, self._owner[A], "R"), (B, L3, L2, "R"),
                      (C, L3, self._owner[C], "R")])
 
@@ -222,11 +223,12 @@ class Mechanism:
         off = _real(who, "offset", offset)
         lm = self._guide_link(who, K, guide)
         self._new(who, B)
-        L2 = self._add_link((A, B), {A, B}, A, label=f"{A}-{B}")
+        L2 = self._add_link((A, B), {A, B}, A, label=f"{A}-{B}", own=True)
         L3 = self._add_link((B,), {B}, B, label=f"slider {B}")
         self._owner[B] = L3
         self._group(2, B, [a, k, L2, L3, lm, 0],
-                    [l2, q, math.cos(angle), math.sin(angle), off, angle], (L2, L3),
+                    [l2, q, math.cos(angle), math.sin(angle), off, angle, 1.0 / l2],
+                    (L2, L3),
                     [(A, L2, self._owner[A], "R"), (B, L3, L2, "R"), (B, L3, lm, "P")])
 
     def rpr(self, B, A, C, rz2, t=math.pi / 2, branch=1):
@@ -244,7 +246,7 @@ class Mechanism:
         h = abs(rz2 * math.sin(t))
         self._new(who, B)
         L2 = self._add_link((A, B), {A, B}, A, label=f"slider {A}")
-        L3 = self._add_link((C, B), {C}, C, axis=[(C, B)], label=f"{C}-{B}")
+        L3 = self._add_link((C, B), {C}, C, axis=[(C, B)], label=f"{C}-{B}", own=True)
         self._owner[B] = L2
         self._group(3, B, [a, c, L2, L3, 0, 0], [h, q], (L2, L3),
                     [(A, L2, self._owner[A], "R"), (B, L3, L2, "P"),
@@ -347,7 +349,8 @@ class Mechanism:
         self._new(who, D)
         link.rigid.add(D)
         self._owner[D] = link.index
-        self._steps.append((6, [self._points[D], self._points[P], self._points[Q],
+        q = P if link.own and link.name == (P, Q) else Q     # no square root needed
+        self._steps.append((6, [self._points[D], self._points[P], self._points[q],
                                 link.index], [dist, math.cos(angle), math.sin(angle)], D))
 
     def _centre(self, who, link, P, Q, centre):
@@ -369,7 +372,8 @@ class Mechanism:
         self._hidden += 1
         name = f"\x00centre{self._hidden}"
         self._points[name] = len(self._points)
-        self._steps.append((6, [self._points[name], self._points[P], self._points[Q],
+        q = P if link.own and link.name == (P, Q) else Q     # no square root needed
+        self._steps.append((6, [self._points[name], self._points[P], self._points[q],
                                 link.index], [dist, math.cos(ang), math.sin(ang)], name))
         return self._points[name]
 
@@ -542,20 +546,20 @@ class Mechanism:
                     if arr.size == n:
                         arr[bad] = math.nan
 
-        def pts(a):
-            return None if a.shape[2] != n else a.T.reshape(shape + (nop, 2))
+        flat = len(shape) == 1
 
-        def lks(a):
-            return None if a.shape[1] != n else a.T.reshape(shape + (nl,))
-        code = np.where(status > _ST_DIGITS, np.int32(Status.SIGNIFICANCE), status)
+        def out(a, tail=()):
+            if a.shape[-1] != n:
+                return None                 # not asked for
+            a = a.T
+            return a if flat else a.reshape(shape + tail)
+        lost = status > _ST_DIGITS
+        code = np.where(lost, np.int32(Status.SIGNIFICANCE), status) if lost.any() else status
         return MechanismResult._make((
-            self, t["columns"], need, phiv.reshape(shape), pts(pos), pts(vel), pts(acc),
-            th.T.reshape(shape + (nl, 2)), lks(om), lks(ep),
-            None if nr != n else react.T.reshape(shape + (npair, 3)),
-            None if nr != n else mbal.reshape(shape),
-            None if nv != n else jred.reshape(shape),
-            None if nr != n else mred.reshape(shape),
-            code.reshape(shape)))
+            self, t["columns"], need, phiv if flat else phiv.reshape(shape),
+            out(pos, (nop, 2)), out(vel, (nop, 2)), out(acc, (nop, 2)), out(th, (nl, 2)),
+            out(om, (nl,)), out(ep, (nl,)), out(react, (npair, 3)), out(mbal), out(jred),
+            out(mred), code if flat else code.reshape(shape)))
 
     def _tables(self):
         """The description as Fortran tables, built once (until the next change)."""
@@ -642,6 +646,10 @@ class Mechanism:
 
     @staticmethod
     def _per_position(name, value, n):
+        if type(value) is float or type(value) is int:         # the common case, quickly
+            if not math.isfinite(value):
+                raise ValueError(f"solve: {name} must be finite")
+            return np.array([value], dtype=float), 0
         a = np.asarray(value)
         if a.dtype.kind not in "fiu":
             raise TypeError(f"solve: {name} must be real numbers")
