@@ -124,7 +124,11 @@ contains
     f%na = sqrt(a11**2 + a12**2 + a21**2 + a22**2)
     f%det = a11*a22 - a12*a21
     f%nadet = 0.0_dp
-    if (f%det /= 0.0_dp) f%nadet = f%na/abs(f%det)
+    f%r = 0.0_dp
+    if (f%det /= 0.0_dp) then
+      f%r(1) = 1.0_dp/f%det
+      f%nadet = f%na*abs(f%r(1))
+    end if
     f%st = st_ok
     if (f%det == 0.0_dp .or. .not. f%nadet <= huge(1.0_dp)) f%st = st_singular
   end subroutine cramer_set
@@ -138,8 +142,8 @@ contains
     rel = huge(1.0_dp)
     st = f%st
     if (st /= st_ok) return
-    y1 = (b1*f%lu(2, 2) - f%lu(1, 2)*b2)/f%det
-    y2 = (f%lu(1, 1)*b2 - f%lu(2, 1)*b1)/f%det
+    y1 = (b1*f%lu(2, 2) - f%lu(1, 2)*b2)*f%r(1)     ! r(1) = 1/det (cramer_set)
+    y2 = (f%lu(1, 1)*b2 - f%lu(2, 1)*b1)*f%r(1)
     if (.not. (abs(y1) <= huge(y1) .and. abs(y2) <= huge(y2))) then
       y1 = 0.0_dp; y2 = 0.0_dp
       st = st_range
