@@ -228,6 +228,22 @@ def main():
         for case, path, n, t, ref, err in rows:
             f.write(f'"{case}","{path}",{n},{t:.6e},{"" if ref is None else t / ref},'
                     f'{"" if err is None else err}\n')
+    try:
+        import matplotlib
+        matplotlib.use("Agg")
+        import matplotlib.pyplot as plt
+    except ImportError:
+        return
+    fig, ax = plt.subplots(figsize=(9, 5.5))
+    labels = [f"{case}: {path}" for case, path, *_ in rows]
+    ax.barh(range(len(rows)), [t / n * 1e9 for _, _, n, t, _, _ in rows],
+            color=["C1" if "Mechanism" in p else "C0" for _, p, *_ in rows])
+    ax.set_yticks(range(len(rows)), labels, fontsize=7)
+    ax.invert_yaxis()
+    ax.set_xlabel("time per position, ns (CPU time of the process)")
+    ax.set_title("sarkp.Mechanism (orange) against hand-written loops and peers")
+    fig.tight_layout()
+    fig.savefig(res / "mechanism.png", dpi=110)
 
 
 if __name__ == "__main__":
