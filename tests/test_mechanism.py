@@ -491,6 +491,35 @@ def test_positions_agree_with_pylinkage():
     np.testing.assert_allclose(theirs, ours, rtol=0, atol=1e-12)
 
 
+def test_sixbar_positions_agree_with_pylinkage():
+    """Program X's six-bar: a lever point (pylinkage's FixedDyad) and an RRP group."""
+    pytest.importorskip("pylinkage")
+    from pylinkage.actuators import Crank
+    from pylinkage.components import Ground
+    from pylinkage.dyads import FixedDyad, RRPDyad, RRRDyad
+    from pylinkage.simulation import Linkage
+    n = 72
+    g = COURSE
+    xc, yc = -g["roc"] * math.sin(g["delta"]), g["roc"] * math.cos(g["delta"])
+    phi = 2 * math.pi * np.arange(n) / n
+    r = sixbar(loads=False).solve(phi, need="positions")
+    O, C = Ground(0.0, 0.0, name="O"), Ground(xc, yc, name="C")
+    G1, G2 = Ground(0.0, g["h5"] + yc, name="G1"), Ground(1.0, g["h5"] + yc, name="G2")
+    crank = Crank(anchor=O, radius=g["roa"], angular_velocity=2 * math.pi / n,
+                  initial_angle=-2 * math.pi / n, name="A")
+    B = RRRDyad(crank.output, C, distance1=g["rab"], distance2=g["rcb"],
+                x=r.position("B")[0, 0], y=r.position("B")[0, 1], name="B")
+    D = FixedDyad(C, B, distance=g["rcd"], angle=math.pi, name="D")
+    E = RRPDyad(D, G1, G2, distance=g["rde"], name="E")
+    E.x, E.y = r.position("E")[0]
+    linkage = Linkage([O, C, crank, B, G1, G2, D, E], name="sixbar")
+    pos = np.array([[c for c in step] for step in linkage.step(iterations=n)])
+    names = [c.name for c in linkage.components]
+    for p in "BDE":
+        np.testing.assert_allclose(pos[:, names.index(p)], r.position(p), rtol=0,
+                                   atol=1e-12, err_msg=p)
+
+
 # -- law of motion ----------------------------------------------------------------------------
 
 def test_startup_from_rest_with_spring_against_solve_ivp():
@@ -620,3 +649,54 @@ def test_bad_solve_input():
         n = Mechanism()
         n.fixed("O", 0, 0)
         n.rrr("B", "O", "O", 1, 1)
+
+
+def test_bad_description_other_kinds():
+    m = Mechanism()
+    m.fixed("O", 0.0, 0.0)
+    m.fixed("G", 0.0, 0.05)
+    m.crank("A", "O", 0.1)
+    with pytest.raises(ValueError, match="joint 'A' is not a frame point"):
+        m.prp("B", "A", 0.0, "G", 0.5)
+    with pytest.raises(ValueError, match="parallel to the guide"):
+        m.rpp("K", "G", 0.0, "A", 0.0)
+    with pytest.raises(ValueError, match="unknown joint 'Z'"):
+        m.rpr("B", "A", "Z", 0.1)
+    m.prp("B", "A", math.pi / 2, "G", 0.0, guide_m=("O", "A"))
+    with pytest.raises(ValueError, match="does not turn with the link"):
+        m.point("X", "B", "A", 0.1)
+    with pytest.raises(ValueError, match="centre off joint 'B'"):
+        m.mass("B", "A", mass=1.0, centre=0.1)
+    with pytest.raises(ValueError, match="not on link"):
+        m.force("A", 1.0, 0.0, link=("B", "G"))
+    with pytest.raises(ValueError, match="several links"):
+        m.mass("B", mass=1.0)                       # two sliders meet at B: name one
+    r = m.solve(np.linspace(-1.0, 1.0, 5), need="forces")
+    with pytest.raises(ValueError, match="several pairs at 'B' match"):
+        r.reaction("B")
+
+
+def test_omega_per_position_is_each_position_alone():
+    m = fourbar()
+    w = np.linspace(1.0, 5.0, PHI.size)
+    e = np.linspace(-2.0, 2.0, PHI.size)
+    r = m.solve(PHI, omega=w, epsilon=e, need="forces", gravity=G)
+    for i in (0, 7, 20):
+        ri = m.solve(PHI[i], omega=w[i], epsilon=e[i], need="forces", gravity=G)
+        np.testing.assert_array_equal(r.acceleration("B")[i], ri.acceleration("B"))
+        assert r.balancing_moment[i] == ri.balancing_moment
+
+
+def test_nan_positions_with_forces():
+    m = Mechanism()
+    m.fixed("O", 0.0, 0.0)
+    m.fixed("C", 0.5, 0.0)
+    m.crank("A", "O", 0.2)
+    m.rrr("B", "A", "C", 0.2, 0.2)
+    m.mass("A", "B", mass=1.0, centre=0.1)
+    phi = np.linspace(0.0, math.pi, 7)
+    r = m.solve(phi, omega=2.0, need="forces", gravity=G, on_error="nan")
+    bad = r.status != 0
+    assert bad.any() and not bad.all()
+    assert np.all(np.isnan(r.balancing_moment[bad])) and np.all(np.isnan(r.reaction("B")[bad]))
+    assert np.all(np.isfinite(r.balancing_moment[~bad]))
