@@ -895,8 +895,6 @@ class _MechanismBase(Result):
     def animate(self, path, *, fps=20, every=1, paths=()):
         """An animation over the sweep written to ``path`` (.gif through Pillow, .mp4
         through ffmpeg: matplotlib's writers)."""
-        import matplotlib
-        matplotlib.use(matplotlib.get_backend())
         import matplotlib.pyplot as plt
         from matplotlib import animation
         pts, links, fixed = self._drawing()
