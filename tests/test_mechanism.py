@@ -641,7 +641,7 @@ def test_bad_solve_input():
     with pytest.raises(TypeError, match="phi"):
         m.solve("a")
     m.force("A", np.ones(5), 0.0)
-    with pytest.raises(ValueError, match="5 values for 37 positions"):
+    with pytest.raises(ValueError, match="force at 'A': fx has 5 values for 37 positions"):
         m.solve(PHI, need="forces")
     with pytest.raises(ValueError, match="no crank"):
         Mechanism().solve(PHI)

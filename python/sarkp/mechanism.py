@@ -630,12 +630,13 @@ class Mechanism:
         if key in t["loads"]:
             return t["loads"][key]
         fval = np.zeros((2, len(t["forces"]), key[0]), order="F")
-        for j, (_, _, fx, fy) in enumerate(t["forces"]):
-            fval[0, j, :] = self._values_for("force", fx, n)
-            fval[1, j, :] = self._values_for("force", fy, n)
+        names = {i: nm for nm, i in self._points.items()}
+        for j, (p, _, fx, fy) in enumerate(t["forces"]):
+            fval[0, j, :] = self._values_for(f"force at {names[p]!r}: fx", fx, n)
+            fval[1, j, :] = self._values_for(f"force at {names[p]!r}: fy", fy, n)
         tval = np.zeros((len(t["torques"]), key[1]), order="F")
-        for j, (_, M) in enumerate(t["torques"]):
-            tval[j, :] = self._values_for("torque", M, n)
+        for j, (li, M) in enumerate(t["torques"]):
+            tval[j, :] = self._values_for(f"torque on {self._links[li].label}: M", M, n)
         t["loads"] = {key: (fval, tval)}
         return fval, tval
 
@@ -669,8 +670,7 @@ class Mechanism:
         if np.ndim(value) == 0:
             return value
         if len(value) != n:
-            raise ValueError(f"solve: a {who} array has {len(value)} values for {n} "
-                             f"positions")
+            raise ValueError(f"solve: {who} has {len(value)} values for {n} positions")
         return value
 
     def _step_text(self, k):
