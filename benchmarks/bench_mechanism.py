@@ -7,7 +7,8 @@ Cases (corrected mode, crank at omega = 3 rad/s, phi_k = 2 pi k / N):
 1. program X's six-bar (sarkp.book.x_mechanism's geometry, no loads), full kinematics
    (positions, velocities, accelerations of every moving point and link), Mechanism.solve
    against ``sixbar`` of mechanism_loops.c (the same outputs in the same layout), at
-   N = 1e5 and N = 360;
+   N = 1e5 and N = 360 (the C loop also built without -march=native, as meson builds
+   sarkp);
 2. the same six-bar, positions only against full kinematics (both through Mechanism);
 3. the four-bar of bench_kinematics.py (OA 0.1, AB 0.35, CB 0.3, C = (0.4, 0)), full
    kinematics, Mechanism against fourbar.c (which also forms the book's polar outputs:
@@ -75,11 +76,12 @@ class Loops:
 
     FLAGS = ["-O3", "-march=native", "-shared", "-fPIC"]
 
-    def __init__(self):
+    def __init__(self, native=True):
         cc = shutil.which("cc") or shutil.which("gcc")
         self._tmp = tempfile.TemporaryDirectory()
         lib = pathlib.Path(self._tmp.name) / "libloops.so"
-        subprocess.run([cc, *self.FLAGS, "-o", str(lib), str(HERE / "mechanism_loops.c"),
+        flags = self.FLAGS if native else [f for f in self.FLAGS if f != "-march=native"]
+        subprocess.run([cc, *flags, "-o", str(lib), str(HERE / "mechanism_loops.c"),
                         str(HERE / "fourbar.c"), "-lm"], check=True)
         self.lib = ctypes.CDLL(str(lib))
         arr = np.ctypeslib.ndpointer(np.float64, flags="C_CONTIGUOUS")
@@ -149,6 +151,7 @@ def fourbar_mechanism(loads=False):
 
 def main():
     loops = Loops()
+    generic = Loops(native=False)
     rows = []
 
     def add(case, path, n, t, ref=None, err=None):
@@ -165,12 +168,16 @@ def main():
                   np.max(np.abs(r.omegas - om)), np.max(np.abs(r.directions - dr)))
         t = best_of({"mech": lambda: six.solve(phi, omega=W1, need="accelerations"),
                      "c": lambda: loops.sixbar(phi, 3, g),
+                     "cgen": lambda: generic.sixbar(phi, 3, g),
                      "mechpos": lambda: six.solve(phi, omega=W1, need="positions"),
                      "mechvel": lambda: six.solve(phi, omega=W1, need="velocities"),
                      "cpos": lambda: loops.sixbar(phi, 1, g)})
         case = f"six-bar (program X), N = {n}"
         add(case, "C loop (mechanism_loops.c sixbar), full", n, t["c"])
         add(case, "Mechanism.solve, full (accelerations)", n, t["mech"], t["c"], err)
+        add(case, "C loop, full, -O3 without -march=native (as sarkp is built)", n,
+            t["cgen"])
+        add(case, "Mechanism.solve, full, against that C loop", n, t["mech"], t["cgen"])
         add(case, "C loop, positions only", n, t["cpos"])
         add(case, "Mechanism.solve, positions only", n, t["mechpos"], t["mech"])
         add(case, "Mechanism.solve, velocities", n, t["mechvel"], t["mech"])
@@ -234,7 +241,7 @@ def main():
         import matplotlib.pyplot as plt
     except ImportError:
         return
-    fig, ax = plt.subplots(figsize=(9, 5.5))
+    fig, ax = plt.subplots(figsize=(11, 6.5))
     labels = [f"{case}: {path}" for case, path, *_ in rows]
     ax.barh(range(len(rows)), [t / n * 1e9 for _, _, n, t, _, _ in rows],
             color=["C1" if "Mechanism" in p else "C0" for _, p, *_ in rows])
