@@ -700,3 +700,25 @@ def test_nan_positions_with_forces():
     assert bad.any() and not bad.all()
     assert np.all(np.isnan(r.balancing_moment[bad])) and np.all(np.isnan(r.reaction("B")[bad]))
     assert np.all(np.isfinite(r.balancing_moment[~bad]))
+
+
+def test_guides_on_moving_links_coriolis():
+    """Kinds 2 and 5 with their guides on a turning link: the Coriolis and transport terms
+    against central differences; the slider stays on the turning guide."""
+    m = Mechanism()
+    m.fixed("O", 0.0, 0.0)
+    m.fixed("C", 0.5, 0.1)
+    m.crank("A", "O", 0.15)
+    m.rrr("B", "A", "C", 0.45, 0.3)
+    # a slider E on a guide carried by the rocker C-B (through C, at 0.3 rad from C->B),
+    # pushed by the rod A-E
+    m.rrp("E", "A", "C", 0.3, 0.5, guide=("C", "B"))
+    # a slotted link on a guide through B along A-B, with a block pivoted at the crank pin
+    m.rpp("K", "B", 0.2, "A", 1.2, guide=("A", "B"))
+    phi = np.linspace(0.0, 2 * math.pi, 25)
+    check_derivatives(m, ["E", "K"], phi=phi, links=[("A", "E"), ("K", "B"), ("A", "K")])
+    r = m.solve(phi, need="positions")
+    C, E = np.array([0.5, 0.1]), r.position("E")
+    u = np.stack([np.cos(r.angle("C", "B") + 0.3), np.sin(r.angle("C", "B") + 0.3)], -1)
+    np.testing.assert_allclose(cross(u, E - C), 0.0, atol=1e-15)
+    np.testing.assert_allclose(np.hypot(*(E - r.position("A")).T), 0.5, rtol=1e-15)
