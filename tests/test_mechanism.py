@@ -722,3 +722,21 @@ def test_guides_on_moving_links_coriolis():
     u = np.stack([np.cos(r.angle("C", "B") + 0.3), np.sin(r.angle("C", "B") + 0.3)], -1)
     np.testing.assert_allclose(cross(u, E - C), 0.0, atol=1e-15)
     np.testing.assert_allclose(np.hypot(*(E - r.position("A")).T), 0.5, rtol=1e-15)
+
+
+def test_crank_alone_closed_form():
+    """A crank with its own mass: M_b = J_O epsilon + m g x_S, the pivot's force
+    m (a_S + g) with J_O = J_S + m s**2; J_red = J_O."""
+    m = Mechanism()
+    m.fixed("O", 0.0, 0.0)
+    m.crank("A", "O", 0.2)
+    m.mass("O", "A", mass=2.0, inertia=0.1, centre=0.1)
+    w, e = 2.0, 1.5
+    r = m.solve(PHI, omega=w, epsilon=e, need="forces", gravity=G)
+    J_O = 0.1 + 2.0 * 0.1**2
+    np.testing.assert_allclose(r.balancing_moment, J_O * e + 2.0 * G * 0.1 * np.cos(PHI),
+                               rtol=1e-13, atol=1e-14)
+    aS = 0.1 * np.stack([-w * w * np.cos(PHI) - e * np.sin(PHI),
+                         -w * w * np.sin(PHI) + e * np.cos(PHI)], -1)
+    np.testing.assert_allclose(r.reaction("O"), 2.0 * (aS + [0.0, G]), rtol=1e-13, atol=1e-13)
+    np.testing.assert_allclose(r.reduced_inertia, J_O, rtol=1e-15)
