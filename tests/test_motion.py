@@ -267,15 +267,28 @@ def test_the_crank_stops_inside_the_grid():
     assert np.isfinite(r.t[:16]).all() and np.isnan(r.t[16:]).all()
 
 
-def test_results_pickle_and_print_short():
+def test_results_pickle_print_short_and_convert():
+    """sarkp.results' base: a named tuple that pickles, prints a few values of each array
+    (not 2001), and converts to a DataFrame (pandas optional)."""
     phi = np.linspace(0.0, 2 * math.pi, 2001)
     r = motion(phi, 2.0, 10 * np.sin(phi), omega_mean=4.0)
     back = pickle.loads(pickle.dumps(r))
     assert np.array_equal(back.omega, r.omega) and back.delta == r.delta
-    assert len(repr(r)) < 200 and "2001 points" in repr(r)
+    assert isinstance(r, sarkp.results.Result) and r._fields[:3] == ("phi", "omega", "t")
+    p, w, t = r[:3]
+    assert w is r.omega
+    assert len(repr(r)) < 600 and "..." in repr(r)
     fw = flywheel(phi, 2.0, 10 * np.sin(phi), delta=0.01, omega_mean=4.0)
     back = pickle.loads(pickle.dumps(fw))
-    assert back.J_flywheel == fw.J_flywheel and len(repr(fw)) < 200
+    assert back.J_flywheel == fw.J_flywheel and len(repr(fw)) < 600
+    p37 = np.linspace(0.0, 2 * math.pi, 37)
+    x = pickle.loads(pickle.dumps(sarkp.DMHVK_EXACT(37, 37.0, 3.0, 1.0, np.sin(p37),
+                                                    np.zeros(37), 0.1)))
+    assert x._fields == ("IMHVK", "IMERK", "DELTA")
+    pd = pytest.importorskip("pandas")
+    frame = r.to_frame()
+    assert isinstance(frame, pd.DataFrame) and len(frame) == 2001
+    assert np.array_equal(frame["omega"].to_numpy(), r.omega)
 
 
 _PHI = np.linspace(0.0, 2 * math.pi, 9)

@@ -20,13 +20,13 @@ both ends included: M points, step H = 2*pi/(M - 1).
 from __future__ import annotations
 
 import math
-from collections import namedtuple
 
 import numpy as np
 
 from .errors import RequirementError, Status
 from .library import ST_REQUIREMENT, Check, as_real_array, book_routine
 from .modes import get_mode
+from .results import result_type
 
 __all__ = ["DZKNDV", "DMHVK", "DMHVK_EXACT", "motion", "flywheel", "Motion", "Flywheel"]
 
@@ -120,7 +120,8 @@ DZKNDV = book_routine(
     has its extremes (where omega has them, exactly so for ISPR = 0), checked by the pass
     that computes WPR (repeated with WPR's extremes if they sit elsewhere; Newton's method
     inside a bracket if that does not settle).  For a fourth-order law of motion on any
-    grid, from rest too, see :func:`sarkp.motion`.  PI is 3.14159 as printed (the listing's local PI, L5955).
+    grid, from rest too, see :func:`sarkp.motion`.  PI is 3.14159 as printed (the
+    listing's local PI, L5955).
     The printed DINTGR writes a line to unit 3 on every call; nothing is printed here.
     """)
 
@@ -208,80 +209,41 @@ _GAUSS2 = np.polynomial.legendre.leggauss(2)
 _GAUSS4 = np.polynomial.legendre.leggauss(4)
 
 
-class Motion:
-    """The law of motion of the crank over a grid (the result of :func:`motion`).
+Motion = result_type(
+    "Motion", ("phi", "omega", "t", "E0", "M_constant", "omega_mean", "delta", "status"),
+    doc="""The law of motion of the crank over a grid (the result of :func:`motion`).
 
-    Attributes
-    ----------
-    phi, omega, t : ndarray
-        The grid (rad), the angular velocity there (rad/s), the time (s).
-    E0 : float
-        The constant of the energy equation ``J omega**2/2 = E0 + A`` (J).
-    M_constant : float
-        The constant moment added to M (N*m): 0 from a given start; for the steady state,
-        ``-A(end)/(phi[-1] - phi[0])``, which makes the cycle's work zero (as DZKNDV's
-        ASUM does).
-    omega_mean : float
-        ``(max omega + min omega)/2`` over the grid (the book's mean, L6044).
-    delta : float
-        The coefficient of speed fluctuation ``(max omega - min omega)/omega_mean``.
-    status : sarkp.Status
-        OK, or REQUIREMENT when (``on_error="nan"``) the crank stops inside the grid:
-        omega and t are NaN from there on.
-    """
+    Fields: ``phi``, ``omega``, ``t`` -- the grid (rad), the angular velocity there
+    (rad/s), the time (s); ``E0`` -- the constant of the energy equation ``J omega**2/2 =
+    E0 + A`` (J); ``M_constant`` -- the constant moment added to M (N*m): 0 from a given
+    start; for the steady state ``-A(end)/(phi[-1] - phi[0])``, which makes the cycle's
+    work zero (as DZKNDV's ASUM does); ``omega_mean`` -- ``(max omega + min omega)/2``
+    over the grid (the book's mean, L6044); ``delta`` -- the coefficient of speed
+    fluctuation ``(max omega - min omega)/omega_mean``; ``status`` -- sarkp.Status OK, or
+    REQUIREMENT when (``on_error="nan"``) the crank stops inside the grid (omega and t
+    NaN from there on) or the steady motion would stall (all NaN).
+    A sarkp result: a named tuple that pickles, prints short and has ``to_frame()``.""")
 
-    _fields = ("phi", "omega", "t")
+Flywheel = result_type(
+    "Flywheel", ("J_flywheel", "J_merkalov", "delta", "phi", "omega", "t"),
+    doc="""The flywheel for a coefficient of speed fluctuation (:func:`flywheel`'s result).
 
-    def __init__(self, phi, omega, t, E0, M_constant, status=Status.OK):
-        self.phi, self.omega, self.t = phi, omega, t
-        self.E0, self.M_constant, self.status = float(E0), float(M_constant), status
-        ok = omega[np.isfinite(omega)]
-        hi, lo = (ok.max(), ok.min()) if ok.size else (math.nan, math.nan)
-        self.omega_mean = float((hi + lo) / 2.0)
-        self.delta = float((hi - lo) / self.omega_mean) if self.omega_mean else math.nan
-
-    def __repr__(self):
-        n = len(self.phi)
-        return (f"Motion({n} points, phi {self.phi[0]:.6g} .. {self.phi[-1]:.6g} rad, "
-                f"omega_mean={self.omega_mean:.6g} rad/s, delta={self.delta:.6g}, "
-                f"t {self.t[0]:.6g} .. {self.t[-1]:.6g} s)")
-
-    def to_frame(self):
-        """The columns phi, omega, t as a pandas DataFrame (pandas is optional)."""
-        try:
-            import pandas as pd
-        except ImportError:
-            raise ImportError("Motion.to_frame needs pandas (pip install pandas)") from None
-        return pd.DataFrame({"phi": self.phi, "omega": self.omega, "t": self.t})
+    Fields: ``J_flywheel`` -- the moment of inertia to add on the crank (kg*m^2): the
+    steady motion with ``J + J_flywheel`` has exactly the coefficient asked for
+    (negative when the machine fluctuates less than that without a flywheel);
+    ``J_merkalov`` -- DMHVK's approximation (Merkalov's method, eqs. (8.22)/(8.24)),
+    which neglects the variable part of J: ``swing of (A - (J - J_c) omega_mean**2/2)/
+    (delta omega_mean**2) - J_c`` with J_c the constant part; ``delta`` -- the
+    coefficient of that steady motion, computed again; ``phi``, ``omega``, ``t`` -- that
+    steady motion.  A sarkp result (pickles, prints short, ``to_frame()``).""")
 
 
-class Flywheel:
-    """The flywheel for a coefficient of speed fluctuation (the result of :func:`flywheel`).
-
-    Attributes
-    ----------
-    J_flywheel : float
-        The moment of inertia to add on the crank (kg*m^2): the steady motion with
-        ``J + J_flywheel`` has exactly the coefficient asked for.  Negative when the
-        machine fluctuates less than that without a flywheel.
-    J_merkalov : float
-        DMHVK's approximation (Merkalov's method, eqs. (8.22)/(8.24)), which neglects the
-        variable part of J: ``swing of (A - (J - J_c) omega_mean**2/2)/(delta
-        omega_mean**2) - J_c`` with J_c the constant part.
-    delta : float
-        The coefficient of the steady motion with ``J + J_flywheel``, computed again.
-    motion : Motion
-        That steady motion.
-    """
-
-    def __init__(self, J_flywheel, J_merkalov, motion):
-        self.J_flywheel, self.J_merkalov = float(J_flywheel), float(J_merkalov)
-        self.motion = motion
-        self.delta = motion.delta
-
-    def __repr__(self):
-        return (f"Flywheel(J_flywheel={self.J_flywheel:.10g} kg*m^2, J_merkalov="
-                f"{self.J_merkalov:.10g} kg*m^2, delta={self.delta:.12g})")
+def _motion(phi, omega, t, e0, mc, status=Status.OK):
+    ok = omega[np.isfinite(omega)]
+    hi, lo = (float(ok.max()), float(ok.min())) if ok.size else (math.nan, math.nan)
+    mean = (hi + lo) / 2.0
+    delta = (hi - lo) / mean if mean else math.nan
+    return Motion(phi, omega, t, float(e0), float(mc), mean, delta, status)
 
 
 def _real_vector(name, value, n=None):
@@ -290,14 +252,16 @@ def _real_vector(name, value, n=None):
     if n is not None and a.ndim == 0:
         a = np.full(n, float(a))
     if a.ndim != 1:
-        raise ValueError(f"{name.split(':')[0]}: {arg} must be one-dimensional (or a number), "
+        raise ValueError(f"{name.split(':')[0]}: {arg} must be one-dimensional (or a "
+                         f"number), "
                          f"not of shape {a.shape}")
     if n is not None and len(a) != n:
         raise ValueError(f"{name.split(':')[0]}: {arg} has {len(a)} values but phi has {n}")
     bad = ~np.isfinite(a)
     if bad.any():
         k = int(np.flatnonzero(bad)[0])
-        raise ValueError(f"{name.split(':')[0]}: {arg}[{k}] = {float(a[k])!r} is not a finite number")
+        raise ValueError(f"{name.split(':')[0]}: {arg}[{k}] = {float(a[k])!r} is not a "
+                         f"finite number")
     return np.array(a, dtype=float)
 
 
@@ -500,7 +464,8 @@ def motion(phi, J, M, *, omega0=0.0, t0=0.0, omega_mean=None, on_error="raise"):
     -------
     Motion
         ``.phi, .omega, .t``, and ``.E0``, ``.M_constant``, ``.omega_mean``, ``.delta``
-        (the coefficient of speed fluctuation), ``.status``.
+        (the coefficient of speed fluctuation), ``.status`` (a sarkp result: a named
+        tuple that pickles, prints short and has ``to_frame()``).
 
     Raises
     ------
@@ -530,7 +495,8 @@ def motion(phi, J, M, *, omega0=0.0, t0=0.0, omega_mean=None, on_error="raise"):
                              f"motion), not both")
         if abs(J[-1] - J[0]) > 1e-9 * J.max():
             raise ValueError(f"{who}: the steady motion needs a grid over exactly one "
-                             f"cycle, but J[0] = {float(J[0])!r} differs from J[-1] = {float(J[-1])!r}")
+                             f"cycle, but J[0] = {float(J[0])!r} differs from J[-1] = "
+                             f"{float(J[-1])!r}")
         mc = -A[-1] / (phi[-1] - phi[0])
         asum = A + mc * (phi - phi[0])
         e0 = _steady_energy(asum, J, wm)
@@ -538,10 +504,10 @@ def motion(phi, J, M, *, omega0=0.0, t0=0.0, omega_mean=None, on_error="raise"):
             if on_error == "raise":
                 raise RequirementError(_stall_message(who, wm))
             nan = np.full(n, np.nan)
-            return Motion(phi, nan, nan.copy(), math.nan, mc, Status.REQUIREMENT)
+            return _motion(phi, nan, nan.copy(), math.nan, mc, Status.REQUIREMENT)
         omega = _speeds(e0, asum, J)
         t = t0 + _cumulative(first, w, 1.0 / omega)
-        return Motion(phi, omega, t, e0, mc)
+        return _motion(phi, omega, t, e0, mc)
     if not omega0 >= 0.0:
         raise ValueError(f"{who}: omega0 = {omega0!r} must be >= 0 (the crank turns "
                          f"towards increasing phi)")
@@ -558,7 +524,8 @@ def motion(phi, J, M, *, omega0=0.0, t0=0.0, omega_mean=None, on_error="raise"):
         if on_error == "raise":
             raise RequirementError(
                 f"{who}: the crank comes to rest between phi[{stop - 1}] = "
-                f"{float(phi[stop - 1])!r} and phi[{stop}] = {float(phi[stop])!r} (the kinetic energy "
+                f"{float(phi[stop - 1])!r} and phi[{stop}] = {float(phi[stop])!r} (the "
+                f"kinetic energy "
                 f"reaches zero); a larger omega0 or driving moment is needed to pass")
         status = Status.REQUIREMENT
     omega = np.full(n, np.nan)
@@ -567,7 +534,7 @@ def motion(phi, J, M, *, omega0=0.0, t0=0.0, omega_mean=None, on_error="raise"):
     omega[:stop] = np.sqrt(np.maximum(2.0 * Ep / Jp, 0.0))
     t[0] = t0
     if stop < 4:                                         # too few points for the rule
-        return Motion(phi, omega, t, e0, 0.0, status)
+        return _motion(phi, omega, t, e0, 0.0, status)
     if M[0] > 0.0:                                       # 1/omega = g/sqrt(s + c)
         c = e0 / M[0]
         s = p - p[0]
@@ -579,7 +546,7 @@ def motion(phi, J, M, *, omega0=0.0, t0=0.0, omega_mean=None, on_error="raise"):
     else:
         fs, ws = _cubic_weights(p)
         t[:stop] = t0 + _cumulative(fs, ws, 1.0 / omega[:stop])
-    return Motion(phi, omega, t, e0, 0.0, status)
+    return _motion(phi, omega, t, e0, 0.0, status)
 
 
 def _exact_flywheel(a, j, w, delta):
@@ -666,7 +633,7 @@ def flywheel(phi, J, M, *, delta, omega_mean, J_constant=None):
     Flywheel
         ``.J_flywheel`` (exact; negative when less fluctuation than delta needs no
         flywheel), ``.J_merkalov``, ``.delta`` (realized: the steady motion with
-        ``J + J_flywheel`` computed again) and ``.motion`` (that motion).
+        ``J + J_flywheel`` computed again) and ``.phi, .omega, .t`` (that motion).
     """
     who = "flywheel"
     phi, J, M = _grid(who, phi, J, M)
@@ -679,7 +646,8 @@ def flywheel(phi, J, M, *, delta, omega_mean, J_constant=None):
         raise ValueError(f"{who}: omega_mean = {wm!r} must be > 0")
     if abs(J[-1] - J[0]) > 1e-9 * J.max():
         raise ValueError(f"{who}: the steady motion needs a grid over exactly one cycle, "
-                         f"but J[0] = {float(J[0])!r} differs from J[-1] = {float(J[-1])!r}")
+                         f"but J[0] = {float(J[0])!r} differs from J[-1] = "
+                         f"{float(J[-1])!r}")
     if J_constant is None:
         jc = float(J.min())
     else:
@@ -693,10 +661,11 @@ def flywheel(phi, J, M, *, delta, omega_mean, J_constant=None):
     asum = A + mc * (phi - phi[0])
     jf, _ = _exact_flywheel(asum, J, wm, delta)
     mo = motion(phi, J + jf, M, omega_mean=wm)
-    return Flywheel(jf, _merkalov(asum, J, wm, delta, jc), mo)
+    return Flywheel(float(jf), _merkalov(asum, J, wm, delta, jc), mo.delta, mo.phi,
+                    mo.omega, mo.t)
 
 
-_DMHVK_EXACT = namedtuple("DMHVK_EXACT", ("IMHVK", "IMERK", "DELTA"))
+_DMHVK_EXACT = result_type("DMHVK_EXACT", ("IMHVK", "IMERK", "DELTA"))
 
 
 def DMHVK_EXACT(M, ZM, W1, ISC, MPR, ISPR, DELTA):
@@ -715,8 +684,8 @@ def DMHVK_EXACT(M, ZM, W1, ISC, MPR, ISPR, DELTA):
     there (a bisection takes over if they move).  This is the book's own tangent
     construction on the energy-mass diagram, eqs. (8.20)-(8.21) (L6018-6030), with the
     tangent points found exactly; DMHVK's (8.22)/(8.24) takes them at DEC's extremes,
-    which are omega's only for a constant inertia (ERRATA E-T8-3).  As printed, DZKNDV's linear law (8.17)
-    makes DMHVK itself exact: IMHVK = IMERK.
+    which are omega's only for a constant inertia (ERRATA E-T8-3).  As printed,
+    DZKNDV's linear law (8.17) makes DMHVK itself exact: IMHVK = IMERK.
 
     Parameters
     ----------
@@ -740,7 +709,8 @@ def DMHVK_EXACT(M, ZM, W1, ISC, MPR, ISPR, DELTA):
     delta = _scalar("DMHVK_EXACT", "DELTA", DELTA)
     if not 0.0 < delta < 1.0:
         raise ValueError(f"DMHVK_EXACT: DELTA = {delta!r}, the coefficient of speed "
-                         f"fluctuation (omega_max - omega_min)/omega_sr, must lie in (0, 1)")
+                         f"fluctuation (omega_max - omega_min)/omega_sr, must lie in "
+                         f"(0, 1)")
     first = DZKNDV(M, ZM, W1, ISC, MPR, ISPR, on_error="nan")
     if np.isnan(first.DEC).all():                      # ZM != M: raise its error
         DZKNDV(M, ZM, W1, ISC, MPR, ISPR)
