@@ -205,7 +205,8 @@ contains
   ! (omega_max - omega_min)/W1 at DELTA, neglecting the variable part J_v (J_A = J_B = J_c,
   ! L6034).  DEC is an input (the comment lists it under RESULT: E-DMHVK-2).  A negative
   ! IMHVK means that no flywheel is needed.  With DEC from DZKNDV, DZKNDV rerun with ISC +
-  ! IMHVK gives exactly DELTA: as printed for any ISPR, corrected for ISPR = 0.
+  ! IMHVK gives exactly DELTA: as printed for any ISPR, corrected for ISPR = 0 (otherwise
+  ! Merkalov's approximation, E-T8-3; the Python layer's DMHVK_EXACT is the exact one).
   ! The listing has 6 arguments; the only call in the book (L7631), whose printed result
   ! IMH = 4507.27 (L7203) shows that it ran, passes AAA before IMHVK, as every routine of
   ! the library does: the print flag is kept (E-DMHVK-1).

@@ -177,7 +177,11 @@ DMHVK = book_routine(
     With DEC from DZKNDV, DZKNDV rerun with ``ISC + IMHVK`` gives exactly the coefficient
     DELTA: as printed for any ISPR (the linear law (8.17)), in corrected mode for
     ISPR = 0 (then the energy equation gives it exactly too, since
-    (omega_max**2 - omega_min**2)/2 = delta*omega_sr**2).  The printed ``C1 + ABS(C2)``
+    (omega_max**2 - omega_min**2)/2 = delta*omega_sr**2); with a variable ISPR it is
+    Merkalov's approximation (Fig. 96's machine: 0.00997 for 0.01; ERRATA E-T8-3), and
+    :func:`DMHVK_EXACT` gives the exact flywheel beside it.  When the machine stalls
+    without a flywheel, DZKNDV's ``on_error="nan"`` result (or its error's ``.result``)
+    still holds DEC.  The printed ``C1 + ABS(C2)``
     is the swing C1 - C2 whenever C1 >= 0 >= C2, which DZKNDV's DEC (DEC[0] = 0) always
     satisfies; the swing is used for any DEC (ERRATA E-DMHVK-3).
     """)
