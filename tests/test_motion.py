@@ -240,6 +240,22 @@ def test_flywheel_not_needed_is_negative():
     assert fw.J_flywheel < 0 and fw.delta == pytest.approx(0.1, rel=1e-12)
 
 
+def test_flywheel_when_the_closed_form_misses():
+    """A large delta on a machine whose inertia nearly vanishes at one angle: at DEC's
+    extremes the closed form asks for J_flywheel = -2.74, which would make J + J_flywheel
+    negative there; the bisection over J_flywheel then finds the exact one."""
+    phi = np.linspace(0.0, 2 * math.pi, 73)
+    J = 0.053146296753943396 + \
+        12.20434452565231 * (1 + np.cos(phi + 4.563585180590357)) ** 2
+    M = 48.63049134723755 * np.sin(phi + 1.3065391833085378) + \
+        19.175904355867573 * np.sin(3 * phi)
+    delta = 0.7817535577353678
+    fw = flywheel(phi, J, M, delta=delta, omega_mean=3.0)
+    assert fw.delta == pytest.approx(delta, rel=1e-12, abs=0)
+    again = motion(phi, J + fw.J_flywheel, M, omega_mean=3.0)
+    assert again.delta == pytest.approx(delta, rel=1e-12, abs=0)
+
+
 def test_a_stall_without_flywheel_and_the_flywheel_that_cures_it():
     phi = np.linspace(0.0, 2 * math.pi, 73)
     M = 300 * np.sin(phi)
