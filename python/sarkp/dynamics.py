@@ -250,22 +250,21 @@ def _motion(phi, omega, t, e0, mc, status=Status.OK):
     return Motion(phi, omega, t, float(e0), float(mc), mean, delta, status)
 
 
-def _real_vector(name, value, n=None):
-    a = as_real_array(name.split(":")[0], name.split(":")[-1], value)
-    arg = name.split(":")[-1]
+def _real_vector(who, arg, value, n=None):
+    """``value`` as a 1-D float array (a number repeated n times when n is given), finite,
+    of length n; else TypeError/ValueError naming ``arg``."""
+    a = as_real_array(who, arg, value)
     if n is not None and a.ndim == 0:
         a = np.full(n, float(a))
     if a.ndim != 1:
-        raise ValueError(f"{name.split(':')[0]}: {arg} must be one-dimensional (or a "
-                         f"number), "
-                         f"not of shape {a.shape}")
+        raise ValueError(f"{who}: {arg} must be one-dimensional (or a number), not of "
+                         f"shape {a.shape}")
     if n is not None and len(a) != n:
-        raise ValueError(f"{name.split(':')[0]}: {arg} has {len(a)} values but phi has {n}")
+        raise ValueError(f"{who}: {arg} has {len(a)} values but phi has {n}")
     bad = ~np.isfinite(a)
     if bad.any():
         k = int(np.flatnonzero(bad)[0])
-        raise ValueError(f"{name.split(':')[0]}: {arg}[{k}] = {float(a[k])!r} is not a "
-                         f"finite number")
+        raise ValueError(f"{who}: {arg}[{k}] = {float(a[k])!r} is not a finite number")
     return np.array(a, dtype=float)
 
 
@@ -281,7 +280,7 @@ def _scalar(who, arg, value):
 
 def _grid(who, phi, J, M):
     """phi, J, M checked: a strictly increasing grid of >= 4 points, J > 0, all finite."""
-    phi = _real_vector(f"{who}:phi", phi)
+    phi = _real_vector(who, "phi", phi)
     n = len(phi)
     if n < 4:
         raise ValueError(f"{who}: phi needs at least 4 points (the cubic rule), not {n}")
@@ -290,12 +289,12 @@ def _grid(who, phi, J, M):
         k = int(np.flatnonzero(~(steps > 0))[0])
         raise ValueError(f"{who}: phi must be strictly increasing: phi[{k + 1}] = "
                          f"{float(phi[k + 1])!r} <= phi[{k}] = {float(phi[k])!r}")
-    J = _real_vector(f"{who}:J", J, n)
+    J = _real_vector(who, "J", J, n)
     if not np.all(J > 0):
         k = int(np.flatnonzero(~(J > 0))[0])
         raise ValueError(f"{who}: J, the reduced moment of inertia, must be > 0: "
                          f"J[{k}] = {float(J[k])!r}")
-    M = _real_vector(f"{who}:M", M, n)
+    M = _real_vector(who, "M", M, n)
     return phi, J, M
 
 
