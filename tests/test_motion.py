@@ -352,3 +352,56 @@ def test_wrong_types_are_type_errors():
         motion("0123", 1.0, 1.0)
     with pytest.raises(TypeError, match="delta"):
         flywheel(_PHI, 1.0, np.sin(_PHI), delta=None, omega_mean=1.0)
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_from_rest_against_the_exact_work_and_quad(seed):
+    """Random trigonometric loads that keep the crank turning, from rest: omega within the
+    cubic rule's error bound of sqrt(2 A/J), A the exact work; t(phi) against scipy's quad
+    of t = integral of sqrt(J/(2 A)) ds, taken as 2 g(u^2) du with u = sqrt(s) and
+    g = sqrt(J s/(2 A)) smooth, converging at fourth order."""
+    from scipy.integrate import quad
+
+    rng = np.random.default_rng(seed)
+    a = rng.uniform(-1.0, 1.0, 3)
+    b = rng.uniform(-1.0, 1.0, 3)
+    k = np.arange(1, 4)
+    m_min = rng.uniform(0.5, 3.0)
+    m0 = m_min + np.abs(a).sum() + np.abs(b).sum()           # M >= m_min > 0
+    j0, j1 = rng.uniform(1.0, 3.0), rng.uniform(0.0, 0.9)
+
+    def M(p):
+        p = np.asarray(p)[..., None]
+        return m0 + (a * np.sin(k * p) + b * np.cos(k * p)).sum(-1)
+
+    def A(s):               # the exact work from 0
+        s = np.asarray(s)[..., None]
+        return m0 * s[..., 0] + (a * (1 - np.cos(k * s)) / k + b * np.sin(k * s) / k).sum(-1)
+
+    def J(p):
+        return j0 * (1 + j1 * np.sin(p) ** 2)
+
+    def g(s):
+        return math.sqrt(J(s) * s / (2 * A(s))) if s > 0 else math.sqrt(J(0.0) / (2 * m0))
+
+    end = rng.uniform(2.0, 8.0)
+    checks = (0.3, 0.5, 1.0)          # fractions of the range (nearer the start the error
+    #                                   changes sign before it settles to its h^4 rate)
+    # t = integral of g(s) s^(-1/2) ds = integral of 2 g(u^2) du, u = sqrt(s): smooth
+    exact = [quad(lambda u: 2.0 * g(u * u), 0.0, math.sqrt(f * end), epsabs=0,
+                  epsrel=2e-14, limit=200)[0] for f in checks]
+    errors = []
+    for n in (401, 801, 1601):
+        phi = np.linspace(0.0, end, n)
+        h = phi[1]
+        r = motion(phi, J(phi), M(phi))
+        # the cubic rule's error in A is at most (19/720) h^4 max|M''''| per unit of
+        # angle (19/720: the one-sided end formula; 11/720 inside), A >= m_min s, and
+        # omega's relative error is half A's
+        bound = 0.5 * (19 / 720) * h**4 * (k**4 * (np.abs(a) + np.abs(b))).sum() / m_min
+        rel = np.abs(r.omega[1:] / np.sqrt(2 * A(phi[1:]) / J(phi[1:])) - 1)
+        assert rel.max() <= bound + 1e-15
+        idx = [round(f * (n - 1)) for f in checks]
+        errors.append(max(abs(r.t[i] / t - 1) for i, t in zip(idx, exact)))
+    orders = _orders(errors)
+    assert errors[-1] < 1e-8 and np.all(orders > 3.5), errors
