@@ -376,7 +376,8 @@ def test_from_rest_against_the_exact_work_and_quad(seed):
 
     def A(s):               # the exact work from 0
         s = np.asarray(s)[..., None]
-        return m0 * s[..., 0] + (a * (1 - np.cos(k * s)) / k + b * np.sin(k * s) / k).sum(-1)
+        work = (a * (1 - np.cos(k * s)) / k + b * np.sin(k * s) / k).sum(-1)
+        return m0 * s[..., 0] + work
 
     def J(p):
         return j0 * (1 + j1 * np.sin(p) ** 2)
