@@ -406,3 +406,10 @@ def test_from_rest_against_the_exact_work_and_quad(seed):
         errors.append(max(abs(r.t[i] / t - 1) for i, t in zip(idx, exact)))
     orders = _orders(errors)
     assert errors[-1] < 1e-8 and np.all(orders > 3.5), errors
+
+
+def test_booleans_are_type_errors():
+    with pytest.raises(TypeError, match="J"):
+        motion(_PHI, True, 1.0)
+    with pytest.raises(TypeError, match="M"):
+        motion(_PHI, 1.0, np.ones(9, dtype=bool))

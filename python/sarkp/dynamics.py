@@ -23,7 +23,7 @@ import math
 
 import numpy as np
 
-from .errors import RequirementError, Status
+from .errors import RangeError, RequirementError, Status
 from .library import ST_REQUIREMENT, Check, as_real_array, book_routine
 from .modes import get_mode
 from .results import result_type
@@ -250,9 +250,25 @@ def _motion(phi, omega, t, e0, mc, status=Status.OK):
     return Motion(phi, omega, t, float(e0), float(mc), mean, delta, status)
 
 
+def _finite(who, r):
+    """r, or RangeError where omega or t is not a finite double while the motion was
+    computed there (NaN after the crank stops is the on_error="nan" policy; inf never)."""
+    bad = np.isinf(r.omega) | np.isinf(r.t)
+    if getattr(r, "status", Status.OK) == Status.OK:
+        bad |= np.isnan(r.omega) | np.isnan(r.t)
+    if bad.any():
+        k = int(np.flatnonzero(bad)[0])
+        raise RangeError(f"{who}: omega or t would not be a finite double (overflow) at "
+                         f"phi[{k}] = {float(r.phi[k])!r}; the inputs are too far apart in "
+                         f"magnitude")
+    return r
+
+
 def _real_vector(who, arg, value, n=None):
     """``value`` as a 1-D float array (a number repeated n times when n is given), finite,
     of length n; else TypeError/ValueError naming ``arg``."""
+    if np.asarray(value).dtype == bool:
+        raise TypeError(f"{who}: {arg} must be real numbers, not booleans")
     a = as_real_array(who, arg, value)
     if n is not None and a.ndim == 0:
         a = np.full(n, float(a))
@@ -353,14 +369,17 @@ def _cumulative(first, w, f):
 
 def _pair_energy(a1, j1, a2, j2, w):
     """E0 with sqrt(2(E0 + a1)/j1) + sqrt(2(E0 + a2)/j2) = 2 w, or None.  With x = w + d,
-    y = w - d: (j1 - j2) d^2 + 2 w (j1 + j2) d + (j1 - j2) w^2 - 2 (a1 - a2) = 0, the root
-    that stays finite as j1 - j2 -> 0."""
-    qa, qb = j1 - j2, 2.0 * w * (j1 + j2)
-    qc = qa * w * w - 2.0 * (a1 - a2)
-    disc = 16.0 * w * w * j1 * j2 + 8.0 * qa * (a1 - a2)
+    y = w - d: (j1 - j2) d^2 + 2 w (j1 + j2) d + (j1 - j2) w^2 - 2 (a1 - a2) = 0, divided
+    by j1 + j2 (no overflow in the discriminant), the root that stays finite as
+    j1 - j2 -> 0."""
+    s = j1 + j2
+    p1, p2 = j1 / s, j2 / s
+    qa, da = p1 - p2, (a1 - a2) / s
+    qc = qa * w * w - 2.0 * da
+    disc = 16.0 * w * w * p1 * p2 + 8.0 * qa * da
     if not disc >= 0.0:
         return None
-    d = -2.0 * qc / (qb + math.sqrt(disc))
+    d = -2.0 * qc / (2.0 * w + math.sqrt(disc))
     if not -w <= d <= w:
         return None
     x, y = w + d, w - d
@@ -392,7 +411,8 @@ def _steady_energy(a, j, w):
         n1, n2 = int(om.argmax()), int(om.argmin())
         if e0 == lo and 0.5 * (om[n1] + om[n2]) > w:
             return None                         # even the least E0 gives more than w
-        if e0 > lo and om[k1] >= om[n1] and om[k2] <= om[n2]:
+        if e0 > lo and om[k1] >= om[n1] and om[k2] <= om[n2] and \
+                abs(0.5 * (om[k1] + om[k2]) - w) <= 1e-12 * w:
             return e0
         k1, k2 = n1, n2
 
@@ -480,6 +500,12 @@ def motion(phi, J, M, *, omega0=0.0, t0=0.0, omega_mean=None, on_error="raise"):
         The crank stops inside the grid (the kinetic energy reaches zero), or the steady
         motion with mean speed omega_mean would stall.
     """
+    with np.errstate(all="ignore"):
+        r = _motion_law(phi, J, M, omega0, t0, omega_mean, on_error)
+    return _finite("motion", r)
+
+
+def _motion_law(phi, J, M, omega0, t0, omega_mean, on_error):
     who = "motion"
     phi, J, M = _grid(who, phi, J, M)
     omega0 = _scalar(who, "omega0", omega0)
@@ -571,7 +597,8 @@ def _exact_flywheel(a, j, w, delta):
         e0 = 0.5 * (j[k1] + jf) * x * x - a[k1]
         om = _speeds(e0, a, j + jf)
         n1, n2 = int(om.argmax()), int(om.argmin())
-        if om[k1] >= om[n1] and om[k2] <= om[n2] and e0 + a.min() >= 0.0:
+        if om[k1] >= om[n1] and om[k2] <= om[n2] and e0 + a.min() >= 0.0 and \
+                abs(om[k1] - om[k2] - delta * w) <= 1e-12 * delta * w:
             return jf, e0
         k1, k2 = n1, n2
 
@@ -584,7 +611,9 @@ def _exact_flywheel(a, j, w, delta):
 
     lo = -float(j.min()) * (1.0 - 1e-12)
     hi = max(1.0, 2.0 * float(np.ptp(dec)) / (delta * w * w))
-    while fluctuation(hi) > delta:
+    for _ in range(2100):                      # up to the largest double
+        if not fluctuation(hi) > delta:
+            break
         hi *= 2.0
     for _ in range(200):
         mid = 0.5 * (lo + hi)
@@ -638,6 +667,20 @@ def flywheel(phi, J, M, *, delta, omega_mean, J_constant=None):
         flywheel), ``.J_merkalov``, ``.delta`` (realized: the steady motion with
         ``J + J_flywheel`` computed again) and ``.phi, .omega, .t`` (that motion).
     """
+    with np.errstate(all="ignore"):
+        fw = _flywheel(phi, J, M, delta, omega_mean, J_constant)
+    if not (math.isfinite(fw.J_flywheel) and math.isfinite(fw.J_merkalov)):
+        raise RangeError("flywheel: J_flywheel would not be a finite double (overflow); "
+                         "the inputs are too far apart in magnitude")
+    _finite("flywheel", fw)
+    if not abs(fw.delta - delta) <= 1e-9 * delta:
+        raise RangeError(f"flywheel: no double J_flywheel gives delta = {delta!r} (it gives "
+                         f"{fw.delta!r}): the inertia needed, J + J_flywheel, is lost in the "
+                         f"rounding of J")
+    return fw
+
+
+def _flywheel(phi, J, M, delta, omega_mean, J_constant):
     who = "flywheel"
     phi, J, M = _grid(who, phi, J, M)
     delta = _scalar(who, "delta", delta)
@@ -647,6 +690,9 @@ def flywheel(phi, J, M, *, delta, omega_mean, J_constant=None):
     wm = _scalar(who, "omega_mean", omega_mean)
     if not wm > 0.0:
         raise ValueError(f"{who}: omega_mean = {wm!r} must be > 0")
+    if not delta * wm * wm > 0.0:
+        raise RangeError(f"{who}: delta*omega_mean**2 = {delta!r}*{wm!r}**2 is not a "
+                         f"normal double (underflow)")
     if abs(J[-1] - J[0]) > 1e-9 * J.max():
         raise ValueError(f"{who}: the steady motion needs a grid over exactly one cycle, "
                          f"but J[0] = {float(J[0])!r} differs from J[-1] = "
@@ -730,4 +776,8 @@ def DMHVK_EXACT(M, ZM, W1, ISC, MPR, ISPR, DELTA):
             f"{delta!r} only with the constant inertia ISC + IMHVK = "
             f"{float(ISC + imh)!r} <= 0 (IMHVK = {float(imh)!r})")
     w = DZKNDV(M, ZM, W1, ISC + imh, MPR, ISPR).WPR
-    return _DMHVK_EXACT(float(imh), imerk, float((w.max() - w.min()) / W1))
+    realized = float((w.max() - w.min()) / W1)
+    if get_mode() != "as-printed" and not abs(realized - delta) <= 1e-9 * delta:
+        raise RangeError(f"DMHVK_EXACT: no double IMHVK gives DELTA = {delta!r} (it gives "
+                         f"{realized!r}): ISC + ISPR + IMHVK is lost in the rounding")
+    return _DMHVK_EXACT(float(imh), imerk, realized)
