@@ -413,3 +413,19 @@ def test_booleans_are_type_errors():
         motion(_PHI, True, 1.0)
     with pytest.raises(TypeError, match="M"):
         motion(_PHI, 1.0, np.ones(9, dtype=bool))
+
+
+def test_steady_motion_is_dzkndv_up_to_the_trapezoid_error():
+    """The same machine through DZKNDV (corrected: the energy equation with trapezoids)
+    and motion(omega_mean=...) (the cubic rule): they differ by the trapezoid rule's
+    O(h^2), a quarter on halving the step."""
+    isc, W = 4.0, 3.0
+    gaps = []
+    for n in (73, 145, 289):
+        phi = np.linspace(0.0, 2 * math.pi, n)
+        M = 25 * np.sin(phi) + 10 * np.sin(3 * phi) - 8.0
+        jv = 1.5 + np.cos(2 * phi)
+        d = sarkp.DZKNDV(n, float(n), W, isc, M, jv)
+        r = motion(phi, isc + jv, M, omega_mean=W)
+        gaps.append(np.abs(d.WPR - r.omega).max())
+    assert np.all(np.abs(_orders(gaps) - 2.0) < 0.05), gaps
