@@ -481,7 +481,8 @@ def motion(phi, J, M, *, omega0=0.0, t0=0.0, omega_mean=None, on_error="raise"):
     on_error : {"raise", "nan"}, keyword-only
         When the crank comes to rest inside the grid (or the steady motion would stall):
         ``"raise"`` RequirementError; ``"nan"``: omega and t NaN from there (all of them
-        for the steady motion) and ``status`` REQUIREMENT.
+        for the steady motion; t after phi[0] too when fewer than 4 points precede the
+        stop, too few for the rule) and ``status`` REQUIREMENT.
 
     Returns
     -------
