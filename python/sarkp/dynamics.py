@@ -500,6 +500,8 @@ def motion(phi, J, M, *, omega0=0.0, t0=0.0, omega_mean=None, on_error="raise"):
     RequirementError
         The crank stops inside the grid (the kinetic energy reaches zero), or the steady
         motion with mean speed omega_mean would stall.
+    RangeError
+        omega or t would not be a finite double (inputs too far apart in magnitude).
     """
     with np.errstate(all="ignore"):
         r = _motion_law(phi, J, M, omega0, t0, omega_mean, on_error)
@@ -667,6 +669,15 @@ def flywheel(phi, J, M, *, delta, omega_mean, J_constant=None):
         ``.J_flywheel`` (exact; negative when less fluctuation than delta needs no
         flywheel), ``.J_merkalov``, ``.delta`` (realized: the steady motion with
         ``J + J_flywheel`` computed again) and ``.phi, .omega, .t`` (that motion).
+
+    Raises
+    ------
+    ValueError
+        Bad input, naming the argument (as :func:`motion`; delta outside (0, 1),
+        omega_mean <= 0, J_constant outside [0, min J]).
+    RangeError
+        delta*omega_mean**2 underflows, or the inertia needed is lost in the rounding of
+        J (no double J_flywheel gives delta), or the motion overflows.
     """
     with np.errstate(all="ignore"):
         fw = _flywheel(phi, J, M, delta, omega_mean, J_constant)
