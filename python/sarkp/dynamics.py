@@ -766,6 +766,11 @@ def DMHVK_EXACT(M, ZM, W1, ISC, MPR, ISPR, DELTA):
     ------
     ValueError
         Bad input, as DZKNDV and DMHVK raise it (DELTA outside (0, 1) among them).
+    RequirementError
+        No flywheel is needed and even ISC + IMHVK <= 0 would be (the fluctuation stays
+        below DELTA).
+    RangeError
+        No double IMHVK gives DELTA (ISC + ISPR + IMHVK lost in the rounding).
     """
     delta = _scalar("DMHVK_EXACT", "DELTA", DELTA)
     if not 0.0 < delta < 1.0:
