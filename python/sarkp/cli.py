@@ -6,7 +6,8 @@
                                           (--stage: one stage of program X alone;
                                           --arithmetic es-evm|ieee-single: program X's
                                           chain in the ES EVM's REAL*4 or IEEE single)
-    sarkp book diff FIG|all [--mode M]    compare a reproduction with the printed figure
+    sarkp book diff FIG|all [--mode M] [--arithmetic A]
+                                          compare a reproduction with the printed figure
                                           (all: ends with a summary table, every cell
                                           reproduced, fitted, reproduced under a named
                                           arithmetic, differing with its cause shown or
@@ -39,9 +40,17 @@ def _version() -> str:
     return __version__
 
 
-def _diff(number: str, mode: str) -> tuple[str, dict]:
+def _diff(number: str, mode: str, arithmetic: str = "double") -> tuple[str, dict]:
     program = _figure_program(number)
     figure = figures.load_figure(number)
+    if arithmetic != "double":             # program X's chain emulated (as printed only)
+        from .book import x_arithmetic
+        if number not in x_arithmetic.FIGURES or mode != "as-printed":
+            raise UsageError(f"--arithmetic {arithmetic}: Figs. "
+                             f"{', '.join(x_arithmetic.FIGURES)} in as-printed mode only")
+        comparisons = figures.compare(figure, x_arithmetic.figure_cells(number, arithmetic))
+        text, _, _ = figures.report(figure, comparisons, f"{mode} ({arithmetic})")
+        return text, figures.summary(figure, comparisons)
     with modes.mode(mode):
         computed = book.figure_cells(number)
     comparisons = figures.compare(figure, computed)
@@ -110,6 +119,10 @@ def _main(argv=None) -> int:
                           "(needs matplotlib)")
     diff = book_sub.add_parser("diff", help="compare a reproduction with a printed figure")
     diff.add_argument("figure", help="figure number, e.g. 4, or 'all'")
+    diff.add_argument("--arithmetic", choices=("double", "es-evm", "ieee-single"),
+                      default="double",
+                      help="Figs. 91, 94, 96 only: diff program X's chain run in the ES "
+                           "EVM's REAL*4 or IEEE single instead of sarkp's double")
     for p in (run, diff):
         p.add_argument("--mode", choices=modes.MODES, default="as-printed",
                        help="as-printed (default): the book's arithmetic and errors; "
@@ -180,11 +193,14 @@ def _main(argv=None) -> int:
                     print(f"wrote {path}", file=sys.stderr)
         return 0
     numbers = list(book.FIGURES) if args.figure == "all" else [args.figure]
+    if args.figure == "all" and args.arithmetic != "double":
+        from .book import x_arithmetic
+        numbers = list(x_arithmetic.FIGURES)
     for number in numbers:
         _figure_program(number)
     rows = []
     for number in numbers:
-        text, row = _diff(number, args.mode)
+        text, row = _diff(number, args.mode, args.arithmetic)
         print(text)
         print()
         rows.append(row)
