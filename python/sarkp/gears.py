@@ -442,8 +442,12 @@ DUGINV = book_routine(
     by about 6 TCHNST at 20 deg (E-DUGINV-1: this is why the book prints ALFAW = 0.3490,
     not 0.3491, for zero shifts) and crawls for small angles; it is bounded here at 10**6
     steps (E-DUGINV-2).  Corrected mode ignores XNACH and TCHNST and returns the root to
-    full double precision (relative error below 1e-15 for every involute from 0 up, the
-    series of tan x - x below 0.4 rad where tan x - x cancels, then Newton steps).
+    full double precision: relative error below 1e-15 for every normal INVX (from
+    2.2e-308 up; the series of tan x - x below 0.4 rad where tan x - x cancels, then
+    Newton steps).  A subnormal INVX (below 2.2e-308) holds fewer than 53 significant
+    bits and so does the cube x**3/3 the step compares it with: there the error grows to
+    2.8e-14 (at INVX = 1.05e-312; measured against the exact (3 INVX)**(1/3) in
+    tests/test_gears.py).
     """)
 
 
