@@ -343,3 +343,32 @@ def test_dprflp_curvature_near_90_degrees():
     # C = 1e-14, s' = 0.05: tan(alpha) = 5e12; the exact radius is C^2 h^3/(...) -> 0.025
     r = sarkp.DPRFLP(1, 1e-14, 0.0, 10.0, [0.7], [3.0], [0.5], [0.0])
     assert r.ROK[0] == pytest.approx(0.025, rel=1e-13)
+
+
+# ---- the README's cam example --------------------------------------------------------------
+
+def test_readme_cam_example_runs_and_its_figures_are_right(tmp_path, monkeypatch, capsys):
+    import pathlib
+    import re
+    pytest.importorskip("matplotlib")
+    text = (pathlib.Path(__file__).resolve().parents[1] / "README.md").read_text("utf-8")
+    section = text[text.index("## Designing a cam"):]
+    code = re.search(r"```python\n(.*?)```", section, re.S).group(1)
+    monkeypatch.chdir(tmp_path)
+    ns = {}
+    exec(compile(code, "README.md", "exec"), ns)
+    out = capsys.readouterr().out
+    assert (tmp_path / "cam_roller.png").stat().st_size > 10000
+    # what it prints, against independent figures: the cycloidal peak 2 h W / beta
+    assert f"peak velocity {2 * 0.030 * 10.0 / math.radians(120):.4f} m/s" in out
+    assert "base radius 36.43 mm; DKLCHK's 34.62 mm reaches 30.97 deg" in out
+    assert "largest pressure angle 30.0000 deg" in out
+    # and the prose's claims about them
+    assert "36.43 mm beside DKLCHK's 34.62 mm" in section and "30.97 degrees" in section
+    cam, size = ns["cam"], ns["size"]
+    # the exact cam: the rise reaches 30 degrees at one point, the return stays within 45
+    law = ns["law"]
+    _touches(cam.ALFA, law.V > 0, math.radians(30))
+    assert np.all(np.abs(cam.ALFA[law.V < 0]) < math.radians(45))
+    # the base circle (the dwell at S = 0) is the pitch curve's smallest convex radius
+    assert cam.ROKMIN == pytest.approx(size.RO, rel=1e-12)

@@ -11,6 +11,13 @@ as in Figs. 35-36).  A radius of curvature is positive where the profile is conv
 
 No routine of this chapter uses PI, so both modes compute the same here; program V.5
 (:mod:`sarkp.book.prog_v_5`) differs between modes through PI and the ES EVM's arithmetic.
+
+sarkp extensions (not in the book), for designing a cam rather than checking one:
+:func:`motion_law` (the standard laws over rise-dwell-return-dwell, in closed form, with
+their peak factors :data:`LAW_FACTORS`); roller followers :func:`roller_translating` and
+:func:`roller_rocker` (pitch curve, working profile, curvature, undercut); and exact
+sizing beside the book's rules: :func:`base_radius` (DKLCHK), :func:`flat_base_radius`
+(DPRFPL) and :func:`rocker_centre_distance` (DKLCHK, INDEX = 2).
 """
 
 from __future__ import annotations
@@ -120,8 +127,11 @@ ValueError
 Notes
 -----
 When ``VLST[0]`` is the largest value the printed loop never sets L (ERRATA
-E-DKLCHK-1); sarkp takes the first point.  Only the point of largest velocity is
-checked: on the return stroke the pressure angle can exceed ALD (Fig. 35 reaches
+E-DKLCHK-1); sarkp takes the first point.  The rule is the book's, kept as printed; the
+smallest radius that keeps the pressure angle within ALD over the whole cycle is
+:func:`base_radius` (for a rocker, whose INDEX = 2 rule applies the translating
+follower's formula to angles, :func:`rocker_centre_distance`).  Only the point of
+largest velocity is checked: on the return stroke the pressure angle can exceed ALD (Fig. 35 reaches
 0.82 rad there); DPRFLP's ``ALFMAX`` and ``NOVER`` report it.  DPRFLP uses RO as the
 follower's axial distance, not as the base-circle radius that this rule assumes
 (E-DPRFLP-3): the cam drawn by DPRFLP is a little larger than needed, and its rise
@@ -206,7 +216,12 @@ The printed listing swaps the names of the transfer functions (``D2SDFI = V(K)/W
 (L3184-3185, E-DPRFLP-2); Fig. 35 is reproduced only with the forms above, which both
 modes use.  RO is an axial distance here, while DKLCHK derives it as the base-circle
 radius (E-DPRFLP-3): the profile's smallest radius is ``sqrt(RO**2 + EXCNTR**2)``.
-The pressure angle is checked on every point, rise and return alike.
+The pressure angle is checked on every point, rise and return alike.  ``cos(ALFA)``
+and ``sin(ALFA)`` are taken from the tangent, ``C/h`` and ``(s' - e)/h`` with
+``h = hypot(C, s' - e)``, not as ``cos(atan(...))``, whose rounding near 90 degrees
+leaves only the digits of ``pi/2 - ALFA`` that ALFA holds: ``DPRFLP(1, 1e-14, 0.0,
+10.0, [0.7], [3.0], [0.5], [0.0]).ROK`` is 0.025 exactly, where the printed form gives
+0.0250185.  For a roller follower see :func:`roller_translating`.
 """)
 
 
@@ -228,7 +243,9 @@ DPRFPL = book_routine(
 The book's call is ``CALL DPRFPL(N, GAMMA, W, FI, A, V, S, XA, YA, R1, DELTA, ROK,
 RKSH)``; the radius of the cam RKSH is chosen by the routine.  At the first minimum of
 the acceleration, ``A[L]``, with ``s''min = A[L]/W**2`` (the convexity rule (5.4), L3118):
-``RKSH = |s''min/tan(GAMMA) + S[L]|``.  Then, with ``C = RKSH + S``, ``s' = V/W`` and
+``RKSH = |s''min/tan(GAMMA) + S[L]|`` (the book's rule looks at that one point; the
+smallest radius that keeps the profile convex over the whole cycle is
+:func:`flat_base_radius`).  Then, with ``C = RKSH + S``, ``s' = V/W`` and
 ``s'' = A/W**2`` (L3205-3209):
 
 * ``XA = C sin(FI) + s' cos(FI)``, ``YA = C cos(FI) - s' sin(FI)`` (the point where the
