@@ -162,6 +162,7 @@ contains
       alfa(k) = atan((dsdfi - excntr)/c)
       ! cos and sin of ALFA from its tangent (dsdfi - e)/C, not COS(ATAN(...)): near 90
       ! degrees COS(ALFA) would keep only the digits of pi/2 - ALFA that ALFA holds
+      ! (E-DPRFLP-5, numerical)
       h = hypot(c, dsdfi - excntr)
       ca = c/h
       sa = (dsdfi - excntr)/h

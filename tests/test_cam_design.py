@@ -339,7 +339,7 @@ def test_sizing_bad_input():
         base_radius(11, m.FI, m.A, m.V, m.S, W, 0.5, 0.3, BETA=0.4)
 
 
-def test_dprflp_curvature_near_90_degrees():
+def test_dprflp_curvature_near_90_degrees_E_DPRFLP_5():
     # C = 1e-14, s' = 0.05: tan(alpha) = 5e12; the exact radius is C^2 h^3/(...) -> 0.025
     r = sarkp.DPRFLP(1, 1e-14, 0.0, 10.0, [0.7], [3.0], [0.5], [0.0])
     assert r.ROK[0] == pytest.approx(0.025, rel=1e-13)

@@ -221,7 +221,7 @@ and ``sin(ALFA)`` are taken from the tangent, ``C/h`` and ``(s' - e)/h`` with
 ``h = hypot(C, s' - e)``, not as ``cos(atan(...))``, whose rounding near 90 degrees
 leaves only the digits of ``pi/2 - ALFA`` that ALFA holds: ``DPRFLP(1, 1e-14, 0.0,
 10.0, [0.7], [3.0], [0.5], [0.0]).ROK`` is 0.025 exactly, where the printed form gives
-0.0250185.  For a roller follower see :func:`roller_translating`.
+0.0250185 (ERRATA E-DPRFLP-5).  For a roller follower see :func:`roller_translating`.
 """)
 
 
