@@ -685,14 +685,18 @@ def compared(number, mode):
 
 @pytest.mark.parametrize("number", GEAR_FIGURES)
 def test_figures_as_printed_every_cell_within_half_a_unit(number):
-    """Every reproducible printed cell within half a unit of its last digit; the cells
-    left out are the ES EVM's (E-FIG44-1, E-FIG47-1, E-FIG48-1, checked below)."""
+    """Every reproducible printed cell within half a unit of its last digit, or (the cells
+    of E-FIG44-1, E-FIG47-1, E-FIG48-1, checked below) reproduced by the ES EVM's run or
+    by the listing's formulas, as the diff classifies them; the cells left out are
+    E-FIG48-1's rounding edges."""
+    from sarkp import book
     comparisons = compared(number, "as-printed")
-    bad = [(c.cell.row, c.cell.column, c.cell.printed, c.computed)
-           for c in comparisons if c.cell.reproducible and not c.matches]
-    assert bad == []
+    for c, kind, why in figures.classify(comparisons, book.figure_evidence(number)):
+        if kind != figures.REPRODUCED:
+            assert kind in (figures.ARITHMETIC, figures.CAUSE_SHOWN), (c.cell, why)
+            assert c.cell.errata in ("E-FIG44-1", "E-FIG47-1", "E-FIG48-1"), c.cell
     left_out = {c.cell.errata for c in comparisons if not c.cell.reproducible}
-    assert left_out <= {"E-FIG44-1", "E-FIG47-1", "E-FIG48-1"}
+    assert left_out <= {"E-FIG48-1"}
 
 
 def test_fig47_48_cells_of_the_es_evm_E_FIG47_1_E_FIG48_1():
