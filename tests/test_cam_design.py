@@ -110,7 +110,7 @@ def test_peak_factors_are_the_peaks(law):
     m = motion_law(law, H, RISE, DWELL, RET, W=W, FI=fi)
     cv, ca = LAW_FACTORS[law]
     up, down = m.PHASE == 1, m.PHASE == 3
-    assert m.CV == (cv, cv) and m.CA == (ca, ca)
+    assert (m.CV, m.CA, m.CV_RETURN, m.CA_RETURN) == (cv, ca, cv, ca)
     assert np.abs(m.V[up]).max() == pytest.approx(cv * H * W / RISE, rel=1e-13)
     assert np.abs(m.A[up]).max() == pytest.approx(ca * H * W**2 / RISE**2, rel=1e-13)
     assert np.abs(m.V[down]).max() == pytest.approx(cv * H * W / RET, rel=1e-13)
@@ -132,7 +132,7 @@ def test_peak_factors_against_the_literature():
 
 def test_return_law_and_default_inner_dwell():
     m = motion_law("cycloidal", 0.01, 1.0, 0.5, 2.0, return_law="3-4-5", N=101)
-    assert m.FI[-1] == pytest.approx(2 * PI) and m.CV == (2.0, 1.875)
+    assert m.FI[-1] == pytest.approx(2 * PI) and (m.CV, m.CV_RETURN) == (2.0, 1.875)
     m2 = motion_law("cycloidal", 0.01, 1.0, 0.5, 2.0, 1.0, N=101)
     assert m2.FI[-1] == pytest.approx(4.5)
 
@@ -372,3 +372,18 @@ def test_readme_cam_example_runs_and_its_figures_are_right(tmp_path, monkeypatch
     assert np.all(np.abs(cam.ALFA[law.V < 0]) < math.radians(45))
     # the base circle (the dwell at S = 0) is the pitch curve's smallest convex radius
     assert cam.ROKMIN == pytest.approx(size.RO, rel=1e-12)
+
+
+def test_extension_results_are_sarkp_results():
+    """The extensions' results pickle and print short like the book routines'."""
+    import pickle
+    m = motion_law("3-4-5", 0.02, RISE, DWELL, RET, W=W, N=50)
+    back = pickle.loads(pickle.dumps(m))
+    assert type(back).__name__ == "MotionLaw" and np.array_equal(back.S, m.S)
+    assert back.CV == m.CV and "..." in repr(m)
+    b = base_radius(50, m.FI, m.A, m.V, m.S, W, 0.5)
+    assert pickle.loads(pickle.dumps(b)) == b
+    pd = pytest.importorskip("pandas")
+    frame = m.to_frame()
+    assert isinstance(frame, pd.DataFrame) and list(frame.columns) == list(m._fields)
+    assert frame.shape == (50, len(m._fields))

@@ -23,11 +23,11 @@ sizing beside the book's rules: :func:`base_radius` (DKLCHK), :func:`flat_base_r
 from __future__ import annotations
 
 import math
-from collections import namedtuple
 
 import numpy as np
 
 from .library import ST_REQUIREMENT, ST_SINGULAR, Check, book_routine
+from .results import result_type
 
 __all__ = ["DKLCHK", "DPRFLP", "DPRFPL", "DPRFLK", "motion_law", "LAW_FACTORS",
            "roller_translating", "roller_rocker", "base_radius", "flat_base_radius",
@@ -480,7 +480,8 @@ def _modified_sine_factors():
 
 LAW_FACTORS["modified sine"] = _modified_sine_factors()
 
-MotionLaw = namedtuple("MotionLaw", ("FI", "S", "V", "A", "CV", "CA", "PHASE"))
+MotionLaw = result_type("MotionLaw", ("FI", "S", "V", "A", "PHASE", "CV", "CA", "CV_RETURN",
+                                       "CA_RETURN"))
 
 
 def _law(name, what):
@@ -527,13 +528,13 @@ def motion_law(law, H, rise, dwell, ret, dwell2=None, *, W=1.0, N=361, FI=None,
 
     Returns
     -------
-    MotionLaw(FI, S, V, A, CV, CA, PHASE)
-        Arrays ``FI, S, V, A`` (rad, m or rad, per s, per s^2); ``CV, CA`` pairs (rise,
-        return) of the laws' peak velocity and acceleration factors: the largest ``|V|``
-        of the rise is ``CV[0] H W / rise`` and the largest ``|A|`` ``CA[0] H W**2 /
-        rise**2`` (return: ``CV[1]``, ``CA[1]`` over ``ret``); ``PHASE`` an int array: 1
+    MotionLaw(FI, S, V, A, PHASE, CV, CA, CV_RETURN, CA_RETURN)
+        Arrays ``FI, S, V, A`` (rad, m or rad, per s, per s^2); ``PHASE`` an int array: 1
         rise, 2 outer dwell, 3 return, 4 inner dwell (a boundary belongs to the phase it
-        starts).  The factors are also in :data:`LAW_FACTORS`.
+        starts); the floats ``CV, CA``, the rise law's peak velocity and acceleration
+        factors (the largest ``|V|`` of the rise is ``CV H W / rise``, the largest
+        ``|A|`` ``CA H W**2 / rise**2``), and ``CV_RETURN, CA_RETURN`` the return law's
+        (over ``ret``).  The factors are also in :data:`LAW_FACTORS`.
 
     Raises
     ------
@@ -579,8 +580,7 @@ def motion_law(law, H, rise, dwell, ret, dwell2=None, *, W=1.0, N=361, FI=None,
     s[top] = H
     f, f1, f2 = _rise(back, (fi[down] - rise - dwell) / ret)
     s[down], s1[down], s2[down] = H * (1.0 - f), -H * f1 / ret, -H * f2 / ret**2
-    return MotionLaw(fi, s, W * s1, W**2 * s2, (LAW_FACTORS[law][0], LAW_FACTORS[back][0]),
-                     (LAW_FACTORS[law][1], LAW_FACTORS[back][1]), phase)
+    return MotionLaw(fi, s, W * s1, W**2 * s2, phase, *LAW_FACTORS[law], *LAW_FACTORS[back])
 
 
 def _rise(name, x):
@@ -590,7 +590,7 @@ def _rise(name, x):
 
 # ---- roller followers --------------------------------------------------------------------
 
-RollerProfile = namedtuple("RollerProfile", ("XA", "YA", "XW", "YW", "ROK", "RW", "ALFA",
+RollerProfile = result_type("RollerProfile", ("XA", "YA", "XW", "YW", "ROK", "RW", "ALFA",
                                              "ROKMIN", "UNDERCUT"))
 
 
@@ -699,10 +699,10 @@ def roller_rocker(N, W1, ETAO, FI, RO, L, R, E2, W2, PSI, RR, ALD=math.pi / 4.0,
 
 # ---- exact sizing ---------------------------------------------------------------------------
 
-BaseRadius = namedtuple("BaseRadius", ("RO", "EXCST", "RO_AXIAL", "RO_RISE", "RO_RETURN",
+BaseRadius = result_type("BaseRadius", ("RO", "EXCST", "RO_AXIAL", "RO_RISE", "RO_RETURN",
                                        "RO_BOOK", "ALFMAX_BOOK"))
-FlatRadius = namedtuple("FlatRadius", ("RKSH", "RKSH_BOOK", "ROKMIN_BOOK"))
-CentreDistance = namedtuple("CentreDistance", ("L", "ETAO", "RO", "ETAO_BOOK", "RO_BOOK",
+FlatRadius = result_type("FlatRadius", ("RKSH", "RKSH_BOOK", "ROKMIN_BOOK"))
+CentreDistance = result_type("CentreDistance", ("L", "ETAO", "RO", "ETAO_BOOK", "RO_BOOK",
                                                "ALFMAX_BOOK"))
 
 

@@ -15,12 +15,12 @@ from __future__ import annotations
 
 import functools
 import math
-from collections import namedtuple
 
 import numpy as np
 
 from .errors import RequirementError
 from .library import ST_REQUIREMENT, Check, book_routine
+from .results import result_type
 from .modes import book_pi, get_mode
 from .report import fortran_write
 
@@ -329,7 +329,7 @@ DKRKT = book_routine(
     """)
 
 
-Splits = namedtuple("Splits", ("XS", "X1_BOOK", "X2_BOOK", "X1_LOW", "X1_HIGH", "X1", "X2",
+Splits = result_type("Splits", ("XS", "X1_BOOK", "X2_BOOK", "X1_LOW", "X1_HIGH", "X1", "X2",
                                "REASON"))
 
 
