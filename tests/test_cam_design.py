@@ -323,6 +323,25 @@ def test_rocker_centre_distance_is_the_smallest(law, ald, ald_ret):
     assert c.RO == pytest.approx(np.hypot(p.XA, p.YA).min(), rel=1e-12)
     book = sarkp.DKLCHK(n, m.S, m.V, m.A, ald, 0.0, W, c.L, R, 2)
     assert (c.ETAO_BOOK, c.RO_BOOK) == (book.ETAO, book.RO)
+    # the book's rule for a rocker (the translating formula applied to angles) passes the
+    # limit with that centre distance; DPRFLK confirms the figure
+    pb = DPRFLK(n, W, book.ETAO, m.FI, 0.0, c.L, R, m.A, m.V, m.S)
+    assert c.ALFMAX_BOOK == pytest.approx(pb.ALFMAX, rel=1e-13)
+    assert pb.ALFMAX > min(ald, ald_ret)
+    # each phase alone needs no more, and the same brute force finds each
+    assert max(c.L_RISE, c.L_RETURN) <= c.L * (1 + 1e-12)
+    for lone, where, limit in ((c.L_RISE, rise, ald), (c.L_RETURN, ret, ald_ret)):
+        best_lone, tt, qw = math.inf, math.tan(limit), q[where]
+        for eta in np.linspace(-PI, PI, 2001):
+            psi = m.S[where] + eta
+            d1, d2 = np.cos(psi) + tt * np.sin(psi), np.cos(psi) - tt * np.sin(psi)
+            if np.any(d1 <= 0):
+                continue
+            lo = np.max(qw / d1)
+            hi = np.min(np.where(d2 > 0, qw / np.where(d2 > 0, d2, 1), np.inf))
+            if lo <= hi:
+                best_lone = min(best_lone, lo)
+        assert lone * (1 - 1e-9) <= best_lone <= lone * (1 + 1e-3)
 
 
 def test_sizing_bad_input():

@@ -702,8 +702,8 @@ def roller_rocker(N, W1, ETAO, FI, RO, L, R, E2, W2, PSI, RR, ALD=math.pi / 4.0,
 BaseRadius = result_type("BaseRadius", ("RO", "EXCST", "RO_AXIAL", "RO_RISE", "RO_RETURN",
                                        "RO_BOOK", "ALFMAX_BOOK"))
 FlatRadius = result_type("FlatRadius", ("RKSH", "RKSH_BOOK", "ROKMIN_BOOK"))
-CentreDistance = result_type("CentreDistance", ("L", "ETAO", "RO", "ETAO_BOOK", "RO_BOOK",
-                                               "ALFMAX_BOOK"))
+CentreDistance = result_type("CentreDistance", ("L", "ETAO", "RO", "L_RISE", "L_RETURN",
+                                               "ETAO_BOOK", "RO_BOOK", "ALFMAX_BOOK"))
 
 
 def _tables(name, N, **tables):
@@ -869,10 +869,12 @@ def rocker_centre_distance(N, FI, E2, W2, PSI, W1, R, ALD, ALD_return=None):
 
     Returns
     -------
-    CentreDistance(L, ETAO, RO, ETAO_BOOK, RO_BOOK, ALFMAX_BOOK)
+    CentreDistance(L, ETAO, RO, L_RISE, L_RETURN, ETAO_BOOK, RO_BOOK, ALFMAX_BOOK)
         ``L`` the smallest centre distance (m) and ``ETAO`` the rocker's initial angle
         (rad) for DPRFLK; ``RO`` the cam's base radius there (the smallest distance of
-        the pitch curve from O1); then DKLCHK's ``ETAO`` and ``RO`` for INDEX = 2 with
+        the pitch curve from O1); ``L_RISE`` and ``L_RETURN`` the smallest centre
+        distance the rise alone (W2 > 0) and the return alone (W2 < 0) would need (each
+        with its own best ETAO; L is at least the larger); then DKLCHK's ``ETAO`` and ``RO`` for INDEX = 2 with
         ``RSCNTR = L``, ``RZMR = R`` and the largest ``|alpha|`` (rad) DPRFLK gives with
         the book's ETAO.
 
@@ -896,7 +898,14 @@ def rocker_centre_distance(N, FI, E2, W2, PSI, W1, R, ALD, ALD_return=None):
     ax = np.concatenate([c + t * s, -(c - t * s)])
     ay = np.concatenate([s - t * c, -(s + t * c)])
     b = np.concatenate([q, -q])
-    x, y = _nearest_in_polygon(ax, ay, b, 1e3 * (R + np.abs(q).max()))
+    size = 1e3 * (R + np.abs(q).max())
+    x, y = _nearest_in_polygon(ax, ay, b, size)
+    phase = []
+    for where in (w2 > 0, w2 < 0):
+        two = np.concatenate([where, where])
+        px, py = _nearest_in_polygon(ax[two], ay[two], b[two], size) if where.any() \
+            else (0.0, 0.0)
+        phase.append(math.nan if px is None else math.hypot(px, py))
     if x is None:
         raise RequirementError("rocker_centre_distance: no cam centre keeps the pressure "
                                "angle within the limits over the whole cycle")
@@ -907,7 +916,8 @@ def rocker_centre_distance(N, FI, E2, W2, PSI, W1, R, ALD, ALD_return=None):
     p = psi + book.ETAO
     with np.errstate(divide="ignore", invalid="ignore"):
         alfa = np.arctan(q / L / np.sin(p) - 1.0 / np.tan(p))
-    return CentreDistance(L, etao, ro, book.ETAO, book.RO, float(np.nanmax(np.abs(alfa))))
+    return CentreDistance(L, etao, ro, *phase, book.ETAO, book.RO,
+                          float(np.nanmax(np.abs(alfa))))
 
 
 def _nearest_in_polygon(ax, ay, b, size):
