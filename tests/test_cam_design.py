@@ -406,3 +406,25 @@ def test_extension_results_are_sarkp_results():
     frame = m.to_frame()
     assert isinstance(frame, pd.DataFrame) and list(frame.columns) == list(m._fields)
     assert frame.shape == (50, len(m._fields))
+
+
+@pytest.mark.parametrize("call, what", [
+    (lambda: motion_law("cycloidal", "0.01", 1.0, 0.5, 1.0), "H"),
+    (lambda: motion_law("cycloidal", 0.01, 1.0, 0.5, 1.0, dwell2=[1.0]), "dwell2"),
+    (lambda: base_radius(3, [0, 1, 2], [0] * 3, [0, 1, 0], [0, .1, .2], None, 0.5), "W"),
+    (lambda: flat_base_radius(3, [0, 1, 2], [0] * 3, [0, 1, 0], [0, .1, .2], 5.0, "0"),
+     "ROKMIN"),
+    (lambda: rocker_centre_distance(3, [0, 1, 2], [0] * 3, [0, 1, 0], [0, .1, .2], 5.0,
+                                    0.1, 1j), "ALD"),
+    (lambda: roller_translating(3, 0.05, 0.0, 5.0, [0, 1, 2], [0] * 3, [0, 1, 0],
+                                [0, .1, .2], "r"), "RR")])
+def test_extensions_type_errors_name_the_argument(call, what):
+    with pytest.raises(TypeError, match=what):
+        call()
+
+
+def test_motion_law_scalar_angle_gives_floats():
+    m = motion_law("cycloidal", 0.01, 1.0, 0.5, 1.0, W=2.0, FI=0.3)
+    assert all(type(v) in (float, int) for v in m)
+    full = motion_law("cycloidal", 0.01, 1.0, 0.5, 1.0, W=2.0, FI=[0.3])
+    assert (m.S, m.V, m.A, m.PHASE) == (full.S[0], full.V[0], full.A[0], full.PHASE[0])

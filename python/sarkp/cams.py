@@ -484,6 +484,27 @@ MotionLaw = result_type("MotionLaw", ("FI", "S", "V", "A", "PHASE", "CV", "CA", 
                                        "CA_RETURN"))
 
 
+def _number(name, arg, value, *, above=None, at_least=None, below=None):
+    """A scalar argument of an extension as a float, or TypeError/ValueError naming it."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(
+            value, (int, float, np.integer, np.floating)):
+        raise TypeError(f"{name}: {arg} must be a real number, not "
+                        f"{type(value).__name__} {value!r:.40}")
+    v = float(value)
+    bounds = []
+    if above is not None:
+        bounds.append(f"> {above:g}")
+    if at_least is not None:
+        bounds.append(f">= {at_least:g}")
+    if below is not None:
+        bounds.append(f"< {below:g}")
+    if not (math.isfinite(v) and (above is None or v > above)
+            and (at_least is None or v >= at_least) and (below is None or v < below)):
+        raise ValueError(f"{name}: {arg} = {value!r} must be a finite number"
+                         + (" " + " and ".join(bounds) if bounds else ""))
+    return v
+
+
 def _law(name, what):
     if not isinstance(name, str) or name not in _LAWS:
         raise ValueError(f"motion_law: {what} must be one of {sorted(_LAWS)}, not {name!r}")
@@ -544,21 +565,17 @@ def motion_law(law, H, rise, dwell, ret, dwell2=None, *, W=1.0, N=361, FI=None,
     """
     law = _law(law, "law")
     back = _law(law if return_law is None else return_law, "return_law")
-    for name, value, ok in (("H", H, H > 0), ("rise", rise, rise > 0),
-                            ("dwell", dwell, dwell >= 0), ("ret", ret, ret > 0),
-                            ("W", W, W > 0)):
-        if not (isinstance(value, (int, float, np.integer, np.floating))
-                and math.isfinite(value) and ok):
-            raise ValueError(f"motion_law: {name} = {value!r} must be a finite number "
-                             f"{'>= 0' if name == 'dwell' else '> 0'}")
+    H, rise, ret, W = (_number("motion_law", a, v, above=0.0) for a, v in
+                       (("H", H), ("rise", rise), ("ret", ret), ("W", W)))
+    dwell = _number("motion_law", "dwell", dwell, at_least=0.0)
     if dwell2 is None:
         dwell2 = _TWO_PI - rise - dwell - ret
         if dwell2 < -1e-12:
             raise ValueError(f"motion_law: rise + dwell + ret = {rise + dwell + ret!r} is "
                              f"more than a turn; give dwell2 for a longer cycle")
         dwell2 = max(dwell2, 0.0)
-    elif not (math.isfinite(dwell2) and dwell2 >= 0):
-        raise ValueError(f"motion_law: dwell2 = {dwell2!r} must be a finite number >= 0")
+    else:
+        dwell2 = _number("motion_law", "dwell2", dwell2, at_least=0.0)
     cycle = rise + dwell + ret + dwell2
     if FI is None:
         if not (isinstance(N, (int, np.integer)) and N >= 2):
@@ -569,6 +586,8 @@ def motion_law(law, H, rise, dwell, ret, dwell2=None, *, W=1.0, N=361, FI=None,
         fi = as_real_array("motion_law", "FI", FI).astype(float)
         if not np.all(np.isfinite(fi)) or np.any(fi < 0.0) or np.any(fi > cycle):
             raise ValueError(f"motion_law: FI must hold finite angles within [0, {cycle!r}]")
+    scalar = fi.ndim == 0
+    fi = np.atleast_1d(fi)
     s, s1, s2 = np.zeros_like(fi), np.zeros_like(fi), np.zeros_like(fi)
     phase = np.full(fi.shape, 4, dtype=np.int32)
     up = fi < rise
@@ -580,7 +599,10 @@ def motion_law(law, H, rise, dwell, ret, dwell2=None, *, W=1.0, N=361, FI=None,
     s[top] = H
     f, f1, f2 = _rise(back, (fi[down] - rise - dwell) / ret)
     s[down], s1[down], s2[down] = H * (1.0 - f), -H * f1 / ret, -H * f2 / ret**2
-    return MotionLaw(fi, s, W * s1, W**2 * s2, phase, *LAW_FACTORS[law], *LAW_FACTORS[back])
+    v, a = W * s1, W**2 * s2
+    if scalar:                                   # a scalar FI gives floats
+        fi, s, v, a, phase = float(fi[0]), float(s[0]), float(v[0]), float(a[0]), int(phase[0])
+    return MotionLaw(fi, s, v, a, phase, *LAW_FACTORS[law], *LAW_FACTORS[back])
 
 
 def _rise(name, x):
@@ -597,9 +619,7 @@ RollerProfile = result_type("RollerProfile", ("XA", "YA", "XW", "YW", "ROK", "RW
 def _working_profile(xa, ya, dx, dy, rok, alfa, rr, on_undercut, name):
     """Offset the pitch curve (XA, YA), tangent (dx, dy), by the roller radius towards the
     cam centre: the envelope of the roller circles centred on the pitch curve."""
-    if not (isinstance(rr, (int, float, np.integer, np.floating)) and math.isfinite(rr)
-            and rr > 0):
-        raise ValueError(f"{name}: RR = {rr!r} is the roller radius and must be > 0")
+    rr = _number(name, "RR", rr, above=0.0)
     if on_undercut not in ("flag", "raise"):
         raise ValueError(f"{name}: on_undercut must be 'flag' or 'raise', not {on_undercut!r}")
     norm = np.hypot(dx, dy)
@@ -723,12 +743,8 @@ def _limits(name, V, ALD, ALD_return):
     """tan of the allowed pressure angle at each point: the rise's where V > 0, the
     return's where V < 0, the smaller where V = 0 (a dwell)."""
     ret = ALD if ALD_return is None else ALD_return
-    for arg, value in (("ALD", ALD), ("ALD_return", ret)):
-        if not (isinstance(value, (int, float, np.integer, np.floating))
-                and 0.0 < value < _HALF_PI):
-            raise ValueError(f"{name}: {arg} = {value!r} must lie strictly between 0 and "
-                             f"pi/2 (radians)")
-    t1, t2 = math.tan(ALD), math.tan(ret)
+    t1 = math.tan(_number(name, "ALD", ALD, above=0.0, below=_HALF_PI))
+    t2 = math.tan(_number(name, "ALD_return", ret, above=0.0, below=_HALF_PI))
     return np.where(V > 0.0, t1, np.where(V < 0.0, t2, min(t1, t2)))
 
 
@@ -775,13 +791,11 @@ def base_radius(N, FI, A, V, S, W, ALD, ALD_return=None, BETA=0.0):
     """
     from .errors import RequirementError
     fi, a, v, s = _tables("base_radius", N, FI=FI, A=A, V=V, S=S)
-    if not (W > 0):
-        raise ValueError(f"base_radius: W = {W!r} must be > 0")
+    W = _number("base_radius", "W", W, above=0.0)
+    BETA = _number("base_radius", "BETA", BETA, above=-_HALF_PI, below=_HALF_PI)
     t = _limits("base_radius", v, ALD, ALD_return)
     s1 = v / W
     cb, sb = math.cos(BETA), math.sin(BETA)
-    if not cb > 0:
-        raise ValueError(f"base_radius: BETA = {BETA!r} must lie within (-pi/2, pi/2)")
     # (s' - RO sb) <= t (RO cb + s)  and  -(s' - RO sb) <= t (RO cb + s): d RO >= r
     d = np.concatenate([t * cb + sb, t * cb - sb])
     r = np.concatenate([s1 - t * s, -s1 - t * s])
@@ -835,10 +849,9 @@ def flat_base_radius(N, FI, A, V, S, W, ROKMIN=0.0, GAMMA=math.pi / 4.0):
         N not the length of the tables, a NaN or inf, W <= 0, ROKMIN < 0.
     """
     fi, a, v, s = _tables("flat_base_radius", N, FI=FI, A=A, V=V, S=S)
-    if not (W > 0):
-        raise ValueError(f"flat_base_radius: W = {W!r} must be > 0")
-    if not (math.isfinite(ROKMIN) and ROKMIN >= 0):
-        raise ValueError(f"flat_base_radius: ROKMIN = {ROKMIN!r} must be >= 0")
+    W = _number("flat_base_radius", "W", W, above=0.0)
+    ROKMIN = _number("flat_base_radius", "ROKMIN", ROKMIN, at_least=0.0)
+    GAMMA = _number("flat_base_radius", "GAMMA", GAMMA, above=0.0, below=_HALF_PI)
     rksh = max(float(np.max(ROKMIN - s - a / W**2)), float(np.max(-s)))
     book = DPRFPL(N, GAMMA, W, fi, a, v, s)
     return FlatRadius(rksh, book.RKSH, book.ROKMIN)
@@ -887,9 +900,8 @@ def rocker_centre_distance(N, FI, E2, W2, PSI, W1, R, ALD, ALD_return=None):
     """
     from .errors import RequirementError
     fi, e2, w2, psi = _tables("rocker_centre_distance", N, FI=FI, E2=E2, W2=W2, PSI=PSI)
-    for arg, value in (("W1", W1), ("R", R)):
-        if not (math.isfinite(value) and value > 0):
-            raise ValueError(f"rocker_centre_distance: {arg} = {value!r} must be > 0")
+    W1 = _number("rocker_centre_distance", "W1", W1, above=0.0)
+    R = _number("rocker_centre_distance", "R", R, above=0.0)
     t = _limits("rocker_centre_distance", w2, ALD, ALD_return)
     q = R * (1.0 + w2 / W1)
     c, s = np.cos(psi), np.sin(psi)
