@@ -85,3 +85,9 @@ def test_each_family_states_its_sense(k):
            "exerts ON" in " ".join(f.split())
     assert "Sense: the vector family (DNMA1-DNMA5) returns the reactions ON the group's " \
            "links" in " ".join(v.split())
+
+
+def test_balancing_moment_coordinates_are_checked():
+    g = DNMA1(RAB, 0.5, RCB, 2.0, -0.1, -0.1, 1.0, 10.0, 0.5, 2.0, 20.0, 1.0)
+    with pytest.raises(TypeError, match="XA"):
+        balancing_moment(g, 0.0, 0.0, "0.1", 0.0)

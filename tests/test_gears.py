@@ -870,3 +870,12 @@ def test_duginv_subnormal_involute_accuracy():
     assert worst(np.geomspace(2.2250738585072014e-308, 1e-60, 300)) < 1e-15
     sub = worst(np.geomspace(5e-324, 2.2e-308, 600))
     assert 1e-15 < sub < 3e-14
+
+
+def test_dkrkt_splits_bad_input():
+    with pytest.raises(ValueError, match="M = -4.0"):
+        sarkp.dkrkt_splits(-4.0, 12, 34, 95.0)
+    with pytest.raises(TypeError, match="AW"):
+        sarkp.dkrkt_splits(4.0, 12, 34, "95")
+    with pytest.raises(ValueError, match="r_b1 \\+ r_b2"):
+        sarkp.dkrkt_splits(4.0, 12, 34, 80.0)

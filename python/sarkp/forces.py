@@ -35,7 +35,7 @@ from __future__ import annotations
 
 import numpy as np
 
-from .library import book_routine
+from .library import as_real_array, book_routine
 
 __all__ = ["DNMAF1", "DNMAF2", "DNMAF3", "DNMAF4", "DNMAF5",
            "DNMA1", "DNMA2", "DNMA3", "DNMA4", "DNMA5", "DUGL6", "balancing_moment"]
@@ -585,6 +585,8 @@ def balancing_moment(group, XO, YO, XA, YA, M1=0.0):
     else:
         raise ValueError(f"balancing_moment: group must be the result of DNMAF1-3, DNMAF5 or "
                          f"DNMA1-3, DNMA5, not {type(group).__name__}")
-    rx, ry = np.subtract(XA, XO, dtype=float), np.subtract(YA, YO, dtype=float)
-    my = -(rx * f * np.sin(g) - ry * f * np.cos(g)) - np.asarray(M1, dtype=float)
+    xo, yo, xa, ya, m1 = (as_real_array("balancing_moment", a, v) for a, v in
+                          (("XO", XO), ("YO", YO), ("XA", XA), ("YA", YA), ("M1", M1)))
+    rx, ry = xa - xo, ya - yo
+    my = -(rx * f * np.sin(g) - ry * f * np.cos(g)) - m1
     return float(my) if np.ndim(my) == 0 else my

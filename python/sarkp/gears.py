@@ -351,6 +351,13 @@ def dkrkt_splits(M, Z1, Z2, AW):
         ``REASON``, one sentence: why the book's split is refused (or "") and which split
         would do, or why none would.
     """
+    for arg, value in (("M", M), ("Z1", Z1), ("Z2", Z2), ("AW", AW)):
+        if isinstance(value, bool) or not isinstance(value, (int, float, np.integer,
+                                                             np.floating)):
+            raise TypeError(f"dkrkt_splits: {arg} must be a real number, not "
+                            f"{type(value).__name__}")
+        if not (math.isfinite(value) and value > 0):
+            raise ValueError(f"dkrkt_splits: {arg} = {value!r} must be a finite number > 0")
     if not (AW > 0.5 * M * (Z1 + Z2) * math.cos(_alpha())):
         raise ValueError(f"dkrkt_splits: AW = {AW!r} must be above r_b1 + r_b2 = "
                          f"{0.5 * M * (Z1 + Z2) * math.cos(_alpha())!r}")
