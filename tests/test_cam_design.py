@@ -428,3 +428,17 @@ def test_motion_law_scalar_angle_gives_floats():
     assert all(type(v) in (float, int) for v in m)
     full = motion_law("cycloidal", 0.01, 1.0, 0.5, 1.0, W=2.0, FI=[0.3])
     assert (m.S, m.V, m.A, m.PHASE) == (full.S[0], full.V[0], full.A[0], full.PHASE[0])
+
+
+def test_rocker_roller_undercut():
+    H, L, R, ETAO = 0.35, 0.12, 0.09, 0.7
+    fi = np.linspace(0, 2 * PI, 361)
+    m = motion_law("3-4-5", H, RISE, DWELL, RET, W=W, FI=fi)
+    p = roller_rocker(fi.size, W, ETAO, fi, 0.0, L, R, m.A, m.V, m.S, 0.01)
+    big = 1.01 * p.ROKMIN
+    q = roller_rocker(fi.size, W, ETAO, fi, 0.0, L, R, m.A, m.V, m.S, big)
+    assert q.UNDERCUT and not p.UNDERCUT
+    assert np.min(q.RW[q.ROK > 0]) < 0            # the working profile's curvature flips
+    with pytest.raises(RequirementError, match="undercut"):
+        roller_rocker(fi.size, W, ETAO, fi, 0.0, L, R, m.A, m.V, m.S, big,
+                      on_undercut="raise")

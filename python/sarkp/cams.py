@@ -131,11 +131,11 @@ E-DKLCHK-1); sarkp takes the first point.  The rule is the book's, kept as print
 smallest radius that keeps the pressure angle within ALD over the whole cycle is
 :func:`base_radius` (for a rocker, whose INDEX = 2 rule applies the translating
 follower's formula to angles, :func:`rocker_centre_distance`).  Only the point of
-largest velocity is checked: on the return stroke the pressure angle can exceed ALD (Fig. 35 reaches
-0.82 rad there); DPRFLP's ``ALFMAX`` and ``NOVER`` report it.  DPRFLP uses RO as the
-follower's axial distance, not as the base-circle radius that this rule assumes
-(E-DPRFLP-3): the cam drawn by DPRFLP is a little larger than needed, and its rise
-stays within ALD (Fig. 35: at most 0.52027 rad).
+largest velocity is checked: on the return stroke the pressure angle can exceed ALD
+(Fig. 35 reaches 0.82 rad there); DPRFLP's ``ALFMAX`` and ``NOVER`` report it.
+DPRFLP uses RO as the follower's axial distance, not as the base-circle radius that
+this rule assumes (E-DPRFLP-3): the cam drawn by DPRFLP is a little larger than needed,
+and its rise stays within ALD (Fig. 35: at most 0.52027 rad).
 """)
 
 
@@ -887,9 +887,9 @@ def rocker_centre_distance(N, FI, E2, W2, PSI, W1, R, ALD, ALD_return=None):
         (rad) for DPRFLK; ``RO`` the cam's base radius there (the smallest distance of
         the pitch curve from O1); ``L_RISE`` and ``L_RETURN`` the smallest centre
         distance the rise alone (W2 > 0) and the return alone (W2 < 0) would need (each
-        with its own best ETAO; L is at least the larger); then DKLCHK's ``ETAO`` and ``RO`` for INDEX = 2 with
-        ``RSCNTR = L``, ``RZMR = R`` and the largest ``|alpha|`` (rad) DPRFLK gives with
-        the book's ETAO.
+        with its own best ETAO; L is at least the larger); then DKLCHK's ``ETAO`` and
+        ``RO`` for INDEX = 2 with ``RSCNTR = L``, ``RZMR = R`` and the largest
+        ``|alpha|`` (rad) DPRFLK gives with the book's ETAO.
 
     Raises
     ------
