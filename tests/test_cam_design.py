@@ -442,3 +442,28 @@ def test_rocker_roller_undercut():
     with pytest.raises(RequirementError, match="undercut"):
         roller_rocker(fi.size, W, ETAO, fi, 0.0, L, R, m.A, m.V, m.S, big,
                       on_undercut="raise")
+
+
+from hypothesis import given, settings, strategies as st  # noqa: E402
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.sampled_from(LAWS), st.sampled_from(LAWS), st.floats(0.01, 0.1),
+       st.floats(0.8, 2.5), st.floats(0.0, 1.0), st.floats(0.8, 2.5), st.floats(-1.0, 1.0),
+       st.floats(0.3, 0.8), st.floats(0.3, 0.8))
+def test_base_radius_touches_the_limit_once_on_random_cams(law, back, h, rise, dwell, ret,
+                                                            frac, ald, ald_ret):
+    """Random laws, phases, offsets and limits: the exact radius puts the largest pressure
+    angle at its limit at exactly one table point (1e-9) and every other point below.
+    The offset angle stays below both limits by 0.02 rad: at |BETA| = ALD the pressure
+    angle of a dwell, -BETA, is at the limit all along the dwell (and at BETA = the
+    return's limit no radius serves: RequirementError, test_sizing_bad_input)."""
+    beta = frac * (min(ald, ald_ret) - 0.02)
+    n = 541
+    m = motion_law(law, h, rise, dwell, ret, W=W, N=n, return_law=back)
+    b = base_radius(n, m.FI, m.A, m.V, m.S, W, ald, ald_ret, BETA=beta)
+    p = DPRFLP(n, b.RO_AXIAL, b.EXCST, W, m.FI, m.A, m.V, m.S)
+    limit = np.where(m.V > 0, ald, np.where(m.V < 0, ald_ret, min(ald, ald_ret)))
+    over = np.abs(p.ALFA) - limit
+    assert over.max() <= 1e-12
+    assert np.sum(over >= -1e-9) == 1, np.sort(over)[-3:]
