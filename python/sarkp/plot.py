@@ -122,7 +122,9 @@ def _legend(ax, **kw):
     handles, labels = ax.get_legend_handles_labels()
     if not handles:
         return None
-    room = ax.figure.get_figwidth() * 72.0 - 30.0           # points across the figure
+    # points across the Axes (a new figure's single Axes: across the figure)
+    share = 1.0 if getattr(ax.figure, "_sarkp_own", False) else ax.get_position().width
+    room = ax.figure.get_figwidth() * 72.0 * share - 30.0
     labels = [textwrap.fill(t, int(room / (0.55 * 8) - 8)) for t in labels]
     longest = max(max(len(line) for line in t.split("\n")) for t in labels)
     columns = max(1, min(3, len(handles), int(room // (longest * 0.55 * 8 + 34))))
@@ -166,7 +168,7 @@ def _place_labels(figure, labels):
             box = label.get_window_extent(renderer)
             inside = (box.x0 >= box_ax.x0 and box.x1 <= box_ax.x1 and box.y0 >= box_ax.y0
                       and box.y1 <= box_ax.y1)
-            if inside and not any(box.padded(2).overlaps(p) for p in placed):
+            if inside and not any(box.padded(3).overlaps(p) for p in placed):
                 best = box
                 break
         if best is None:
@@ -310,7 +312,9 @@ def mechanism(points, links, *, fixed=(), guide=None, highlight=0, every=1, path
     if positions is not None and paths:
         x, y = xy[paths[0]]
         for k in [highlight] + drawn:
-            if k < len(positions) and x.size > 1:
+            closes = k != highlight and math.hypot(x[k] - x[highlight],
+                                                   y[k] - y[highlight]) < 1e-9 * size
+            if k < len(positions) and x.size > 1 and not closes:
                 labels.append(_label(ax, str(positions[k]), (x[k], y[k]), color="0.35",
                                      optional=k != highlight, fontsize=7))
     for i, link in enumerate(links):
