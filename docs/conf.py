@@ -74,9 +74,10 @@ sphinx_gallery_conf = {
 
 # ---- the API reference ---------------------------------------------------------------------
 
-#: page name -> (title, module, what the page is about)
+#: page name -> (title, module)
 CHAPTERS = {
     "operators": ("Chapter 2: operator functions", "sarkp.operators"),
+    "solver": ("GELG: the linear solver the book calls", "sarkp.solver"),
     "synthesis": ("Chapter 3: synthesis of linkages", "sarkp.synthesis"),
     "kinematics": ("Chapter 4: kinematics of Assur groups", "sarkp.kinematics"),
     "cams": ("Chapter 5: cam mechanisms", "sarkp.cams"),
