@@ -139,7 +139,7 @@ contains
     real(dp), intent(out) :: alfmax
     integer, intent(out) :: nover
     integer, intent(out) :: ier
-    real(dp) :: dsdfi, d2sdfi, c, ca, sa, omega
+    real(dp) :: dsdfi, d2sdfi, c, ca, sa, h, omega
     integer :: k
     call clear(xa, ya, r1, delta, alfa, rok)
     alfmax = 0.0_dp
@@ -156,8 +156,11 @@ contains
       r1(k) = sqrt(xa(k)**2 + ya(k)**2)
       delta(k) = polar_angle(xa(k), ya(k))
       alfa(k) = atan((dsdfi - excntr)/c)
-      ca = cos(alfa(k))
-      sa = sin(alfa(k))
+      ! cos and sin of ALFA from its tangent (dsdfi - e)/C, not COS(ATAN(...)): near 90
+      ! degrees COS(ALFA) would keep only the digits of pi/2 - ALFA that ALFA holds
+      h = hypot(c, dsdfi - excntr)
+      ca = c/h
+      sa = (dsdfi - excntr)/h
       omega = (c*ca + dsdfi*sa*ca**2 - d2sdfi*ca**3)/c**2  ! E-DPRFLP-2
       if (omega == 0.0_dp) then
         call clear(xa, ya, r1, delta, alfa, rok)

@@ -32,7 +32,9 @@ fi
 export PATH="$venv/bin:$PATH"   # meson-python looks for meson and ninja here
 python -m pip install -q --upgrade pip >&2
 python -m pip install -q numpy meson meson-python ninja fortranformat matplotlib scipy \
-  pytest hypothesis mpmath >&2
+  pytest hypothesis mpmath \
+  pandas \
+  >&2
 echo "building and installing sarkp" >&2
 python -m pip install -q --no-build-isolation "$here" >&2
 echo "$venv/bin"

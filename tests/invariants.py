@@ -21,7 +21,6 @@ None)`` for a non-finite result from finite input without an error.
 from __future__ import annotations
 
 import math
-import re
 import warnings
 
 import numpy as np
@@ -35,9 +34,6 @@ __all__ = ["CASES", "call", "ROUTINES"]
 
 
 # ---------------------------------------------------------------------------- calling
-
-_DIGITS = re.compile(r"about (\d+) significant digit")
-
 
 def call(name, args):
     f = getattr(sarkp, name)
@@ -54,8 +50,8 @@ def call(name, args):
     bound = 1e-8
     for w in caught:
         if issubclass(w.category, sarkp.SignificanceWarning):
-            m = _DIGITS.search(str(w.message))
-            bound = max(bound, 10.0 ** -int(m.group(1)) if m else 1.0)
+            digits = w.message.digits                 # None: the routine cannot say
+            bound = max(bound, 1.0 if digits is None else 10.0 ** -digits)
     values = np.concatenate([np.ravel(np.asarray(v, dtype=float)) for v in
                              (out if isinstance(out, tuple) else (out,))])
     if not np.all(np.isfinite(values)):

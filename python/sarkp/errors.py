@@ -12,13 +12,33 @@ Every failure of a book routine maps to one of these, never to a NaN or a crash:
 
 All errors derive from ``SarkpError``, itself a ``ValueError``, so a caller who only
 knows ``ValueError`` still catches them.
+
+Beside the text, each error and warning carries what a program needs to act on it:
+``status`` (a :class:`Status`), ``index`` (the position of the first failure in an
+array call, a tuple; ``None`` for a scalar call) and, for a ``SignificanceWarning``,
+``digits`` (about how many significant digits of the result are left; ``None`` when
+the routine cannot say).  They pickle with their attributes.
 """
 
 import enum
 
 
 class SarkpError(ValueError):
-    """Base class of every error a sarkp routine raises for a computed condition."""
+    """Base class of every error a sarkp routine raises for a computed condition.
+
+    ``status``: the :class:`Status` of the failure; ``index``: the position (a tuple)
+    of the first failing element of an array call, ``None`` for a scalar call.
+    """
+
+    #: the status of the class when none is given (each subclass names its own)
+    default_status: "Status | None" = None
+
+    def __init__(self, *args, status=None, index=None):
+        super().__init__(*args)
+        if status is None:
+            status = self.default_status
+        self.status = None if status is None else _status(status)
+        self.index = None if index is None else tuple(int(i) for i in index)
 
 
 class AssemblyError(SarkpError):
@@ -54,4 +74,30 @@ class Status(enum.IntEnum):
 
 
 class SignificanceWarning(UserWarning):
-    """GELG reported a possible loss of significance (IER > 0); the result was kept."""
+    """GELG reported a possible loss of significance (IER > 0); the result was kept.
+
+    ``digits``: about how many significant digits of the result are left (the worst
+    position of an array call), or ``None`` when the routine cannot estimate it (GELG's
+    IER > 0 alone); ``index``: the first position where digits were lost (``None`` for
+    a scalar call); ``status``: always ``Status.SIGNIFICANCE``.
+    """
+
+    def __init__(self, *args, digits=None, index=None):
+        super().__init__(*args)
+        self.status = Status.SIGNIFICANCE
+        self.digits = None if digits is None else int(digits)
+        self.index = None if index is None else tuple(int(i) for i in index)
+
+
+def _status(code):
+    """``code`` as a Status (an unknown code stays an int)."""
+    try:
+        return Status(int(code))
+    except ValueError:
+        return int(code)
+
+
+for _cls, _code in ((AssemblyError, Status.ASSEMBLY), (SingularError, Status.SINGULAR),
+                      (RequirementError, Status.REQUIREMENT), (RangeError, Status.RANGE)):
+    _cls.default_status = _code
+del _cls, _code

@@ -34,7 +34,6 @@ import os
 import re
 import sys
 import warnings
-from collections import namedtuple
 from typing import Callable, Mapping, Sequence
 
 import numpy as np
@@ -43,6 +42,7 @@ from . import _sarkp
 from .errors import (AssemblyError, RangeError, RequirementError, SignificanceWarning,
                      SingularError, Status)
 from .modes import MODE_CODE
+from .results import result_type
 
 ST_OK = int(Status.OK)
 ST_ASSEMBLY = int(Status.ASSEMBLY)
@@ -176,7 +176,7 @@ class Routine:
 
     def __init__(self, name, *, listing, lines, chapter, inputs, outputs, tables=None,
                  lengths=(), nonnegative=(), nonzero=(), integers=None, checks=(),
-                 messages=None, function=False, report=None, example=None):
+                 messages=None, function=False, report=None, example=None, kept=None):
         self.name = name
         self.listing = listing
         self.lines = lines
@@ -196,6 +196,8 @@ class Routine:
         self.checks = tuple(checks)
         self.messages = dict(_DEFAULT_MESSAGES)
         self.messages.update(messages or {})
+        #: {status: outputs that are still valid after a failure with that status}
+        self.kept = {st: frozenset(names) for st, names in (kept or {}).items()}
         self.function = function
         self.report = report
         # a valid input row (book order), for routines whose valid inputs random values
@@ -223,8 +225,8 @@ class Routine:
         self._python_checked = {a for a in self.integers if _kind(self, a) == 0}
         if self.report is not None and self._aaa_index is None:
             raise TypeError(f"{name}: a report needs the print flag AAA among the inputs")
-        self.result = namedtuple(name, self.outputs)
-        self.result_with_status = namedtuple(name + "_status", self.outputs + ("status",))
+        self.result = result_type(name, self.outputs)
+        self.result_with_status = result_type(name, self.outputs + ("status",))
 
     # -- the declaration against the Fortran signature ----------------------------------
     def _bind_fortran(self):
@@ -232,6 +234,9 @@ class Routine:
         raw_required, raw_optional, _ = f2py_signature(self.one, raw=True)
         self._f2py_name = {_f2py_unbad(a): a for a in raw_required + raw_optional}
         required, optional, rets = f2py_signature(self.one)
+        # tables that Fortran writes (intent(inout): f2py returns them) are copied before
+        # the call, so that the caller's array is never changed; the others go as they are
+        self._written = frozenset(rets)
         fortran_in = [a for a in required + optional if not a.startswith("sarkp_")]
         declared = [a.lower() for a in self.inputs]
         if sorted(fortran_in) != sorted(declared):
@@ -385,15 +390,21 @@ class Routine:
 
     def _settle_scalar(self, status, out, check, on_error):
         if status == ST_SIGNIFICANCE or status > ST_DIGITS:
-            warnings.warn(f"{self.name}: {_significance_message(self.messages, status)}",
-                          SignificanceWarning, stacklevel=_caller_stacklevel())
+            warnings.warn(SignificanceWarning(
+                f"{self.name}: {_significance_message(self.messages, status)}",
+                digits=_digits(status)), stacklevel=_caller_stacklevel())
             return out
+        kept = self.kept.get(status, ())
+        settled = [o if name in kept else _nan_like(o) for name, o in zip(self.outputs, out)]
         if on_error == "raise":
             message = check.message if check is not None else None
             if status == ST_RANGE:
                 message = self._range_message(out)
-            raise status_error(self.name, status, None, self.messages, message)
-        return [_nan_like(o) for o in out]
+            error = status_error(self.name, status, None, self.messages, message)
+            if kept:            # what is still valid: the result of on_error="nan"
+                error.result = self._result(settled, Status(_status_code(status)))
+            raise error
+        return settled
 
     def _range_message(self, out, index=None):
         names = [n for n, o in zip(self.outputs, out)
@@ -564,7 +575,8 @@ class Routine:
                                      f"shape {a.shape}")
                 self._check_array(arg, a, allow_nan=False)
                 named[arg] = a
-                kw[self._f2py_name[arg.lower()]] = np.array(a, order="F", copy=True)
+                kw[self._f2py_name[arg.lower()]] = np.array(
+                    a, order="F", copy=arg.lower() in self._written or None)
             else:
                 if isinstance(value, (bool, np.bool_)) or not isinstance(
                         value, (int, float, np.integer, np.floating)):
@@ -654,6 +666,11 @@ def _status_code(status):
     return int(status) // 10 if 10 <= status < 100 else int(status)
 
 
+def _digits(status):
+    """The significant digits left by a Fortran status 100 + d, or None (GELG IER > 0)."""
+    return int(status) - ST_DIGITS if status > ST_DIGITS else None
+
+
 def _significance_message(messages, status):
     if status > ST_DIGITS:
         d = int(status) - ST_DIGITS
@@ -670,7 +687,8 @@ def status_error(name, status, index, messages, message=None):
     if message is None:
         message = messages.get(status) or messages.get(code) or \
             _DEFAULT_MESSAGES.get(code, f"status {status}")
-    return _ERRORS.get(code, SingularError)(f"{name}{where}: {message}")
+    return _ERRORS.get(code, SingularError)(f"{name}{where}: {message}",
+                                            status=code, index=index)
 
 
 def settle_arrays(name, out, status, on_error, messages, message_at=None):
@@ -696,8 +714,10 @@ def settle_arrays(name, out, status, on_error, messages, message_at=None):
         idx = _first_index(lost, status.shape)
         digits = status[status > ST_DIGITS]
         worst = int(digits.min()) if digits.size else ST_SIGNIFICANCE
-        warnings.warn(f"{name}: {_significance_message(messages, worst)} (first at index "
-                      f"{list(idx)})", SignificanceWarning, stacklevel=_caller_stacklevel())
+        warnings.warn(SignificanceWarning(
+            f"{name}: {_significance_message(messages, worst)} (first at index "
+            f"{list(idx)})", digits=_digits(worst), index=idx),
+            stacklevel=_caller_stacklevel())
         status = np.where(status > ST_DIGITS, ST_SIGNIFICANCE, status).astype(np.int32)
     reason = (status >= 10) & (status < 100)             # 10 c + k: code c
     if reason.any():
@@ -730,7 +750,10 @@ def book_routine(name: str, *, listing: str, lines: str, chapter: str,
         range}; counts default to the integers >= 1), ``checks`` (:class:`Check`),
         ``messages`` ({status: text}), ``function`` (a book FUNCTION: returns a number),
         ``report`` (callable(inputs, outputs) -> text, printed for AAA = 0), ``example``
-        (a valid input row in the book's order, for the generic tests).
+        (a valid input row in the book's order, for the generic tests), ``kept``
+        ({status: output names}: outputs still valid when the routine fails with that
+        status -- kept under ``on_error="nan"``, and the error raised otherwise carries
+        that result as ``.result``).
     """
     spec = Routine(name, listing=listing, lines=lines, chapter=chapter, inputs=inputs,
                    outputs=outputs, **options)

@@ -162,43 +162,7 @@ def render() -> str:
 
 # ---- the whole printed program in the ES EVM's arithmetic (evidence, not the library) ----
 
-class _R4(float):
-    """A REAL*4 of the ES EVM: every operation's exact result truncated to 6 hex digits."""
-
-    def __new__(cls, x):
-        return float.__new__(cls, es_evm.real4(float(x)))
-
-    def __add__(self, o):
-        return _R4(float(self) + float(_R4(o)))
-
-    def __radd__(self, o):
-        return _R4(float(_R4(o)) + float(self))
-
-    def __sub__(self, o):
-        return _R4(float(self) - float(_R4(o)))
-
-    def __rsub__(self, o):
-        return _R4(float(_R4(o)) - float(self))
-
-    def __mul__(self, o):
-        return _R4(float(self) * float(_R4(o)))
-
-    def __rmul__(self, o):
-        return _R4(float(_R4(o)) * float(self))
-
-    def __truediv__(self, o):
-        return _R4(float(self) / float(_R4(o)))
-
-    def __rtruediv__(self, o):
-        return _R4(float(_R4(o)) / float(self))
-
-    def __neg__(self):
-        return _R4(-float(self))
-
-
-def _f(function):
-    return lambda x: _R4(function(float(x)))
-
+_R4, _f = es_evm.Real4, es_evm.fn
 
 _SIN, _COS, _TAN, _ATAN, _SQRT = (_f(math.sin), _f(math.cos), _f(math.tan), _f(math.atan),
                                   _f(math.sqrt))
@@ -318,3 +282,10 @@ def plots(directory, *, format: str = "png", dpi: float | None = None) -> list:
                                     title=plot.mode_title("V.5: pressure angle and radius "
                                                           "of curvature")),
                   Path(directory, PICTURES[1]), format=format, dpi=dpi)]
+
+
+def evidence(number: str = "35"):
+    """Fig. 35 run in the ES EVM's arithmetic (:func:`emulate`), for
+    :func:`sarkp.book.figures.classify`."""
+    from .figures import Evidence
+    return Evidence(arithmetics={"ES EVM": emulated_cells()})

@@ -99,3 +99,16 @@ def plots(directory, *, format: str = "png", dpi: float | None = None) -> list:
                                     positions=np.arange(1, len(t["FI"]) + 1),
                                     title=plot.mode_title("V.5-FLAT: radius of curvature")),
                   Path(directory, PICTURES[1]), format=format, dpi=dpi)]
+
+
+def evidence(number: str = "36"):
+    """Fig. 36 run in the ES EVM's arithmetic (:func:`sarkp.book.prog_v_5.emulate` with
+    the flat follower), for :func:`sarkp.book.figures.classify`."""
+    from .figures import Evidence
+    from .prog_v_5 import emulate
+    e = emulate(flat=True)
+    out = {("dims", "RKSH"): float(e["RKSH"])}
+    for k in range(N):
+        for name in COLUMNS:
+            out[(str(k + 1), name)] = float(e[name][k])
+    return Evidence(arithmetics={"ES EVM": out})

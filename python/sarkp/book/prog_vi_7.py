@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 
 from ..gears import DGMZVN
-from .prog_v_5 import _R4, _f
+from .es_evm import Real4 as _R4, fn as _f
 from .prog_vi_6 import _duginv
 
 LISTING = "VI.7"
@@ -85,3 +85,10 @@ def emulate(calls=None) -> dict:
         for name, value in zip(DGMZVN.spec.outputs, values):
             out[(row, name)] = float(value)
     return out
+
+
+def evidence(number: str = "48"):
+    """Fig. 48 run in the ES EVM's arithmetic (:func:`emulate`), for
+    :func:`sarkp.book.figures.classify`."""
+    from .figures import Evidence
+    return Evidence(arithmetics={"ES EVM": emulate()})
