@@ -27,7 +27,7 @@ def _conf():
 
 
 def _documented(conf):
-    pages = {**conf.CHAPTERS, **conf.SUPPORT}
+    pages = {**conf.CHAPTERS, **conf.SUPPORT, "mechanism": conf.MECHANISM[1:]}
     out = {}
     for title, module_name in pages.values():
         try:
