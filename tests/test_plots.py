@@ -100,8 +100,9 @@ def _caption(figure) -> str:
 @pytest.fixture(scope="module")
 def pictures(tmp_path_factory):
     """{(program, mode): {name: Figure}} for every picture the programs draw, through
-    ``sarkp book run PROGRAM --plots DIR --mode MODE`` (plot.save recorded)."""
-    drawn = {}
+    ``sarkp book run PROGRAM --plots DIR --mode MODE --dpi 50`` (plot.save recorded);
+    ``drawn["dirs"][program, mode]`` is the DIR."""
+    drawn = {"dirs": {}}
     save = plot.save
     current = {}
 
@@ -114,8 +115,10 @@ def pictures(tmp_path_factory):
         for program, mode in itertools.product(PROGRAMS, sarkp.modes.MODES):
             current = {}
             out = tmp_path_factory.mktemp("p")
-            assert main(["book", "run", program, "--plots", str(out), "--mode", mode]) == 0
+            assert main(["book", "run", program, "--plots", str(out), "--mode", mode,
+                         "--dpi", "50"]) == 0
             drawn[program, mode] = current
+            drawn["dirs"][program, mode] = out
     finally:
         plot.save = save
     return drawn
@@ -217,15 +220,15 @@ def test_plots_writes_the_files_it_promises(tmp_path, capsys, args, fmt):
         assert f"wrote {tmp_path / name}" in err
 
 
-def test_plots_of_the_whole_program_x_and_the_dpi(tmp_path, capsys):
-    assert main(["book", "run", "X", "--plots", str(tmp_path), "--dpi", "40"]) == 0
+def test_plots_of_the_whole_program_x_and_the_dpi(pictures):
+    """``book run X --plots DIR --dpi 50``: every stage's pictures, at 50 dots per inch."""
     from sarkp.book import x_plots
-    assert sorted(p.name for p in tmp_path.iterdir()) == sorted(
+    out = pictures["dirs"]["X", "corrected"]
+    assert sorted(p.name for p in out.iterdir()) == sorted(
         n + ".png" for n in x_plots.pictures())
     assert len(x_plots.pictures()) == 12
-    figure = plot.mechanism({"O": (0.0, 0.0), "A": ([0.1, 0.0], [0.0, 0.1])}, [("O", "A")])
-    width, height = figure.get_size_inches()
-    assert _png_size(tmp_path / "x_mechanism.png") == (round(width * 40), round(height * 40))
+    width, height = pictures["X", "corrected"]["x_mechanism"].get_size_inches()
+    assert _png_size(out / "x_mechanism.png") == (round(width * 50), round(height * 50))
 
 
 @pytest.mark.parametrize("args, message", [
@@ -255,12 +258,14 @@ def test_cli_fails_early_in_one_line(tmp_path, args, message):
 def test_printout_as_printed_pictures_corrected_by_default(tmp_path, capsys):
     """Without --mode the printout is the book's (as printed) and the pictures the
     corrected design; --mode sets both."""
-    assert main(["book", "run", "V.5", "--plots", str(tmp_path)]) == 0
+    assert main(["book", "run", "VI.6", "--plots", str(tmp_path)]) == 0
     default = capsys.readouterr()
-    assert main(["book", "run", "V.5", "--mode", "as-printed"]) == 0
+    assert main(["book", "run", "VI.6", "--mode", "as-printed"]) == 0
     assert capsys.readouterr().out == default.out
+    assert main(["book", "run", "VI.6", "--mode", "corrected"]) == 0
+    assert capsys.readouterr().out != default.out         # the modes print differently
     assert "pictures (corrected mode, png)" in default.err
-    assert main(["book", "run", "V.5", "--plots", str(tmp_path), "--mode", "as-printed"]) == 0
+    assert main(["book", "run", "VI.6", "--plots", str(tmp_path), "--mode", "as-printed"]) == 0
     assert "pictures (as-printed mode, png)" in capsys.readouterr().err
 
 
