@@ -786,7 +786,7 @@ def gear_mesh(M, Z1, Z2, X1=0.0, X2=0.0, *, teeth=3, title=None, ax=None):
 
     mesh = DGMZPC(M, Z1, Z2, 0.0, X1, X2, 0.0)
     aw, alfaw, dy = mesh.AW, mesh.ALFAW, mesh.XUR
-    figure, (ax,) = _axes(ax, size=(7.5, 8.0))
+    figure, (ax,) = _axes(ax, size=(7.5, 7.2))
     u = Z2 / Z1
     rw = (aw / (1.0 + u), aw * u / (1.0 + u))             # operating pitch radii
     centres = (np.array([0.0, -rw[0]]), np.array([0.0, rw[1]]))
@@ -801,11 +801,13 @@ def gear_mesh(M, Z1, Z2, X1=0.0, X2=0.0, *, teeth=3, title=None, ax=None):
         wheels.append((c, rb, ra, rf, half, z))
     colours = ("tab:blue", "tab:red")
     width = (teeth + 1.5) * math.pi * M
+    shown_y = []                               # the outlines' heights inside the x range
     for k, (c, rb, ra, rf, half, z) in enumerate(wheels):
         towards_p = math.pi / 2 if k == 0 else -math.pi / 2
         # wheel 1 has a tooth on the centre line, wheel 2 a space there
         offset = 0.0 if k == 0 else math.pi / z
         ox, oy = _wheel_outline(c, rb, ra, rf, half, z, towards_p, offset, teeth)
+        shown_y.append(oy[np.abs(ox) <= width])
         ax.plot(ox, oy, "-", color=colours[k], lw=1.3, label=f"wheel {k + 1}, z{k + 1} = {z:g}")
         span = np.linspace(towards_p - (teeth + 1) * 2 * math.pi / z,
                            towards_p + (teeth + 1) * 2 * math.pi / z, 200)
@@ -833,14 +835,15 @@ def gear_mesh(M, Z1, Z2, X1=0.0, X2=0.0, *, teeth=3, title=None, ax=None):
     ax.plot(*zip(n1, n2), color="k", lw=0.8, label="line of action N1N2")
     ax.plot(*zip(a_point, b_point), color="k", lw=3.2,
             label=f"active length AB = {active:.2f} mm")
-    ax.plot([0.0, 0.0], [-width, width], "-.", color="0.4", lw=0.6)
+    ax.axvline(0.0, ls="-.", color="0.4", lw=0.6)
     labels = [_label(ax, name, p) for name, p in
               (("P", np.zeros(2)), ("A", a_point), ("B", b_point), ("N1", n1), ("N2", n2))]
     for p in (a_point, b_point, n1, n2, np.zeros(2)):
         ax.plot([p[0]], [p[1]], "o", color="k", ms=3.5, zorder=5)
     ax.set_aspect("equal")
     ax.set_xlim(-width, width)
-    ax.set_ylim(-0.7 * width, 0.7 * width)
+    heights = np.concatenate(shown_y + [np.array([n1[1], n2[1]])])
+    ax.set_ylim(heights.min() - M, heights.max() + M)
     ax.set_xlabel("x, mm (along the common tangent at P)")
     ax.set_ylabel("y, mm (along the centre line)")
     _legend(ax, ncols=2, prop={"size": 7})
