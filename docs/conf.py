@@ -224,9 +224,25 @@ def _absolute_values(app, what, name, obj, options, lines):
                              for k, p in enumerate(parts))
 
 
+def generate_cli():
+    """The command line's page: sarkp.cli's docstring and the help of each command."""
+    from sarkp import cli
+    parts = ["# The command line", "", "```text", cli.__doc__.strip("\n"), "```", ""]
+    for command in (["book", "run"], ["book", "diff"], ["book", "list"], ["listing"],
+                    ["errata"]):
+        text = io.StringIO()
+        with contextlib.redirect_stdout(text), contextlib.suppress(SystemExit):
+            cli.main(command + ["--help"])
+        parts += [f"## sarkp {' '.join(command)}", "", "```text",
+                  text.getvalue().rstrip("\n"), "```", ""]
+    GENERATED.mkdir(parents=True, exist_ok=True)
+    (GENERATED / "cli.md").write_text("\n".join(parts), encoding="utf-8")
+
+
 def setup(app):
     app.connect("autodoc-process-docstring", _absolute_values, priority=400)
     # stay off the source tree's python/ folder: the installed package is documented
     sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != ROOT / "python"]
     generate_api()
     generate_tutorial()
+    generate_cli()
