@@ -25,7 +25,7 @@ from sarkp.cli import main
 matplotlib = pytest.importorskip("matplotlib")
 from sarkp import plot  # noqa: E402  (needs matplotlib)
 
-PROGRAMS = ("X", "V.5", "V.5-FLAT", "VI.6", "VII.10")
+PROGRAMS = ("X", "V.5", "V.5-FLAT", "VI.6", "VI.7", "VII.10")
 MAGIC = {"png": b"\x89PNG\r\n\x1a\n", "pdf": b"%PDF-", "svg": b"<?xml"}
 
 
@@ -197,6 +197,27 @@ def test_gear_mesh_is_complete(pictures):
     assert {"P", "A", "B", "N1", "N2"} <= names
 
 
+@pytest.mark.parametrize("row", ["a", "b"])
+def test_internal_mesh_active_length_is_dgmzvn_contact_ratio(pictures, row):
+    """VI.7: the active length AB, where the tip circles cut the line of action drawn
+    tangent to both base circles, is DGMZVN's EALFA (its closed form) times the base
+    pitch; N1 and N2 lie on the base circles; the caption shows EALFA."""
+    from sarkp.book import prog_vi_7
+    figure = pictures["VI.7", "corrected"][f"vi7_mesh_{row}"]
+    call = prog_vi_7.CALLS[row]
+    with sarkp.mode("corrected"):
+        r = sarkp.DGMZVN(*call)
+        g1, g2 = sarkp.DGMTZK(call[0], call[1], 0.0, call[3]), sarkp.DGMTZK(call[0], call[2],
+                                                                           0.0, call[4])
+    mesh = figure.mesh
+    pb = math.pi * call[0] * math.cos(math.pi / 9)
+    assert abs(mesh["active"] - r.EALFA * pb) < 1e-9
+    o1, o2 = np.array([0.0, -r.DW1 / 2]), np.array([0.0, -r.DW2 / 2])
+    assert abs(np.linalg.norm(mesh["N1"] - o1) - g1.DB / 2) < 1e-9
+    assert abs(np.linalg.norm(mesh["N2"] - o2) - g2.DB / 2) < 1e-9
+    assert f"= {r.EALFA:.3f}" in _caption(figure).replace("\n", " ")
+
+
 # ---- the command line --------------------------------------------------------------------------
 
 def _png_size(path):
@@ -205,7 +226,7 @@ def _png_size(path):
 
 
 @pytest.mark.parametrize("fmt", ["png", "svg", "pdf"])
-@pytest.mark.parametrize("args", [["V.5"], ["V.5-FLAT"], ["VI.6"], ["VII.10"],
+@pytest.mark.parametrize("args", [["V.5"], ["V.5-FLAT"], ["VI.6"], ["VI.7"], ["VII.10"],
                                   ["X", "--stage", "kinematics"], ["X", "--stage", "gears"]])
 def test_plots_writes_the_files_it_promises(tmp_path, capsys, args, fmt):
     assert main(["book", "run", *args, "--plots", str(tmp_path), "--format", fmt]) == 0
@@ -226,7 +247,7 @@ def test_plots_of_the_whole_program_x_and_the_dpi(pictures):
     out = pictures["dirs"]["X", "corrected"]
     assert sorted(p.name for p in out.iterdir()) == sorted(
         n + ".png" for n in x_plots.pictures())
-    assert len(x_plots.pictures()) == 12
+    assert len(x_plots.pictures()) == 13
     width, height = pictures["X", "corrected"]["x_mechanism"].get_size_inches()
     assert _png_size(out / "x_mechanism.png") == (round(width * 50), round(height * 50))
 
@@ -273,7 +294,8 @@ def test_printout_as_printed_pictures_corrected_by_default(tmp_path, capsys):
 
 def test_public_names():
     assert set(plot.__all__) == {"mechanism", "diagrams", "cam_profile", "cam_diagrams",
-                                 "reaction_hodograph", "speed_diagram", "gear_mesh", "save",
+                                 "reaction_hodograph", "speed_diagram", "gear_mesh",
+                                 "internal_mesh", "save",
                                  "mode_title", "FORMATS"}
     assert all(hasattr(plot, name) for name in plot.__all__)
     namespace = {}
@@ -294,6 +316,7 @@ def test_functions_draw_on_the_axes_given_and_return_its_figure():
         (1, lambda ax: plot.reaction_hodograph(1 + fi, fi, ax=ax)),
         (1, lambda ax: plot.speed_diagram(fi, 3 + np.sin(fi), ax=ax)),
         (1, lambda ax: plot.gear_mesh(5.0, 11, 26, 0.5, 0.5, ax=ax)),
+        (1, lambda ax: plot.internal_mesh(3.0, 16, 51, 0.25, 0.25, 25, 75, 0.17, 83.8, ax=ax)),
     ]
     for panels, draw in calls:
         figure = Figure(figsize=(8, 8))

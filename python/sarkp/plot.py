@@ -30,7 +30,8 @@ Gears (chapter 6):
 
 * :func:`gear_mesh`: an external spur mesh near its pitch point: both wheels' teeth with
   their roots, the labelled circles, the line of action and its active length, and the
-  contact ratio.
+  contact ratio;
+* :func:`internal_mesh`: the same for a pinion in a ring cut by a shaper (DGMZVN).
 
 :func:`mode_title` adds the mode to a title: every picture of an as-printed run says so.
 """
@@ -43,7 +44,7 @@ import textwrap
 import numpy as np
 
 __all__ = ["mechanism", "diagrams", "cam_profile", "cam_diagrams", "reaction_hodograph",
-           "speed_diagram", "gear_mesh", "save", "mode_title", "FORMATS"]
+           "speed_diagram", "gear_mesh", "internal_mesh", "save", "mode_title", "FORMATS"]
 
 #: The file formats :func:`save` writes (the file's suffix is set to the format).
 FORMATS = ("png", "svg", "pdf")
@@ -751,6 +752,101 @@ def _wheel_outline(centre, rb, ra, rf, half, z, towards_p, offset, teeth):
     return centre[0] + np.concatenate(xs), centre[1] + np.concatenate(ys)
 
 
+def _ring_outline(centre, rb, ra, rf, half, z, towards_p, teeth):
+    """x, y of an internal wheel's outline over ``2 teeth + 1`` spaces around
+    ``towards_p``: its spaces have the shape of an external tooth (``half``: the space's
+    half angle on the base circle), the flanks run out from the tip circle ``ra``
+    (inside) to the root circle ``rf`` (outside), joined by arcs on both circles."""
+    rr, th = _involute_flank(rb, ra, rf)
+    keep = half - th > 0                       # a space that closes before the root
+    rr, th = rr[keep], th[keep]
+    pitch = 2 * math.pi / z
+    xs, ys = [], []
+    for j in range(-teeth, teeth + 1):
+        axis = towards_p + pitch * j
+        a = np.linspace(axis - pitch + (half - th[0]), axis - (half - th[0]), 12)
+        xs.append(ra * np.cos(a))              # the tooth before this space, at its tip
+        ys.append(ra * np.sin(a))
+        ang = axis - (half - th)
+        xs.append(rr * np.cos(ang))
+        ys.append(rr * np.sin(ang))
+        a = np.linspace(axis - (half - th[-1]), axis + (half - th[-1]), 6)
+        xs.append(rr[-1] * np.cos(a))          # the bottom of the space
+        ys.append(rr[-1] * np.sin(a))
+        ang = axis + (half - th[::-1])
+        xs.append(rr[::-1] * np.cos(ang))
+        ys.append(rr[::-1] * np.sin(ang))
+    return centre[0] + np.concatenate(xs), centre[1] + np.concatenate(ys)
+
+
+def _half_angle(g):
+    """Half the tooth angle of DGMTZK's gear ``g`` on its base circle (rad)."""
+    rb, r = g.DB / 2, g.D / 2
+    alpha0 = math.acos(rb / r)
+    return g.S / (2 * r) + (math.tan(alpha0) - alpha0)
+
+
+def _draw_mesh(figure, ax, M, wheels, alfaw, teeth, title, caption):
+    """Both wheels, their circles, the line of action N1N2 through P (the origin) and
+    its active part AB between the tip circles; ``wheels``: per wheel (outline x, y,
+    centre, (tip, operating pitch, base, root) radii, name).  Returns the mesh dict."""
+    colours = ("tab:blue", "tab:red")
+    width = (teeth + 1.5) * math.pi * M
+    shown_y = []                               # the outlines' heights inside the x range
+    for k, (ox, oy, c, radii, name) in enumerate(wheels):
+        shown_y.append(oy[np.abs(ox) <= width])
+        ax.plot(ox, oy, "-", color=colours[k], lw=1.3, label=name)
+        towards_p = math.atan2(-c[1], -c[0])
+        spread = min(math.pi, 1.3 * width / radii[1])
+        span = np.linspace(towards_p - spread, towards_p + spread, 200)
+        for radius, style, circle in zip(radii, (":", "-.", "--", (0, (1, 3))),
+                                         ("tip", "operating pitch", "base", "root")):
+            ax.plot(c[0] + radius * np.cos(span), c[1] + radius * np.sin(span),
+                    linestyle=style, color=colours[k], lw=0.7, alpha=0.8,
+                    label=f"{circle} circle {k + 1}, d = {2 * radius:.2f} mm")
+    # the line of action through P, at alpha_w to the common tangent (the x axis); its
+    # ends N1, N2 are the feet of the perpendiculars from the centres (the base circles'
+    # tangent points)
+    direction = np.array([math.cos(alfaw), math.sin(alfaw)])
+    n1, n2 = ((w[2] @ direction) * direction for w in wheels)
+
+    def cut(centre, radius):
+        """The point of the line P + t*direction on the circle (centre, radius) nearest P."""
+        b = direction @ (-centre)
+        cc = centre @ centre - radius ** 2
+        roots = (-b + np.array([-1.0, 1.0]) * math.sqrt(b * b - cc))
+        return roots[np.argmin(np.abs(roots))] * direction
+
+    a_point = cut(wheels[1][2], wheels[1][3][0])          # wheel 2's tip
+    b_point = cut(wheels[0][2], wheels[0][3][0])          # wheel 1's tip
+    active = float(np.linalg.norm(b_point - a_point))
+    ax.plot(*zip(n1, n2), color="k", lw=0.8, label="line of action N1N2")
+    if (n1 @ direction) * (n2 @ direction) > 0:     # internal mesh: P outside N1N2
+        near = min((n1, n2), key=lambda n: abs(n @ direction))
+        ax.plot(*zip(near, np.zeros(2)), ":", color="k", lw=0.8)
+    ax.plot(*zip(a_point, b_point), color="k", lw=3.2,
+            label=f"active length AB = {active:.2f} mm")
+    ax.axvline(0.0, ls="-.", color="0.4", lw=0.6)
+    labels = [_label(ax, name, p) for name, p in
+              (("P", np.zeros(2)), ("A", a_point), ("B", b_point), ("N1", n1), ("N2", n2))]
+    for p in (a_point, b_point, n1, n2, np.zeros(2)):
+        ax.plot([p[0]], [p[1]], "o", color="k", ms=3.5, zorder=5)
+    ax.set_aspect("equal")
+    ax.set_xlim(-width, width)
+    heights = np.concatenate(shown_y + [np.array([0.0, a_point[1], b_point[1]])]
+                             + [np.array([n[1]]) for n in (n1, n2) if abs(n[0]) <= width])
+    ax.set_ylim(heights.min() - M, heights.max() + M)
+    if getattr(figure, "_sarkp_own", False):     # the sheet's height follows the drawing
+        ratio = (heights.max() - heights.min() + 2 * M) / (2 * width)
+        figure.set_size_inches(7.5, min(10.0, 6.4 * ratio + 3.6))
+    ax.set_xlabel("x, mm (along the common tangent at P)")
+    ax.set_ylabel("y, mm (along the centre line)")
+    _legend(ax, ncols=2, prop={"size": 7})
+    _title(figure, [ax], title, caption=caption.format(active=active))
+    _place_labels(figure, labels)
+    return {"N1": n1, "N2": n2, "A": a_point, "B": b_point, "active": active}
+
+
 def gear_mesh(M, Z1, Z2, X1=0.0, X2=0.0, *, teeth=3, title=None, ax=None):
     """Draw an external spur mesh near its pitch point: both wheels' involute teeth with
     their roots, their tip, operating pitch, base and root circles, the line of action
@@ -780,7 +876,7 @@ def gear_mesh(M, Z1, Z2, X1=0.0, X2=0.0, *, teeth=3, title=None, ax=None):
         The drawing; its attribute ``mesh`` is a dict: ``N1``, ``N2`` the ends of the line
         of action (tangent points on the base circles), ``A``, ``B`` the ends of its active
         part (where the tip circles of wheels 2 and 1 cut it), ``active`` the active length
-        |AB|, equal to eps_alpha times the base pitch pi m cos(alpha).
+        ``|AB|``, equal to eps_alpha times the base pitch pi m cos(alpha).
     """
     from .gears import DGMTZK, DGMZPC
 
@@ -791,68 +887,76 @@ def gear_mesh(M, Z1, Z2, X1=0.0, X2=0.0, *, teeth=3, title=None, ax=None):
     rw = (aw / (1.0 + u), aw * u / (1.0 + u))             # operating pitch radii
     centres = (np.array([0.0, -rw[0]]), np.array([0.0, rw[1]]))
     wheels = []
-    for z, x, c in ((Z1, X1, centres[0]), (Z2, X2, centres[1])):
+    for k, (z, x, c) in enumerate(((Z1, X1, centres[0]), (Z2, X2, centres[1]))):
         g = DGMTZK(M, z, 0.0, x)
-        rb, r = g.DB / 2, g.D / 2
-        ra = r + (1.0 + x - dy) * M                        # tip shortened by dy
-        rf = g.DF / 2
-        alpha0 = math.acos(rb / r)
-        half = g.S / (2 * r) + (math.tan(alpha0) - alpha0)  # half tooth angle on the base
-        wheels.append((c, rb, ra, rf, half, z))
-    colours = ("tab:blue", "tab:red")
-    width = (teeth + 1.5) * math.pi * M
-    shown_y = []                               # the outlines' heights inside the x range
-    for k, (c, rb, ra, rf, half, z) in enumerate(wheels):
-        towards_p = math.pi / 2 if k == 0 else -math.pi / 2
+        rb, ra, rf = g.DB / 2, g.D / 2 + (1.0 + x - dy) * M, g.DF / 2   # tip shortened by dy
         # wheel 1 has a tooth on the centre line, wheel 2 a space there
-        offset = 0.0 if k == 0 else math.pi / z
-        ox, oy = _wheel_outline(c, rb, ra, rf, half, z, towards_p, offset, teeth)
-        shown_y.append(oy[np.abs(ox) <= width])
-        ax.plot(ox, oy, "-", color=colours[k], lw=1.3, label=f"wheel {k + 1}, z{k + 1} = {z:g}")
-        span = np.linspace(towards_p - (teeth + 1) * 2 * math.pi / z,
-                           towards_p + (teeth + 1) * 2 * math.pi / z, 200)
-        for radius, style, name in ((ra, ":", "tip"), (rw[k], "-.", "operating pitch"),
-                                    (rb, "--", "base"), (rf, (0, (1, 3)), "root")):
-            ax.plot(c[0] + radius * np.cos(span), c[1] + radius * np.sin(span),
-                    linestyle=style, color=colours[k], lw=0.7, alpha=0.8,
-                    label=f"{name} circle {k + 1}, d = {2 * radius:.2f} mm")
-    # the line of action through P, at alpha_w to the common tangent (the x axis)
-    direction = np.array([math.cos(alfaw), math.sin(alfaw)])
-    n1 = centres[0] + wheels[0][1] * np.array([-math.sin(alfaw), math.cos(alfaw)])
-    n2 = centres[1] + wheels[1][1] * np.array([math.sin(alfaw), -math.cos(alfaw)])
-
-    def cut(centre, radius):
-        """The point of the line P + t*direction on the circle (centre, radius)."""
-        b = direction @ (-centre)
-        cc = centre @ centre - radius ** 2
-        roots = (-b + np.array([-1.0, 1.0]) * math.sqrt(b * b - cc))
-        t = roots[np.argmin(np.abs(roots))]
-        return t * direction
-
-    a_point = cut(centres[1], wheels[1][2])               # wheel 2's tip: contact begins
-    b_point = cut(centres[0], wheels[0][2])               # wheel 1's tip: contact ends
-    active = float(np.linalg.norm(b_point - a_point))
-    ax.plot(*zip(n1, n2), color="k", lw=0.8, label="line of action N1N2")
-    ax.plot(*zip(a_point, b_point), color="k", lw=3.2,
-            label=f"active length AB = {active:.2f} mm")
-    ax.axvline(0.0, ls="-.", color="0.4", lw=0.6)
-    labels = [_label(ax, name, p) for name, p in
-              (("P", np.zeros(2)), ("A", a_point), ("B", b_point), ("N1", n1), ("N2", n2))]
-    for p in (a_point, b_point, n1, n2, np.zeros(2)):
-        ax.plot([p[0]], [p[1]], "o", color="k", ms=3.5, zorder=5)
-    ax.set_aspect("equal")
-    ax.set_xlim(-width, width)
-    heights = np.concatenate(shown_y + [np.array([n1[1], n2[1]])])
-    ax.set_ylim(heights.min() - M, heights.max() + M)
-    ax.set_xlabel("x, mm (along the common tangent at P)")
-    ax.set_ylabel("y, mm (along the centre line)")
-    _legend(ax, ncols=2, prop={"size": 7})
+        ox, oy = _wheel_outline(c, rb, ra, rf, _half_angle(g), z,
+                                math.pi / 2 if k == 0 else -math.pi / 2,
+                                0.0 if k == 0 else math.pi / z, teeth)
+        wheels.append((ox, oy, c, (ra, rw[k], rb, rf), f"wheel {k + 1}, z{k + 1} = {z:g}"))
     pb = math.pi * M * math.cos(math.pi / 9)
-    _title(figure, [ax], title or f"External spur mesh: m = {M:g} mm, z1 = {Z1:g}, "
-                                  f"z2 = {Z2:g}, x1 = {X1:g}, x2 = {X2:g}",
-           caption=f"operating angle αw = {math.degrees(alfaw):.2f}°, centre distance "
-                   f"aw = {aw:.3f} mm; contact ratio εα = AB / pb = {active:.2f} / "
-                   f"{pb:.2f} = {mesh.E:.3f} (DGMZPC's E)")
-    _place_labels(figure, labels)
-    figure.mesh = {"N1": n1, "N2": n2, "A": a_point, "B": b_point, "active": active}
+    figure.mesh = _draw_mesh(
+        figure, ax, M, wheels, alfaw, teeth,
+        title or f"External spur mesh: m = {M:g} mm, z1 = {Z1:g}, z2 = {Z2:g}, "
+                 f"x1 = {X1:g}, x2 = {X2:g}",
+        f"operating angle αw = {math.degrees(alfaw):.2f}°, centre distance aw = {aw:.3f} mm; "
+        f"contact ratio εα = AB / pb = {{active:.2f}} / {pb:.2f} = {mesh.E:.3f} (DGMZPC's E)")
+    return figure
+
+
+def internal_mesh(M, Z1, Z2, X1, X2, ZO2, DO, XO, DAO, *, teeth=3, title=None, ax=None):
+    """Draw an internal spur mesh near its pitch point: the pinion's teeth and the ring's
+    (cut by a shaper), their tip, operating pitch, base and root circles, the line of
+    action N1N2 and its active length AB, the contact ratio in the caption.
+
+    The geometry is DGMZVN's (operating angle, pitch, tip and root diameters, in the
+    current mode) and DGMTZK's (reference thicknesses: the ring's space is the tooth of
+    an external gear with its shift).  Both centres are below the pitch point P, at the
+    origin; the centre line is vertical.
+
+    Parameters
+    ----------
+    M : float
+        Module (mm).
+    Z1, Z2 : int
+        Teeth of the pinion and of the ring.
+    X1, X2 : float
+        Shift coefficients (the ring's positive away from its axis).
+    ZO2, DO, XO, DAO : float
+        The shaper that cuts the ring, as :func:`sarkp.DGMZVN` takes them.
+    teeth : int
+        Teeth drawn on each side of the centre line.
+    title : str, optional
+    ax : matplotlib.axes.Axes, optional
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+        Its attribute ``mesh`` is a dict as :func:`gear_mesh`'s: ``active`` = ``|AB|``
+        equals DGMZVN's EALFA times the base pitch pi m cos(alpha).
+    """
+    from .gears import DGMTZK, DGMZVN
+
+    mesh = DGMZVN(M, Z1, Z2, X1, X2, ZO2, DO, XO, DAO)
+    figure, (ax,) = _axes(ax, size=(7.5, 7.2))
+    rw = (mesh.DW1 / 2, mesh.DW2 / 2)
+    centres = (np.array([0.0, -rw[0]]), np.array([0.0, -rw[1]]))
+    g1, g2 = DGMTZK(M, Z1, 0.0, X1), DGMTZK(M, Z2, 0.0, X2)
+    ox, oy = _wheel_outline(centres[0], g1.DB / 2, mesh.DA1 / 2, mesh.DF1 / 2, _half_angle(g1),
+                            Z1, math.pi / 2, 0.0, teeth)
+    rx, ry = _ring_outline(centres[1], g2.DB / 2, mesh.DA2 / 2, mesh.DF2 / 2, _half_angle(g2),
+                           Z2, math.pi / 2, teeth)
+    wheels = [(ox, oy, centres[0], (mesh.DA1 / 2, rw[0], g1.DB / 2, mesh.DF1 / 2),
+               f"pinion, z1 = {Z1:g}"),
+              (rx, ry, centres[1], (mesh.DA2 / 2, rw[1], g2.DB / 2, mesh.DF2 / 2),
+               f"ring (internal teeth), z2 = {Z2:g}")]
+    pb = math.pi * M * math.cos(math.pi / 9)
+    figure.mesh = _draw_mesh(
+        figure, ax, M, wheels, mesh.ALFAW, teeth,
+        title or f"Internal spur mesh: m = {M:g} mm, z1 = {Z1:g}, z2 = {Z2:g}, "
+                 f"x1 = {X1:g}, x2 = {X2:g}",
+        f"operating angle αw = {math.degrees(mesh.ALFAW):.2f}°, centre distance "
+        f"aw = {mesh.AW:.3f} mm; contact ratio εα = AB / pb = {{active:.2f}} / {pb:.2f} = "
+        f"{mesh.EALFA:.3f} (DGMZVN's EALFA)")
     return figure

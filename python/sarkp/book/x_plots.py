@@ -15,7 +15,7 @@ from . import prog_x
 
 #: stage -> the names (without suffix) of the pictures :func:`plots` writes for it
 PICTURES = {
-    "gears": ("x_gear_mesh",),
+    "gears": ("x_gear_mesh", "x_internal_mesh"),
     "kinematics": ("x_mechanism", "x_velocities", "x_accelerations"),
     "cam": ("x_cam_profile", "x_cam_curvature"),
     "forces": ("x_hodograph_21", "x_hodograph_23", "x_hodograph_30", "x_hodograph_43"),
@@ -41,7 +41,8 @@ def plots(directory, stage: str | None = None, *, format: str = "png",
     in ``directory`` as ``format`` files (png, svg or pdf); return their paths.  Needs
     matplotlib.
 
-    gears: the external mesh 20/51 with DKRKT's shifts; kinematics: the mechanism in its
+    gears: the external mesh 20/51 with DKRKT's shifts, the internal mesh 51/122;
+    kinematics: the mechanism in its
     positions, the velocity and the acceleration diagrams; cam: the profile with the flat
     follower, the radius of curvature; forces: the hodographs of the joint reactions;
     dynamics: work and energy, the crank's angular speed without and with the flywheel."""
@@ -68,6 +69,13 @@ def plots(directory, stage: str | None = None, *, format: str = "png",
                                         f"z2 = {args['Z2']:g}, m = {args['M']:g} mm, "
                                         f"x1 = {args['X1']:.3f}, x2 = {args['X2']:.3f} "
                                         "(DKRKT)")), "x_gear_mesh")
+        args, _ = done["gears"]["DGMZVN"]
+        save(plot.internal_mesh(*(args[k] for k in ("M", "Z1", "Z2", "X1", "X2", "ZO2", "DO",
+                                                     "XO", "DAO")),
+                                title=title(f"Program X: the internal mesh z1 = {args['Z1']:g},"
+                                            f" z2 = {args['Z2']:g}, m = {args['M']:g} mm, "
+                                            f"x1 = {args['X1']:.3f}, x2 = {args['X2']:g}")),
+             "x_internal_mesh")
     if "kinematics" in stages:
         k, s = done["kinematics"], done["synthesis"]
         numbers = _positions(k["FI1"])
