@@ -358,3 +358,21 @@ def test_save_writes_the_format_asked(tmp_path, fmt):
         plot.save(figure, tmp_path / "c.gif")
     with pytest.raises(ValueError, match="dpi"):
         plot.save(figure, tmp_path / "c.png", dpi=float("nan"))
+
+
+@pytest.mark.parametrize("draw, error, message", [
+    (lambda: plot.diagrams([0.0, 1.0], [("s, m", {"s": [1.0, 2.0, 3.0]})]), ValueError,
+     "the curve 's'"),
+    (lambda: plot.cam_diagrams([0.0, 1.0], [1.0, 2.0], [0.1]), ValueError, "ALFA has 1"),
+    (lambda: plot.cam_profile([1.0, 2.0], [1.0], [0.0, 1.0]), ValueError, "YA has 1"),
+    (lambda: plot.speed_diagram([[0.0, 1.0]], [1.0, 2.0]), ValueError, "phi must be 1-D"),
+    (lambda: plot.speed_diagram(["a", "b"], [1.0, 2.0]), TypeError, "phi must be"),
+    (lambda: plot.mechanism({"O": (0.0, 0.0), "A": ([0.0, 1.0], [0.0])}, [("O", "A")]),
+     ValueError, "points\\['A'\\]"),
+    (lambda: plot.mechanism({"O": (0.0, 0.0)}, [("O", "B")]), ValueError, "'B' is not"),
+    (lambda: plot.cam_profile([1.0], [1.0], [0.0], follower="roller"), ValueError,
+     "follower"),
+])
+def test_bad_input_names_the_argument(draw, error, message):
+    with pytest.raises(error, match=message):
+        draw()

@@ -56,6 +56,28 @@ _OFFSETS = ((6, 6), (6, -14), (-14, 6), (-14, -14), (9, -4), (-18, -4), (-4, 9),
             (14, 12), (-22, 12), (14, -20), (-22, -20))
 
 
+def _curves(**named):
+    """The named arrays as 1-D float arrays of one length, or a ValueError naming the
+    argument that does not fit (None passes through)."""
+    out, size, first = [], None, None
+    for name, value in named.items():
+        if value is None:
+            out.append(None)
+            continue
+        try:
+            a = np.asarray(value, dtype=float)
+        except (TypeError, ValueError):
+            raise TypeError(f"{name} must be an array of numbers") from None
+        if a.ndim != 1:
+            raise ValueError(f"{name} must be 1-D, not of shape {a.shape}")
+        if size is None:
+            size, first = a.size, name
+        elif a.size != size:
+            raise ValueError(f"{name} has {a.size} values, {first} has {size}")
+        out.append(a)
+    return out
+
+
 def _new_figure(size):
     try:
         from matplotlib.figure import Figure
@@ -292,6 +314,14 @@ def mechanism(points, links, *, fixed=(), guide=None, highlight=0, every=1, path
     xy = {n: (np.atleast_1d(np.asarray(x, float)), np.atleast_1d(np.asarray(y, float)))
           for n, (x, y) in points.items()}
     count = max(v[0].size for v in xy.values())
+    for name, (x, y) in xy.items():
+        if x.size != y.size or x.size not in (1, count):
+            raise ValueError(f"points[{name!r}]: x and y must be numbers or arrays of the "
+                             f"{count} positions, not of sizes {x.size} and {y.size}")
+    for link in links:
+        for name in link:
+            if name not in xy:
+                raise ValueError(f"links: {name!r} is not a name of points")
 
     def at(name, k):
         x, y = xy[name]
@@ -377,7 +407,10 @@ def diagrams(x, panels, *, xlabel="crank angle φ1, rad", title="", degrees=Fals
     -------
     matplotlib.figure.Figure
     """
-    x = np.asarray(x, dtype=float)
+    (x,) = _curves(x=x)
+    for ylabel, curves in panels:
+        for label, values in curves.items():
+            _curves(x=x, **{f"the curve {label!r} of the panel {ylabel!r}": values})
     if degrees:
         x = np.degrees(x)
         if xlabel == "crank angle φ1, rad":
@@ -443,7 +476,7 @@ def cam_profile(XA, YA, FI, *, position=None, follower="knife", offset=0.0,
     from matplotlib.patches import Rectangle
     if follower not in ("knife", "flat"):
         raise ValueError(f"follower must be 'knife' or 'flat', not {follower!r}")
-    XA, YA, FI = (np.asarray(a, dtype=float) for a in (XA, YA, FI))
+    XA, YA, FI = _curves(XA=XA, YA=YA, FI=FI)
     radius = np.hypot(XA, YA)
     k = int(np.argmax(radius)) if position is None else int(position)
     x, y = _rotate(XA, YA, FI[k])                      # the fixed frame: the cam turned
@@ -537,7 +570,7 @@ def cam_diagrams(FI, ROK, ALFA=None, *, ALD=None, title="", positions=None, ax=N
     -------
     matplotlib.figure.Figure
     """
-    FI, ROK = np.asarray(FI, dtype=float), np.asarray(ROK, dtype=float)
+    FI, ROK, ALFA = _curves(FI=FI, ROK=ROK, ALFA=ALFA)
     deg = np.degrees(FI)
     rows = 1 if ALFA is None else 2
     figure, axes = _axes(ax, rows=rows, size=(7.5, 3.3 * rows + 1.0))
@@ -683,7 +716,8 @@ def speed_diagram(phi, WPR, WPRM=None, *, W1=None, title="", caveat=None, positi
     matplotlib.figure.Figure
         ``axes[0].lines[0]`` is WPR, ``lines[1]`` WPRM.
     """
-    phi = np.degrees(np.asarray(phi, dtype=float))
+    phi, WPR, WPRM = _curves(phi=phi, WPR=WPR, WPRM=WPRM)
+    phi = np.degrees(phi)
     figure, (ax,) = _axes(ax, size=(7.5, 4.8))
     ax.plot(phi, np.asarray(WPR, dtype=float), "-", color="C0", label="without flywheel")
     if WPRM is not None:
