@@ -26,7 +26,8 @@ No DSNTZ1 gives the lengths the printed run used (E-DSNTZ1-4), and Fig. 84 print
 
 Prints the lengths (as ``prog_x.FITTED_LINKS`` holds them), the worst cell, the number
 of fitted cells within half a unit, and the uncertainties.  ``--check`` compares with
-``prog_x.FITTED_LINKS`` and exits 1 when they differ by more than 1e-8 m.
+``prog_x.FITTED_LINKS`` (exit status 1 when they differ by more than 1e-8 m) and
+``prog_x.FITTED_UNCERTAINTY`` (to the two digits it keeps).
 Run: ``python scripts/fit_x_links.py`` (needs scipy; a few seconds).
 """
 
@@ -38,18 +39,15 @@ import sys
 import numpy as np
 
 import sarkp
-from sarkp.book import figures, prog_x
+from sarkp.book import prog_x
 
 NAMES = ("ROA", "RAB", "ROC", "RCD", "RDE")
-#: the cells of Fig. 91 the fit leaves out, by their ERRATA ids
-LEFT_OUT = {"E-FIG91-9", "E-FIG91-10"}
 
 
 def fitted_cells():
-    """The printed cells of Fig. 91 the fit uses (see the module's docstring)."""
-    return [c for c in figures.load_figure("91").cells
-            if c.reproducible and not c.column.startswith("FI1")
-            and not LEFT_OUT & set(c.errata.split(";"))]
+    """The printed cells of Fig. 91 the fit uses: ``prog_x.fitted_cells()``, the one
+    definition the diff uses too (see the module's docstring)."""
+    return prog_x.fitted_cells()
 
 
 def units(lengths, cells) -> np.ndarray:
@@ -129,7 +127,7 @@ def main(argv=None) -> int:
     args = parser.parse_args(argv)
     cells, x, u, sigma = fit()
     print(f"minimax fit of {', '.join(NAMES)} to {len(cells)} cells of Fig. 91 (all but "
-          f"FI1 and {', '.join(sorted(LEFT_OUT))})")
+          f"FI1 and {', '.join(sorted(prog_x.FIT_LEFT_OUT))})")
     print("FITTED_LINKS = {" + ", ".join(f'"{n}": {v:.8f}' for n, v in zip(NAMES, x))
           + "}")
     print(f"worst cell {np.abs(u).max():.3f} units; {int(np.sum(np.abs(u) <= 0.5 + 1e-9))} "
@@ -140,6 +138,11 @@ def main(argv=None) -> int:
         used = np.array([prog_x.FITTED_LINKS[n] for n in NAMES])
         if np.abs(used - x).max() > 1e-8:
             print("prog_x.FITTED_LINKS is not this fit's result", file=sys.stderr)
+            return 1
+        if any(float(f"{e:.1e}") != prog_x.FITTED_UNCERTAINTY[n]
+               for n, e in zip(NAMES, sigma)):
+            print("prog_x.FITTED_UNCERTAINTY is not this fit's result (to two digits)",
+                  file=sys.stderr)
             return 1
     return 0
 

@@ -40,10 +40,13 @@ def test_fig4_data_records_its_ocr_fixes():
 
 
 def test_fig4_last_angle_needs_the_es_evm_arithmetic():
-    """2.9670 is printed; double precision gives 2.96706 (ERRATA E-FIG4-4)."""
+    """2.9670 is printed; double precision gives 17 pi/18 = 2.96706 (ERRATA E-FIG4-4),
+    the ES EVM's truncating sum of DFI the printed value."""
     _, comparisons = diff("4", "corrected")
     last = next(c for c in comparisons if (c.cell.row, c.cell.column) == ("18", "FI"))
-    assert not last.matches and 0.5 < last.units < 0.7
+    assert last.computed == pytest.approx(17 * math.pi / 18, abs=1e-14) and not last.matches
+    emulated = book.figure_evidence("4").arithmetics["ES EVM"][("18", "FI")]
+    assert abs(emulated - last.cell.value) <= 0.5 * last.cell.unit
 
 
 def test_fig4_velocity_columns_are_not_the_printed_ones():

@@ -21,8 +21,6 @@ from sarkp import book
 from sarkp.book import figures, prog_x
 from sarkp.cli import main
 
-RAB_OVER_RCB = prog_x.FITTED_LINKS["RAB"] / prog_x.FITTED_LINKS["RCD"]
-
 
 def diff(number, mode="as-printed"):
     figure = figures.load_figure(number)
@@ -235,14 +233,19 @@ def test_fitted_links_round_to_fig84_and_dsntz1_is_far():
 
 
 def test_fig89_ocr_fixes_follow_from_the_same_row():
+    """X = sqrt(RK**2 - Y**2) of the same row (E-FIG89-1, -2), with RK and Y each known
+    to half a unit: the allowance is their spread through the identity plus X's own half
+    unit; the OCR readings lie outside it, the corrected values inside."""
     p = printed("89")
-    for row in ("14", "16"):                        # X = sqrt(RK**2 - Y**2), E-FIG89-1, -2
-        x = math.sqrt(p[(row, "RK")]**2 - p[(row, "Y")]**2)
-        assert abs(x - p[(row, "X")]) < 1.5e-4
     ocr = {(c.row, c.column): float(c.ocr) for c in figures.load_figure("89").cells if c.ocr}
-    for (row, col), value in ocr.items():
-        x = math.sqrt(p[(row, "RK")]**2 - p[(row, "Y")]**2)
-        assert abs(x - value) > 1.5e-3
+
+    def x(rk, y):
+        return math.sqrt(rk**2 - y**2)
+    for row in ("14", "16"):
+        args = [p[(row, "RK")], p[(row, "Y")]]
+        allowed = _spread(x, args, [0.5e-4, 0.5e-4]) + 0.5e-4
+        assert abs(x(*args) - p[(row, "X")]) <= allowed
+        assert abs(x(*args) - ocr[(row, "X")]) > allowed
 
 
 def test_fig89_phase_rows_need_the_es_evm_arithmetic():
@@ -290,36 +293,69 @@ def test_fig91_crank_angle_needs_the_es_evm_arithmetic():
     assert np.sum(np.abs(double - p) > 0.5e-4) >= 5
 
 
+def _spread(f, args, halves):
+    """How far f(*args) can move when each argument moves by its half unit: the first-
+    order worst case, sum of |f(.., x_i + h_i, ..) - f(.., x_i - h_i, ..)| / 2."""
+    total = 0.0
+    for i, h in enumerate(halves):
+        up, down = list(args), list(args)
+        up[i] += h
+        down[i] -= h
+        total += abs(f(*up) - f(*down)) / 2.0
+    return total
+
+
 def test_fig91_identities_of_the_printed_columns():
     """The evidence for E-FIG91-1..5 and -9, from the printed table alone (and the
-    printed 4-digit neighbours), with the link lengths of E-X-LINKS-1."""
+    printed 4-digit neighbours), with the link lengths of E-X-LINKS-1.  Each identity is
+    evaluated on printed cells, each known to half a unit (0.5e-4), and on the fitted
+    lengths, each known to its standard uncertainty: the allowance is what those move the
+    identity by (:func:`_spread`), plus the half unit of the cell it is compared with."""
     c = columns("91")
-    roa, rab = prog_x.FITTED_LINKS["ROA"], prog_x.FITTED_LINKS["RAB"]
-    rcd, rde = prog_x.FITTED_LINKS["RCD"], prog_x.FITTED_LINKS["RDE"]
-    f1, f2, fcb, fde = c["FI1"], c["FI2"], c["FICB"], c["FIDE"]
-    va = 3.0 * roa * np.stack([-np.sin(f1), np.cos(f1)])
-    # velocities: v_B = v_A + W2 k x AB = W3 k x CB
-    w2 = -(va[0] * np.cos(fcb) + va[1] * np.sin(fcb)) / (rab * np.sin(fcb - f2))
-    w3 = (va[0] * np.cos(f2) + va[1] * np.sin(f2)) / (rcd * np.sin(f2 - fcb))
-    assert abs(w3[12] - c["W3"][12]) < 1e-4                     # -0.5037, E-FIG91-1
-    assert abs(w2[34] - c["W2"][34]) < 1e-4                     # 0.1926, E-FIG91-4
-    assert abs(w2[34] - 0.1928) > 1.5e-4
+    L, sigma = prog_x.FITTED_LINKS, prog_x.FITTED_UNCERTAINTY
+    h = 0.5e-4
+
+    def w2(f1, f2, fcb, roa, rab):          # v_B = v_A + W2 k x AB = W3 k x CB
+        return -(3.0 * roa * (-math.sin(f1) * math.cos(fcb) + math.cos(f1) * math.sin(fcb))
+                 / (rab * math.sin(fcb - f2)))
+
+    def w3(f1, f2, fcb, roa, rcd):
+        return (3.0 * roa * (-math.sin(f1) * math.cos(f2) + math.cos(f1) * math.sin(f2))
+                / (rcd * math.sin(f2 - fcb)))
+    for fn, row, column, lengths, ocr in ((w3, 13, "W3", ("ROA", "RCD"), -0.6037),
+                                          (w2, 35, "W2", ("ROA", "RAB"), 0.1928)):
+        args = [c[n][row - 1] for n in ("FI1", "FI2", "FICB")] + [L[n] for n in lengths]
+        halves = [h, h, h] + [sigma[n] for n in lengths]
+        value, allowed = fn(*args), _spread(fn, args, halves) + h
+        assert abs(value - c[column][row - 1]) <= allowed        # E-FIG91-1, -4
+        assert abs(value - ocr) > allowed                        # what the OCR read
     # E3/E2 = RAB/RCB in every row (E-DUSKR1-1), which fixes E2 rows 16, 20 (-3, -5)
-    assert np.all(np.abs(np.abs(c["E3"]) - RAB_OVER_RCB * np.abs(c["E2"]))
-                  <= 0.5e-4 * (1 + RAB_OVER_RCB) + 1e-9)
-    for row in (15, 19):
-        assert abs(abs(c["E3"][row]) / RAB_OVER_RCB - c["E2"][row]) < 1e-4
+    ratio = L["RAB"] / L["RCD"]
+    ratio_sigma = ratio * (sigma["RAB"] / L["RAB"] + sigma["RCD"] / L["RCD"])
+    allowed = h * (1 + ratio) + ratio_sigma * np.abs(c["E2"])
+    assert np.all(np.abs(np.abs(c["E3"]) - ratio * np.abs(c["E2"])) <= allowed + 1e-12)
+    for row, ocr in ((16, 0.8588), (20, 0.5868)):
+        e2 = abs(c["E3"][row - 1]) / ratio
+        allowed = h / ratio + e2 * ratio_sigma / ratio + h
+        assert abs(e2 - c["E2"][row - 1]) <= allowed and abs(e2 - ocr) > allowed
+
     # E4 from the vertical component of DUSKR2's equation (omega2 for omega4, E-X-W4)
-    e3, w3p, w2p = c["E3"], c["W3"], c["W2"]
-    ady = -e3 * rcd * np.cos(fcb) + w3p**2 * rcd * np.sin(fcb)
-    e4 = (w2p**2 * rde * np.sin(fde) - ady) / (rde * np.cos(fde))
-    assert abs(e4[4] - c["E4"][4]) < 1e-4                       # 3.8884, E-FIG91-2
-    assert abs(e4[4] - 3.8804) > 5e-3
+    def e4(e3, w3p, w2p, fcb, fde, rcd, rde):
+        ady = -e3 * rcd * math.cos(fcb) + w3p**2 * rcd * math.sin(fcb)
+        return (w2p**2 * rde * math.sin(fde) - ady) / (rde * math.cos(fde))
+    names = ("E3", "W3", "W2", "FICB", "FIDE")
+    for row in (5,):
+        args = [c[n][row - 1] for n in names] + [L["RCD"], L["RDE"]]
+        halves = [h] * 5 + [sigma["RCD"], sigma["RDE"]]
+        value, allowed = e4(*args), _spread(e4, args, halves) + h
+        assert abs(value - c["E4"][row - 1]) <= allowed          # 3.8884, E-FIG91-2
+        assert abs(value - 3.8804) > allowed
     # E-FIG91-9: the print lies between this identity and the double-precision value
     with sarkp.as_printed():
         got = prog_x.figure_cells("91")
     for row in (15, 16):
-        lo, hi = sorted((e4[row - 1], got[(str(row), "E4")]))
+        identity = e4(*[c[n][row - 1] for n in names], L["RCD"], L["RDE"])
+        lo, hi = sorted((identity, got[(str(row), "E4")]))
         assert lo <= c["E4"][row - 1] <= hi
 
 
@@ -409,6 +445,14 @@ def test_fig87_internal_mesh_cells_are_what_the_es_evm_computed():
         cell = cells[name]
         assert not cell.matches
         assert abs(emulated[("X", name)] - cell.cell.value) <= 0.5 * cell.cell.unit
+    # but not H1 (+0.63 units) and SA1 (-0.58): no cause shown for those two
+    for name, units in (("H1", 0.63), ("SA1", -0.58)):
+        cell = cells[name]
+        off = (emulated[("X", name)] - cell.cell.value) / cell.cell.unit
+        assert not cell.matches and abs(off - units) < 0.01
+    got = classes("87")
+    assert {c.cell.column for c, _ in got[figures.NO_CAUSE] if c.cell.row == "DGMZVN"} == {
+        "H1", "SA1"}
 
 
 def test_fig87_dgmzpc_cells_are_not_what_the_es_evm_gives_E_FIG87_2():
@@ -556,8 +600,18 @@ def test_the_book_run_fails_the_task_card():
     with sarkp.as_printed():
         done = prog_x.run(["synthesis", "kinematics"])
         c = checks(done)
-    xe = columns("91")["XE"]                 # the printed 10-degree table brackets it
-    assert xe.max() - xe.min() - 1e-4 <= c["stroke"] <= xe.max() - xe.min() + 2e-3 < 0.3
+    # the printed 10-degree table brackets the stroke: from below by its range less the
+    # two extremes' half units; from above by what XE can exceed its samples by between
+    # them, max |d2 XE / dphi2| (dphi/2)**2 / 2 at each extreme
+    xe = columns("91")["XE"]
+    with sarkp.as_printed():
+        fine = np.linspace(0.0, 2.0 * math.pi, 3601)
+        sweep = prog_x.kinematics(done["synthesis"], fine)["XE"]
+    step = fine[1] - fine[0]
+    curvature = np.abs(np.diff(sweep, 2)).max() / step**2
+    between = 2 * curvature * (math.pi / 36) ** 2 / 2
+    assert xe.max() - xe.min() - 1e-4 <= c["stroke"] <= xe.max() - xe.min() + 1e-4 + between
+    assert c["stroke"] < 0.3                 # the card asks 0.40 m
     assert abs(c["K_realized"] - 1.1) > 0.03
     assert c["E3_vs_dW3/dt"] > 0.1 and c["E2_vs_dW2/dt"] < 1e-4
 
@@ -620,6 +674,22 @@ def test_cli_run_in_the_es_evm_arithmetic(capsys):
     assert prog_x.RENDER["kinematics"](double) != out.rstrip("\n")
     assert main(["book", "run", "X", "--arithmetic", "es-evm", "--mode", "corrected"]) == 2
     assert "as-printed mode only" in capsys.readouterr().err
+
+
+def test_cli_diff_in_the_es_evm_arithmetic(capsys):
+    """``sarkp book diff 91 --arithmetic es-evm`` compares x_arithmetic's run cell by cell:
+    its count is the emulation's own (computed here from the same data)."""
+    from sarkp.book import x_arithmetic
+    for number in x_arithmetic.FIGURES:
+        main(["book", "diff", number, "--arithmetic", "es-evm"])
+        out = capsys.readouterr().out
+        figure = figures.load_figure(number)
+        comparisons = figures.compare(figure, x_arithmetic.figure_cells(number, "es-evm"))
+        done = [c for c in comparisons if c.cell.reproducible]
+        assert out.rstrip().endswith(f"{sum(c.matches for c in done)} of {len(done)} cells "
+                                     f"match")
+        assert "(es-evm)" in out
+    assert main(["book", "diff", "4", "--arithmetic", "es-evm"]) == 2
 
 
 @pytest.mark.parametrize("args, message, status", [

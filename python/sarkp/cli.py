@@ -9,7 +9,8 @@
                                           chain in the ES EVM's REAL*4 or IEEE single;
                                           --plots: its pictures, the corrected design
                                           unless --mode as-printed)
-    sarkp book diff FIG|all [--mode M]    compare a reproduction with the printed figure
+    sarkp book diff FIG|all [--mode M] [--arithmetic A]
+                                          compare a reproduction with the printed figure
                                           (all: ends with a summary table, every cell
                                           reproduced, fitted, reproduced under a named
                                           arithmetic, differing with its cause shown or
@@ -47,9 +48,17 @@ def _version() -> str:
     return __version__
 
 
-def _diff(number: str, mode: str) -> tuple[str, dict]:
+def _diff(number: str, mode: str, arithmetic: str = "double") -> tuple[str, dict]:
     program = _figure_program(number)
     figure = figures.load_figure(number)
+    if arithmetic != "double":             # program X's chain emulated (as printed only)
+        from .book import x_arithmetic
+        if number not in x_arithmetic.FIGURES or mode != "as-printed":
+            raise UsageError(f"--arithmetic {arithmetic}: Figs. "
+                             f"{', '.join(x_arithmetic.FIGURES)} in as-printed mode only")
+        comparisons = figures.compare(figure, x_arithmetic.figure_cells(number, arithmetic))
+        text, _, _ = figures.report(figure, comparisons, f"{mode} ({arithmetic})")
+        return text, figures.summary(figure, comparisons)
     with modes.mode(mode):
         computed = book.figure_cells(number)
     comparisons = figures.compare(figure, computed)
@@ -225,6 +234,10 @@ def _main(argv=None) -> int:
     run.add_argument("--dpi", type=_dpi, help="resolution of PNG pictures (default 150)")
     diff = book_sub.add_parser("diff", help="compare a reproduction with a printed figure")
     diff.add_argument("figure", help="figure number, e.g. 4, or 'all'")
+    diff.add_argument("--arithmetic", choices=("double", "es-evm", "ieee-single"),
+                      default="double",
+                      help="Figs. 91, 94, 96 only: diff program X's chain run in the ES "
+                           "EVM's REAL*4 or IEEE single instead of sarkp's double")
     run.add_argument("--mode", choices=modes.MODES,
                      help="as-printed (the printout's default): the book's arithmetic and "
                           "errors; corrected (the pictures' default): every error fixed")
@@ -268,11 +281,14 @@ def _main(argv=None) -> int:
     if args.action == "run":
         return _run(args)
     numbers = list(book.FIGURES) if args.figure == "all" else [args.figure]
+    if args.figure == "all" and args.arithmetic != "double":
+        from .book import x_arithmetic
+        numbers = list(x_arithmetic.FIGURES)
     for number in numbers:
         _figure_program(number)
     rows = []
     for number in numbers:
-        text, row = _diff(number, args.mode)
+        text, row = _diff(number, args.mode, args.arithmetic)
         print(text)
         print()
         rows.append(row)

@@ -134,8 +134,10 @@ def report(figure: Figure, comparisons: list, mode: str,
     for c, kind, why in classify(comparisons, evidence):
         if kind in (REPRODUCED, FITTED):
             continue
-        if kind == NO_CAUSE and explain and not c.cell.errata:
-            why = "corrected mode: " + (explain.get(c.cell.column) or explain.get("*", ""))
+        if kind == NO_CAUSE and explain:
+            # corrected mode differs from the printed run by design: say what it corrects
+            kind = "differs, corrected mode"
+            why = explain.get(c.cell.column) or explain.get("*", "") or why
         got = "missing" if c.computed is None else f"{c.computed:.{c.cell.decimals + 2}f}"
         diff = "" if c.units is None else f" ({c.units:+.2f} units)"
         what = "DIFFERS" if c.cell.reproducible else "DIFFERS in magnitude"

@@ -7,7 +7,10 @@ calls (DPRM1, DPRM2, DSKOR1, DSKOR2, DUSKR1, DUSKR2, DNMAF2, DNMAF1, DSMVKT, DMO
 DVKT, DUGL2-5, DUGOL, DOMEGA: L551-698, L1479-2400, L6994-7096; DZKNDV, DMHVK, DINTGR,
 DFRNCL: L7560-7620, L462-503) and IBM SSP's GELG, statement by statement and left to right
 as written, every operation in the chosen arithmetic; library functions (SIN, COS, ...)
-are the exact values converted to it.  Independent of sarkp's Fortran.  The printed
+and the program's decimal constants (0.15, 9.81, ...) are the exact values converted to
+it (truncated for the ES EVM, as :class:`es_evm.Real4` converts every number: the
+machine's own library and compiler conversions are not known digit for digit, which is
+one reason an emulated cell can miss where the printed run did not).  Independent of sarkp's Fortran.  The printed
 run's own errors are kept as the printed figures have them: DUSKR1's ``ABS(Y(1))``
 (E-DUSKR1-1), omega2 passed for omega4 (E-X-W4), the m3 term counted twice
 (E-X-IPR-1), delta = 0.01 (E-X-DELTA-1); the 13-argument DPRM2 call (L7512) is read

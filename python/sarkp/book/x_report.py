@@ -18,15 +18,20 @@ def design(done: dict) -> dict:
     """The task card's measures of a run: the slider's stroke, the swing of link 3, the
     working stroke (the crank's turn while link 3 turns clockwise, W3 < 0, between the
     rocker's extreme positions) and the coefficient of speed change it realizes, over a
-    fine sweep; with the dynamics, the delta the flywheel realizes."""
-    from . import prog_x
+    fine sweep of the mechanism (:func:`sarkp.book.x_mechanism.mechanism`); with the
+    dynamics, the delta the flywheel realizes."""
+    from . import prog_x, x_mechanism
     out = {}
     if "kinematics" in done:
+        # the six-bar as a sarkp.Mechanism (x_mechanism), swept in one compiled call
         fine = np.linspace(0.0, 2.0 * math.pi, 3601)
-        k = prog_x.kinematics(done["synthesis"], fine)
-        out["stroke"] = float(k["XE"].max() - k["XE"].min())
-        out["swing"] = float(k["FICB"].max() - k["FICB"].min())
-        w3 = k["W3"]
+        k = x_mechanism.mechanism(done["synthesis"]).solve(fine, omega=prog_x.W1,
+                                                             epsilon=0.0, need="velocities")
+        xe = k.position("E")[..., 0]
+        ficb = np.unwrap(k.angle("C", "B"))            # continuous through +-pi
+        out["stroke"] = float(xe.max() - xe.min())
+        out["swing"] = float(ficb.max() - ficb.min())
+        w3 = k.omega("C", "B")
         i = np.flatnonzero(np.sign(w3[:-1]) != np.sign(w3[1:]))
         zeros = fine[i] - w3[i] * (fine[i + 1] - fine[i]) / (w3[i + 1] - w3[i])
         if zeros.size != 2:
