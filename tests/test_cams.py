@@ -647,8 +647,8 @@ def test_plots_have_labelled_axes(tmp_path, capsys):
                      plot.cam_diagrams(t["FI"], t["RKRZVN"], t["ALFA"], ALD=0.523)]
     labels = [(ax.get_xlabel(), ax.get_ylabel()) for f in figures_drawn for ax in f.axes]
     assert labels[0] == ("x, m", "y, m")
-    assert all(y.endswith((", rad", ", m")) for _, y in labels)
-    assert labels[-1][0] == "cam angle φ1, rad"
+    assert all(y.endswith((", °", ", m")) for _, y in labels)
+    assert labels[-1][0] == "cam angle φ, °"
     # the follower's tip drawn in the profile picture is r0 + s at the highest lift
     k = int(np.argmax(np.hypot(t["XPRFL"], t["YPRFL"])))
     tip = figures_drawn[0].axes[0].lines[-2].get_xydata()[0]

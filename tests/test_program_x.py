@@ -705,15 +705,16 @@ def test_cli_stage_mistakes(args, message, status):
 
 def test_plots_are_written(tmp_path):
     pytest.importorskip("matplotlib")
+    from sarkp.book import x_plots
     with sarkp.as_printed():
-        paths = prog_x.plots(tmp_path)
+        paths = x_plots.plots(tmp_path)
     names = {p.name for p in paths}
     assert {"x_mechanism.png", "x_velocities.png", "x_accelerations.png",
             "x_cam_profile.png", "x_cam_curvature.png"} <= names
     for p in paths:
         assert p.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and p.stat().st_size > 10_000
     with sarkp.mode("corrected"):
-        assert [p.name for p in prog_x.plots(tmp_path / "c", "cam")] == [
+        assert [p.name for p in x_plots.plots(tmp_path / "c", "cam")] == [
             "x_cam_profile.png", "x_cam_curvature.png"]
 
 

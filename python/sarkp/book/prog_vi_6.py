@@ -99,3 +99,25 @@ def evidence(number: str = "47"):
     :func:`sarkp.book.figures.classify`."""
     from .figures import Evidence
     return Evidence(arithmetics={"ES EVM": emulate()})
+
+
+#: the names (without suffix) of the pictures :func:`plots` writes
+PICTURES = ("vi6_mesh_a",)
+
+
+def plots(directory, *, format: str = "png", dpi: float | None = None) -> list:
+    """Write the mesh of example (a), the spur pair z1 = 11, z2 = 26, m = 5 mm,
+    x1 = x2 = 0.5 (:func:`sarkp.plot.gear_mesh`), as a ``format`` file (png, svg or pdf)
+    in ``directory``; return its path in a list.  Example (b) is a helical pair, which
+    the drawing of a spur mesh does not show.  Needs matplotlib."""
+    from pathlib import Path
+
+    from .. import plot
+
+    m, z1, z2, _, x1, x2, _ = _calls()["a"]
+    directory = Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    figure = plot.gear_mesh(m, z1, z2, x1, x2, title=plot.mode_title(
+        f"VI.6 (a): external spur mesh, m = {m:g} mm, z1 = {z1:g}, z2 = {z2:g}, "
+        f"x1 = {x1:g}, x2 = {x2:g}"))
+    return [plot.save(figure, directory / PICTURES[0], format=format, dpi=dpi)]

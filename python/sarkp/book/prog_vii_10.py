@@ -272,3 +272,35 @@ def render(card=None) -> str:
             lines.append(fortran_write(fmt, [table[n][k] for n in names]))
         lines += ["", ""]
     return "\n".join(lines)
+
+
+#: the names (without suffix) of the pictures :func:`plots` writes
+PICTURES = ("vii10_hodograph_21", "vii10_hodograph_81", "vii10_hodograph_30",
+            "vii10_hodograph_90")
+
+
+def plots(directory, *, format: str = "png", dpi: float | None = None) -> list:
+    """Write the hodographs of the reactions at the crank's two joints (F21, F81) and at
+    the frame pivots of links 3 and 9 (F30, F90) over the book's 25 positions, as
+    ``format`` files (png, svg or pdf) in ``directory``; return their paths.  Needs
+    matplotlib."""
+    from pathlib import Path
+
+    from .. import plot
+
+    t = compute()
+    directory = Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    numbers = np.arange(1, len(t["FI"]) + 1)
+    written = []
+    for name in PICTURES:
+        ij = name.rsplit("_", 1)[1]
+        i, j = ij[0], ij[1:]
+        on = "the frame" if j == "0" else f"link {j}"
+        figure = plot.reaction_hodograph(
+            t["F" + ij], t["G" + ij], positions=numbers,
+            label=f"F{ij}: link {i} on {on}",
+            title=plot.mode_title(f"VII.10: hodograph of the reaction F{ij} (link {i} on "
+                                  f"{on}), crank turning clockwise"))
+        written.append(plot.save(figure, directory / name, format=format, dpi=dpi))
+    return written
