@@ -18,9 +18,14 @@ Prints the tables and writes ``benchmarks/results/forces.csv``.
 from __future__ import annotations
 
 import csv
+import ctypes
 import math
 import os
 import pathlib
+import shutil
+import subprocess
+import tempfile
+import time
 import timeit
 
 import numpy as np
@@ -36,7 +41,9 @@ REPEAT = 3 if _Q else 5
 
 
 def best(fn, number=1):
-    return min(timeit.repeat(fn, number=number, repeat=REPEAT)) / number
+    """Best of REPEAT runs, in CPU time of the process (the two cores are shared)."""
+    timer = timeit.Timer(fn, timer=time.process_time)
+    return min(timer.repeat(number=number, repeat=REPEAT)) / number
 
 
 def per_position():
@@ -73,6 +80,76 @@ def per_position():
     return rows
 
 
+class DNMA1Loop:
+    """dnma1.c (the same statics, written by hand) compiled with cc -O3 -march=native into
+    a temporary directory, called through ctypes; the outputs allocated per call, as
+    sarkp does.  ``loop`` takes every input per position, ``const`` the loads once."""
+
+    FLAGS = ["-O3", "-march=native", "-shared", "-fPIC"]
+
+    def __init__(self):
+        cc = shutil.which("cc") or shutil.which("gcc")
+        if cc is None:
+            raise OSError("no C compiler (cc) found")
+        self._tmp = tempfile.TemporaryDirectory()
+        lib = pathlib.Path(self._tmp.name) / "libdnma1.so"
+        subprocess.run([cc, *self.FLAGS, "-o", str(lib), str(HERE / "dnma1.c"), "-lm"],
+                       check=True)
+        self.cmd = " ".join(["cc", *self.FLAGS, "dnma1.c", "-lm"])
+        self._lib = ctypes.CDLL(str(lib))
+        arr = np.ctypeslib.ndpointer(np.float64, flags="C_CONTIGUOUS")
+        self._lib.dnma1_loop.argtypes = [ctypes.c_long] + [arr] * 12 + [arr]
+        self._lib.dnma1_const.argtypes = [ctypes.c_long] + [arr] * 4 + \
+            [ctypes.c_double] * 8 + [arr]
+        self._lib.dnma1_loop.restype = self._lib.dnma1_const.restype = ctypes.c_long
+
+    def loop(self, *args):
+        n = args[1].size
+        out = np.empty((6, n))
+        self._lib.dnma1_loop(n, *args, out)
+        return out
+
+    def const(self, *args):
+        n = args[1].size
+        out = np.empty((6, n))
+        self._lib.dnma1_const(n, *args, out)
+        return out
+
+
+def dnma1_head_to_head():
+    """sarkp.DNMA1 (corrected mode: the Cartesian path; as-printed: the printed form) on
+    arrays against the hand-written C loop of the same formula over N positions of the
+    crank-rocker above, (a) with loads that vary with the position (inertia loads: every
+    input an array) and (b) with constant loads (G2, G3 passed once: C hoists their sines
+    and cosines, sarkp's Fortran takes them per position).  Also the largest difference
+    between the two (the same formula: rounding)."""
+    phi = np.linspace(0.0, 2 * np.pi, N, endpoint=False)
+    roa, rab, rcb, xc = 0.1, 0.35, 0.3, 0.4
+    xa, ya = roa * np.cos(phi), roa * np.sin(phi)
+    fi2, fi3, xb, yb = sarkp.DPRM1(xa, ya, xc, 0.0, rab, rcb, -1.0)
+    l2 = np.full(N, rab)
+    l3 = np.hypot(xb - xc, yb)
+    fcb = np.arctan2(yb, xb - xc)
+    loads = (-0.5 * rab, -0.5 * rcb, 0.0, 50.0, -np.pi / 2, 5.0, 80.0, -np.pi / 2)
+    varying = tuple(np.full(N, v) + 0.01 * np.sin(phi) for v in loads)
+    c = DNMA1Loop()
+    rows, diff = [], 0.0
+    for case, args, cfun in (("varying loads", (l2, fi2, l3, fcb) + varying, c.loop),
+                             ("constant loads", (l2, fi2, l3, fcb) + loads, c.const)):
+        t_c = best(lambda: cfun(*args))
+        t_s = best(lambda: sarkp.DNMA1(*args))
+        with sarkp.as_printed():
+            t_p = best(lambda: sarkp.DNMA1(*args))
+        r, o = sarkp.DNMA1(*args), cfun(*args)
+        diff = max(diff, np.abs(r.RA - o[0]).max() / r.RA.max(),
+                   np.abs(r.RC - o[4]).max() / r.RC.max(),
+                   np.abs(np.cos(r.GA) - np.cos(o[1])).max())
+        rows += [(f"{case}: hand-written C loop (dnma1.c)", N, t_c / N * 1e9),
+                 (f"{case}: sarkp.DNMA1, corrected mode", N, t_s / N * 1e9),
+                 (f"{case}: sarkp.DNMA1, as-printed (printed form)", N, t_p / N * 1e9)]
+    return rows, diff, c.cmd
+
+
 def closed_form(phi, a, j, w1):
     s = w1 * math.sqrt(2.0 * j)
     e0 = ((s - 2.0 * a / s) / 2.0) ** 2
@@ -103,6 +180,14 @@ def main():
     print(f"{'per crank position (array path)':48s} {'N':>8s} {'ns/position':>12s}")
     for name, n, ns in pos:
         print(f"{name:48s} {n:8d} {ns:12.0f}")
+    h2h, diff, cmd = dnma1_head_to_head()
+    print()
+    print(f"DNMA1 head to head ({cmd}); largest relative difference {diff:.1e}")
+    for name, n, ns in h2h:
+        print(f"{name:56s} {n:8d} {ns:12.0f}")
+    print(f"ratio sarkp (corrected) / C loop: varying loads {h2h[1][2] / h2h[0][2]:.2f}, "
+          f"constant loads {h2h[4][2] / h2h[3][2]:.2f}")
+    pos += h2h
     dz = dzkndv_error()
     print()
     print(f"{'M':>8s} {'DZKNDV us':>10s} {'max|WPR-exact|':>15s} {'IMHVK rel.err':>14s}")

@@ -22,6 +22,10 @@
 !     |ALFA| (ALFMAX) and the number of points where |ALFA| > ALD (NOVER);
 !   * DPRFPL returns the smallest radius of curvature (ROKMIN) and the number of points
 !     where it is negative (NCONC): a flat-faced follower cannot follow a concave profile;
+!   * DPRFLP takes cos(ALFA), sin(ALFA) from ALFA's tangent (exact near 90 degrees,
+!     where COS(ATAN(t)) keeps only the digits of pi/2 - ALFA that ALFA holds);
+!   * the Python layer adds motion laws, roller followers and exact sizing
+!     (python/sarkp/cams.py, after the book's routines);
 !   * a trailing IER (prmtr status): st_requirement where the book would divide by zero
 !     or produce a profile that does not exist, st_singular for a point where the
 !     pressure angle or the curvature radius is infinite.  On failure every output is 0.
@@ -139,7 +143,7 @@ contains
     real(dp), intent(out) :: alfmax
     integer, intent(out) :: nover
     integer, intent(out) :: ier
-    real(dp) :: dsdfi, d2sdfi, c, ca, sa, omega
+    real(dp) :: dsdfi, d2sdfi, c, ca, sa, h, omega
     integer :: k
     call clear(xa, ya, r1, delta, alfa, rok)
     alfmax = 0.0_dp
@@ -156,8 +160,12 @@ contains
       r1(k) = sqrt(xa(k)**2 + ya(k)**2)
       delta(k) = polar_angle(xa(k), ya(k))
       alfa(k) = atan((dsdfi - excntr)/c)
-      ca = cos(alfa(k))
-      sa = sin(alfa(k))
+      ! cos and sin of ALFA from its tangent (dsdfi - e)/C, not COS(ATAN(...)): near 90
+      ! degrees COS(ALFA) would keep only the digits of pi/2 - ALFA that ALFA holds
+      ! (E-DPRFLP-5, numerical)
+      h = hypot(c, dsdfi - excntr)
+      ca = c/h
+      sa = (dsdfi - excntr)/h
       omega = (c*ca + dsdfi*sa*ca**2 - d2sdfi*ca**3)/c**2  ! E-DPRFLP-2
       if (omega == 0.0_dp) then
         call clear(xa, ya, r1, delta, alfa, rok)

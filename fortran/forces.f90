@@ -33,7 +33,8 @@
 ! No as-printed switch here: only PI (3.14159 as printed) differs between the modes; no
 ! printed figure depends on the author errors corrected below.
 module forces
-  use prmtr, only: dp, pi, pid2, st_ok, st_singular, st_significance, st_digits
+  use prmtr, only: dp, pi, pid2, pi_exact, printed_mode, st_ok, st_singular, &
+                   st_significance, st_digits, book_sign
   use operators, only: dugl3, dugl4, dugl5, dvkt, dsmvkt
   use gelg_mod, only: gelg2
   implicit none
@@ -63,8 +64,8 @@ contains
       den_status = st_singular
       return
     end if
-    d = int(log10(abs(s)/epsilon(1.0_dp)))
-    if (d < 8) then
+    if (abs(s) < 1.0e8_dp*epsilon(1.0_dp)) then        ! fewer than 8 digits: how many
+      d = min(int(log10(abs(s)/epsilon(1.0_dp))), 7)
       den_status = st_digits + d
     else if (abs(s) <= eps_den) then
       den_status = st_significance
@@ -72,6 +73,19 @@ contains
       den_status = st_ok
     end if
   end function den_status
+
+  ! DUGL5 of corrected mode (exact pi, a constant here: the mode's pi is thread-local and
+  ! costs a lookup per use): the direction of (prx, pry) in (-pi/2, 3*pi/2).
+  pure real(dp) function direction(prx, pry)
+    real(dp), intent(in) :: prx, pry
+    if (prx == 0.0_dp) then
+      direction = book_sign(pi_exact/2.0_dp, pry)
+    else if (prx < 0.0_dp) then
+      direction = pi_exact + atan(pry/prx)
+    else
+      direction = atan(pry/prx)
+    end if
+  end function direction
 
   ! An arm: moment/force, 0 for a zero force (the book's guard, L5014).
   pure real(dp) function arm(moment, force)
@@ -309,15 +323,57 @@ contains
   ! written with PI + FI2); a point between A and B has a negative BS2.  The same for BS3.
   ! RB = force on 2 from 3.  Singular: links 2 and 3 parallel (GELG IER = -1).
   ! ERRATA: E-DNMA1-1 (F12, F13, RI2 for FI2, FI3: OCR), E-DUGL6-1.
+  ! Corrected mode computes the same statics in Cartesian components, with the sine and
+  ! cosine of each of FI2, FI3, G2, G3 taken once (8 libm calls and DUGL5's 3 arctangents
+  ! per position; the printed form takes 16 sines and cosines before its directions, and
+  ! DUGL6 4 more each, then re-projects RA).  The printed form, with PI = 3.14159 inside
+  ! SIN(PI + FI2) and DUGL3/DUGL4's PI/2 and PI, is kept for as-printed mode.
   subroutine dnma1(l2, fi2, l3, fi3, bs2, bs3, m2, q2, g2, m3, q3, g3, &
                    ra, ga, rb, gb, rc, gc, ier)
     real(dp), intent(in) :: l2, fi2, l3, fi3, bs2, bs3, m2, q2, g2, m3, q3, g3
     real(dp), intent(out) :: ra, ga, rb, gb, rc, gc
     integer, intent(out) :: ier
     real(dp) :: mbq2, mbq3, rat, gat, rct, gct, y1, y2, gan, ran, gcn, rcn, rbx, rby
+    real(dp) :: c2, s2, c3, s3, qx2, qy2, qx3, qy3, rax, ray, rcx, rcy, det, b1, b2
     ra = 0.0_dp; ga = 0.0_dp; rb = 0.0_dp; gb = 0.0_dp; rc = 0.0_dp; gc = 0.0_dp
     if (.not. (l2 > 0.0_dp .and. l3 > 0.0_dp)) then
       ier = st_singular
+      return
+    end if
+    if (printed_mode == 0) then
+      c2 = cos(fi2)
+      s2 = sin(fi2)
+      c3 = cos(fi3)
+      s3 = sin(fi3)
+      qx2 = q2*cos(g2)
+      qy2 = q2*sin(g2)
+      qx3 = q3*cos(g3)
+      qy3 = q3*sin(g3)
+      ! moments about B: RA's (signed) component along e(FI2 + pi/2), RC's along e(FI3 + pi/2)
+      rat = (m2 - bs2*(qx2*s2 - qy2*c2))/l2
+      rct = (m3 - bs3*(qx3*s3 - qy3*c3))/l3
+      ! the group's forces: the components y1 along e(FI2), y2 along e(FI3), by Cramer's
+      ! rule: the determinant is the sine of the angle between the links, whose
+      ! den_status is the status (the book's GELG pivot test, in the same units)
+      det = c2*s3 - c3*s2
+      ier = den_status(det)
+      if (ier == st_singular) return
+      b1 = -(qx2 + qx3 - rat*s2 - rct*s3)
+      b2 = -(qy2 + qy3 + rat*c2 + rct*c3)
+      y1 = (b1*s3 - c3*b2)/det
+      y2 = (c2*b2 - s2*b1)/det
+      rax = y1*c2 - rat*s2
+      ray = y1*s2 + rat*c2
+      rcx = y2*c3 - rct*s3
+      rcy = y2*s3 + rct*c3
+      ra = sqrt(y1**2 + rat**2)
+      rc = sqrt(y2**2 + rct**2)
+      ga = direction(rax, ray)
+      gc = direction(rcx, rcy)
+      rbx = -(rax + qx2)
+      rby = -(ray + qy2)
+      rb = sqrt(rbx**2 + rby**2)
+      gb = direction(rbx, rby)
       return
     end if
     ! links 2 and 3, moments about B: the components of RA, RC normal to the links

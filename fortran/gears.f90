@@ -40,7 +40,7 @@
 ! fixed in both modes (E-DZBPL-1, E-DZBPL-2, E-DKRKT-1, E-DKRKT-2, E-DGMTZK-1,
 ! E-DGMZPC-1, E-DGMZPC-2, E-DGMZVN-1..3).
 module gears
-  use prmtr, only: dp, pi, printed_mode, st_ok, st_requirement
+  use prmtr, only: dp, pi, printed_mode, st_ok, st_requirement, st_range
   implicit none
   private
   public :: dzbpl, dkrkt, duginv, dgmtzk, dgmzpc, dgmzvn, dchrvc
@@ -56,6 +56,10 @@ module gears
   ! ---- COMMON /ZPC/ A, XS, ALFAW, AW, XY, XUR, E (L4423) ---------------------------------
   real(dp), public :: zpc_a = 0.0_dp, zpc_xs = 0.0_dp, zpc_alfaw = 0.0_dp, zpc_aw = 0.0_dp, &
                       zpc_xy = 0.0_dp, zpc_xur = 0.0_dp, zpc_e = 0.0_dp
+  ! sarkp extension, returned after /ZPC/: what DGMZPC computes and the book drops, the tip
+  ! diameters with the tip shortening, the pressure angles and tooth thicknesses there.
+  real(dp), public :: zpc_da1 = 0.0_dp, zpc_da2 = 0.0_dp, zpc_alfaa1 = 0.0_dp, &
+                      zpc_alfaa2 = 0.0_dp, zpc_sa1 = 0.0_dp, zpc_sa2 = 0.0_dp
 
   ! ---- COMMON /ZVN/ A, XD, ALFA(W), AW, D1, D2, DW1, DW2, XY, XUR, DA1, DA2, DF1, DF(2),
   !      H1, H2, SA1, SA2, EALFA (L4540-4542; words 3 and 14 hold ALFAW and DF2, E-DGMZVN-4)
@@ -250,11 +254,16 @@ contains
   ! as-printed: the listing with its GO TO 6 (E-DZBPL-1) and Z4 of scheme 3 (E-DZBPL-2)
   ! restored: truncating integer division, IABS(Z2), no neighbourhood test.
   ! No admissible set: st_requirement (the book prints its message 10, L3789).
-  subroutine dzbpl(ks, p, q, l2, l3, z1min, z1max, shema, ier)
+  subroutine dzbpl(ks, p, q, l2, l3, z1min, z1max, shema, zkrn, zkrw, dz, ier)
     !sarkp common: z1 => zub_z1, z2 => zub_z2, z3 => zub_z3, z4 => zub_z4
-    integer, intent(in) :: ks, p, q, l2, l3, z1min, z1max, shema
+    integer, intent(in) :: ks, p, q, l2, l3, z1min, z1max, shema, zkrn, zkrw, dz
     integer, intent(out) :: ier
     logical :: found
+    ! COMMON /ZUB/'s inputs, the book's limits (VI.2 sets 20, 85, 8): sarkp takes them as
+    ! arguments (defaults the book's) and keeps them in the COMMON's variables
+    zub_zkrn = zkrn
+    zub_zkrw = zkrw
+    zub_dz = dz
     zub_z1 = 0
     zub_z2 = 0
     zub_z3 = 0
@@ -511,12 +520,16 @@ contains
   ! as-printed: S = pi m/2 + 2 x m tan(alpha_t), DA = m (z + 2 + 2x) and thicknesses with
   ! 2 x tan(alpha_t)/z, exact for spur gears only (Fig. 46 depends on them); no undercut
   ! check (Fig. 46's x = -1 gear is undercut, E-DGMTZK-4).
-  subroutine dgmtzk(m, z, beta, x, aaa, d, s, db, sb, da, sa, df, ier)
+  ! sarkp extension: XUR, the tip shortening coefficient DA includes: always 0 (DA is
+  ! Table 22's, with no shortening: DGMTZK does not know the mating gear; DGMZPC's DA1, DA2
+  ! are the mesh's).  A diameter beyond double precision is st_range.
+  subroutine dgmtzk(m, z, beta, x, aaa, d, s, db, sb, da, sa, df, xur, ier)
     real(dp), intent(in) :: m, z, beta, x, aaa
-    real(dp), intent(out) :: d, s, db, sb, da, sa, df
+    real(dp), intent(out) :: d, s, db, sb, da, sa, df, xur
     integer, intent(out) :: ier
     real(dp) :: alfa, alfaa, p, invt
     call zero7(d, s, db, sb, da, sa, df)
+    xur = 0.0_dp
     ier = st_requirement
     if (.not. (m > 0.0_dp .and. z >= 1.0_dp .and. abs(beta) < pi/2.0_dp)) return
     alfa = atan(tan(pi/9.0_dp)/cos(beta))
@@ -528,6 +541,10 @@ contains
     if (printed_mode /= 0) then
       s = p/2.0_dp + 2.0_dp*x*m*tan(alfa)
       da = m*(z + 2.0_dp + 2.0_dp*x)
+      if (overflowed(d, db, da, df)) then
+        ier = st_range
+        return
+      end if
       if (.not. (db < da)) then
         call zero7(d, s, db, sb, da, sa, df)
         ier = st_inside_base
@@ -544,6 +561,10 @@ contains
       end if
       s = m*(pi/(2.0_dp*cos(beta)) + 2.0_dp*x*tan(alfa))
       da = d + 2.0_dp*(1.0_dp + x)*m
+      if (overflowed(d, db, da, df)) then
+        ier = st_range
+        return
+      end if
       if (.not. (db < da)) then
         call zero7(d, s, db, sb, da, sa, df)
         ier = st_inside_base
@@ -561,6 +582,14 @@ contains
     ier = st_ok
   end subroutine dgmtzk
 
+  ! A diameter that is not a finite double: DGMTZK's st_range (RangeError), its values
+  ! left in place so that the error can name them.
+  logical function overflowed(d, db, da, df)
+    real(dp), intent(in) :: d, db, da, df
+    overflowed = .not. (abs(d) <= huge(d) .and. abs(db) <= huge(db) .and. &
+                        abs(da) <= huge(da) .and. abs(df) <= huge(df))
+  end function overflowed
+
   subroutine zero7(a, b, c, d, e, f, g)
     real(dp), intent(out) :: a, b, c, d, e, f, g
     a = 0.0_dp
@@ -577,7 +606,9 @@ contains
   ! ============================================================================
   ! Results in COMMON /ZPC/: A reference centre distance, XS = x1 + x2, ALFAW operating
   ! (transverse) pressure angle, AW centre distance, XY = y centre-distance coefficient,
-  ! XUR = dy tip shortening, E = eps_alpha + eps_beta.
+  ! XUR = dy tip shortening, E = eps_alpha + eps_beta.  sarkp extension, after them: the tip
+  ! diameters DA1, DA2 (with the shortening), the pressure angles ALFAA1, ALFAA2 and the
+  ! (transverse, arc) tooth thicknesses SA1, SA2 on those circles.
   ! corrected: alpha_w to full precision; the tip diameters d + 2 (1 + x - dy) m and base
   ! diameters d cos(alpha_t) of helical gears (E-DGMZPC-3), eps_beta = BW |sin beta|/(pi m);
   ! undercut, pointed teeth (tip thickness <= 0 on the shortened tip), a tip inside the
@@ -587,6 +618,8 @@ contains
   subroutine dgmzpc(m, z1, z2, beta, x1, x2, bw, aaa, ier)
     !sarkp common: a => zpc_a, xs => zpc_xs, alfaw => zpc_alfaw, aw => zpc_aw
     !sarkp common: xy => zpc_xy, xur => zpc_xur, e => zpc_e
+    !sarkp common: da1 => zpc_da1, da2 => zpc_da2, alfaa1 => zpc_alfaa1
+    !sarkp common: alfaa2 => zpc_alfaa2, sa1 => zpc_sa1, sa2 => zpc_sa2
     real(dp), intent(in) :: m, z1, z2, beta, x1, x2, bw, aaa
     integer, intent(out) :: ier
     real(dp) :: alfa, alfat, invalw, alfaw, aw, xy, xur, da1, da2, db1, db2, ala1, ala2, &
@@ -651,6 +684,12 @@ contains
     zpc_xy = xy
     zpc_xur = xur
     zpc_e = ealfa + ebeta
+    zpc_da1 = da1
+    zpc_da2 = da2
+    zpc_alfaa1 = ala1
+    zpc_alfaa2 = ala2
+    zpc_sa1 = s1
+    zpc_sa2 = s2
     ier = st_ok
   end subroutine dgmzpc
 
@@ -662,6 +701,12 @@ contains
     zpc_xy = 0.0_dp
     zpc_xur = 0.0_dp
     zpc_e = 0.0_dp
+    zpc_da1 = 0.0_dp
+    zpc_da2 = 0.0_dp
+    zpc_alfaa1 = 0.0_dp
+    zpc_alfaa2 = 0.0_dp
+    zpc_sa1 = 0.0_dp
+    zpc_sa2 = 0.0_dp
   end subroutine zpc_zero
 
   ! ============================================================================

@@ -9,8 +9,9 @@
 !   R(M,N)  right-hand sides in, solution out;   A(M,M)  destroyed;
 !   EPS     relative pivot tolerance;
 !   IER = 0   no loss of significance;
-!   IER = -1  M < 1, EPS negative or NaN, or a pivot that is zero to working precision,
-!             or a solution that overflows (no solution: R is left unchanged);
+!   IER = -1  M < 1, EPS negative or NaN, or a pivot that is zero to working precision
+!             (no solution: R is left unchanged), or a solution that overflows (R holds
+!             +-inf where it overflows: the Python layer raises RangeError);
 !   IER = K   (K >= 1) complete-pivoting Gauss elimination met, at step K+1, a pivot
 !             |p| <= EPS * max|a_ij|: the first K steps were sound, so A has numerical
 !             rank K at tolerance EPS.  The solution is still returned, as in SSP.
@@ -19,6 +20,7 @@
 ! A and each column of R are scaled by powers of 2 before the elimination (exact, same
 ! pivots and IER) so that huge or tiny coefficients neither overflow nor underflow in it.
 module gelg_mod
+  use, intrinsic :: ieee_arithmetic, only: ieee_value, ieee_positive_inf
   use prmtr, only: dp, st_ok, st_singular, st_significance
   implicit none
   private
@@ -95,7 +97,17 @@ contains
       end if
       if (maxval(abs(work)) > 0.0_dp) then
         if (exponent(maxval(abs(work))) - exponent(scl) + er - ea >= maxexponent(1.0_dp)) then
-          ier = -1                               ! the solution overflows
+          ! the solution overflows: IER = -1, and R holds +-inf where it does (the Python
+          ! layer's RangeError names R), the rest of the solution where it does not
+          ier = -1
+          do k = 1, m
+            if (exponent(work(k)) - exponent(scl) + er - ea >= maxexponent(1.0_dp)) then
+              sol(k, j) = sign(ieee_value(1.0_dp, ieee_positive_inf), work(k))
+            else
+              sol(k, j) = scale(work(k), er - ea - exponent(scl))/fraction(scl)
+            end if
+          end do
+          r(:, j) = sol(:, j)
           return
         end if
       end if

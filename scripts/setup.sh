@@ -35,6 +35,8 @@ python -m pip install -q numpy meson meson-python ninja fortranformat matplotlib
   pytest hypothesis mpmath \
   pandas \
   mypy \
+  pylinkage \
+  dask \
   >&2
 echo "building and installing sarkp" >&2
 python -m pip install -q --no-build-isolation "$here" >&2

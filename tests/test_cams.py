@@ -14,6 +14,7 @@ import numpy as np
 import pytest
 
 import sarkp
+from sarkp import book
 import sarkp.book
 from sarkp.book import figures, prog_v_5, prog_v_5_flat
 from sarkp import DINTGR, DKLCHK, DPRFLK, DPRFLP, DPRFPL, RequirementError, SarkpError, \
@@ -506,13 +507,20 @@ def test_every_reproducible_cell_matches_as_printed(number, program):
     with sarkp.as_printed():
         computed = program.cells()
     result = figures.compare(figure, computed)
-    missed = [(c.cell.row, c.cell.column, c.cell.printed, c.computed) for c in result
-              if c.cell.reproducible and not c.matches]
-    assert not missed
-    # every cell left out names its reason, and the as-printed run really misses it
+    # a cell double precision misses is compared all the same, and the ES EVM's run
+    # reproduces it (E-FIG35-8/-9, E-FIG36-5; sarkp book diff classifies it so)
+    evidence = book.figure_evidence(number)
+    for c, kind, why in figures.classify(result, evidence):
+        assert kind in (figures.REPRODUCED, figures.ARITHMETIC), (c.cell, why)
+        if kind == figures.ARITHMETIC:
+            assert why.startswith("ES EVM") and c.cell.errata, c.cell
+    # every cell left out names its reason, and neither run reproduces it
+    emulated = evidence.arithmetics["ES EVM"]
     for c in result:
         if not c.cell.reproducible:
             assert c.cell.errata and abs(c.units) > 0.5, c.cell
+            key = (c.cell.row, c.cell.column)
+            assert abs(emulated[key] - c.cell.value) > 0.5 * c.cell.unit, c.cell
 
 
 @pytest.mark.parametrize("number", ["35", "36"])
@@ -614,9 +622,9 @@ def test_render_is_the_books_layout():
 def test_cli_diff_and_run(capsys):
     from sarkp.cli import main
     assert main(["book", "diff", "35"]) == 0
-    assert capsys.readouterr().out.rstrip().endswith("526 of 526 cells match")
+    assert capsys.readouterr().out.rstrip().endswith("526 of 554 cells match")
     assert main(["book", "diff", "36"]) == 0
-    assert capsys.readouterr().out.rstrip().endswith("296 of 296 cells match")
+    assert capsys.readouterr().out.rstrip().endswith("296 of 306 cells match")
     assert main(["book", "run", "V.5-flat", "--mode", "corrected"]) == 0
     assert "РАДИУС КУЛАЧКОВОЙ ШАЙБЫ-  0.33809" in capsys.readouterr().out
 
@@ -639,8 +647,8 @@ def test_plots_have_labelled_axes(tmp_path, capsys):
                      plot.cam_diagrams(t["FI"], t["RKRZVN"], t["ALFA"], ALD=0.523)]
     labels = [(ax.get_xlabel(), ax.get_ylabel()) for f in figures_drawn for ax in f.axes]
     assert labels[0] == ("x, m", "y, m")
-    assert all(y.endswith((", rad", ", m")) for _, y in labels)
-    assert labels[-1][0] == "cam angle φ1, rad"
+    assert all(y.endswith((", °", ", m")) for _, y in labels)
+    assert labels[-1][0] == "cam angle φ, °"
     # the follower's tip drawn in the profile picture is r0 + s at the highest lift
     k = int(np.argmax(np.hypot(t["XPRFL"], t["YPRFL"])))
     tip = figures_drawn[0].axes[0].lines[-2].get_xydata()[0]

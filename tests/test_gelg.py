@@ -114,8 +114,11 @@ def test_two_by_two_path_is_bit_for_bit_gelg():
     for k in range(len(a)):
         aa, cc = np.asfortranarray(a[k]), c[k].copy()
         st = _sarkp.gelg_mod.gelg2(aa, cc)
-        ref = GELG(c[k], a[k], 2, 1, 1e-4)
-        if ref.IER < 0 or not np.all(np.isfinite(ref.R)):
+        try:
+            ref = GELG(c[k], a[k], 2, 1, 1e-4)
+        except sarkp.RangeError:                  # the solution overflows
+            ref = None
+        if ref is None or ref.IER < 0 or not np.all(np.isfinite(ref.R)):
             assert st == 2 and np.all(cc == 0.0), (a[k], c[k])
         else:
             assert st == (3 if ref.IER > 0 else 0), (a[k], c[k], ref)

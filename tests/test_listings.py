@@ -305,3 +305,63 @@ def test_every_listing_compiles_as_printed(tmp_path):
                 if DOES_NOT_COMPILE[row["file"]].startswith("E-") else True
         else:
             assert r.returncode == 0, f"{row['file']}:\n{r.stderr}"
+
+
+def _errata_table_rows():
+    text = package_file("ERRATA.md").read_text(encoding="utf-8") \
+        if package_file("ERRATA.md").is_file() else \
+        (Path(__file__).resolve().parents[1] / "docs" / "ERRATA.md").read_text("utf-8")
+    return [[c.strip() for c in line.strip().strip("|").split("|")]
+            for line in text.splitlines() if line.startswith("| E-")]
+
+
+def test_every_errata_id_is_unique():
+    ids = [row[0] for row in _errata_table_rows()]
+    assert len(ids) > 250
+    assert sorted({i for i in ids if ids.count(i) > 1}) == []
+
+
+def test_every_test_an_errata_row_cites_exists():
+    """The last column of every row names the tests that pin it (``file.py::test_name``
+    or a bare ``test_name``): each must be a test function of tests/."""
+    here = Path(__file__).resolve().parent
+    sources = {p.name: p.read_text(encoding="utf-8") for p in here.glob("*.py")}
+    missing = []
+    for row in _errata_table_rows():
+        for m in re.finditer(r"(?:([\w/]+\.py)::)?(test_\w+)", row[-1]):
+            name = m.group(2)
+            files = [Path(m.group(1)).name] if m.group(1) else list(sources)
+            if not any(re.search(rf"^def {name}\(", sources.get(f, ""), re.M) for f in files):
+                missing.append((row[0], m.group(0)))
+    assert missing == []
+
+
+@pytest.mark.parametrize("name", ["DPRM1", "DSKOR1"])
+def test_diff_shows_every_statement_of_sarkps_routine(name):
+    """``sarkp listing NAME --diff`` is faithful to sarkp's routine: every executable
+    statement of the Fortran 90 source appears on its side, statements joined by ``;``
+    one by one and one-line IFs as written (no empty IF blocks)."""
+    source = L.listing(name, modern=True)
+    statements, pending = [], ""
+    for line in source.splitlines()[1:]:
+        code = re.sub(r"!.*$", "", line).strip()
+        if not code:
+            continue
+        code = pending + code.lstrip("&").strip()
+        if code.endswith("&"):                       # a continued statement
+            pending = code[:-1].rstrip() + " "
+            continue
+        pending = ""
+        for s in (x.strip() for x in code.split(";")):
+            if s and not re.match(r"(real|integer|logical)\b", s, re.I):
+                statements.append(s)
+    diff = L.listing(name, diff="unified")
+    added = [line[2:].strip() for line in diff.splitlines() if line.startswith("+ ")]
+    # a statement not shown as added is one the book has too (shown as unchanged)
+    book = {L._key(b) for b in L._book_statements(L.listing(name))}
+    assert "if (failed(ier)) return" in added or name == "DPRM1"
+    for s in statements:
+        assert (s in added or L._key(s) in book
+                or s.lower().startswith(("subroutine", "end subroutine"))), s
+    for a, b in zip(added, added[1:]):
+        assert not (a.lower().endswith("then") and b.lower() == "end if"), (a, b)

@@ -40,6 +40,10 @@ DIFFERS = {
     # AW (and XY, XUR and through them the tip circles of E) from the misplaced parenthesis
     "DGMZPC": ({"E-DGMZPC-2"}, {"AW", "XY", "XUR", "E"}),
 }
+#: sarkp's extension outputs, which the printed code does not compute (sarkp.printed: NaN)
+EXTENSIONS = {"DGMTZK": {"XUR"}, "DGMZPC": {"DA1", "DA2", "ALFAA1", "ALFAA2", "SA1", "SA2"}}
+
+
 def _involute_dgmzpc(x):
     """DGMZPC's INVALW (L4430) as printed, PI = 3.14159."""
     a = 3.14159 / 9.0
@@ -186,6 +190,9 @@ def test_printed_code_agrees_with_as_printed_mode(name):
     differed = set()
     for x, y, yp, cond in comparisons(name, seed=sum(map(ord, name))):
         for k, out in enumerate(spec.outputs):
+            if out in EXTENSIONS.get(name, ()):
+                assert np.all(np.isnan(yp[k])), (name, out)
+                continue
             bound = tol * (cond[k] + np.max(np.abs(y[k]))) + 1e-12
             # a table's elements come from running sums: its largest value scales them all
             ok = np.all(np.abs(yp[k] - y[k]) <= bound)

@@ -21,8 +21,6 @@ from sarkp import book
 from sarkp.book import figures, prog_x
 from sarkp.cli import main
 
-RAB_OVER_RCB = prog_x.FITTED_LINKS["RAB"] / 0.5787882
-
 
 def diff(number, mode="as-printed"):
     figure = figures.load_figure(number)
@@ -47,35 +45,169 @@ def columns(number):
 
 # ---- as printed: the figures ----------------------------------------------------------------
 
-#: the largest difference (units of the last digit) each explanation allows
-BOUNDS = {"E-FIG89-4": 0.5 + 6e-8 / 1e-4,   # the tie, less one REAL*4 ulp at 0.236
-           "E-FIG91-8": 0.7, "E-FIG91-9": 2.0, "E-FIG91-10": 2.0,
-          "E-FIG94-3": 0.75, "E-FIG94-4": 2.0, "E-FIG96-4": 1.5,
-          "E-FIG87-1": 8.0, "E-FIG87-2": 1.0, "E-FIG87-3": 4.0}
-NO_GEARS = pytest.mark.skipif(not prog_x.available("gears"),
-                              reason="chapter 6 (gears) not in this build")
+def classes(number):
+    """Fig. ``number``'s compared cells by class, as ``sarkp book diff`` sorts them."""
+    figure, comparisons = diff(number)
+    with sarkp.as_printed():
+        evidence = book.figure_evidence(number)
+    out = {}
+    for c, kind, why in figures.classify(comparisons, evidence):
+        out.setdefault(kind, []).append((c, why))
+    return out
 
 
-@pytest.mark.parametrize("number, compared, matching", [
-    ("84", 2, 2), ("89", 261, 259), ("91", 703, 675), ("94", 555, 536), ("96", 371, 344),
-    pytest.param("86", 48, 48, marks=NO_GEARS), pytest.param("87", 54, 44, marks=NO_GEARS)])
-def test_every_difference_is_named_and_bounded(number, compared, matching):
-    _, comparisons = diff(number)
-    done = [c for c in comparisons if c.cell.reproducible]
-    assert len(done) == compared
-    assert sum(c.matches for c in done) == matching
-    for c in done:
-        if not c.matches:
-            ids = [e for e in c.cell.errata.split(";") if e in BOUNDS]
-            assert ids, (c.cell.row, c.cell.column, c.units)       # no "unexplained"
-            assert abs(c.units) <= max(BOUNDS[e] for e in ids), (c.cell.row, c.cell.column)
+@pytest.mark.parametrize("number", ["84", "86", "87", "89", "91", "94", "96"])
+def test_every_differing_cell_is_classified_with_an_errata_id(number):
+    """Every compared cell is in exactly one class; a differing cell carries the ERRATA
+    id that discusses it (which alone explains nothing: the class says what is shown)."""
+    figure, comparisons = diff(number)
+    compared = [c for c in comparisons if c.cell.reproducible or c.cell.magnitude]
+    got = classes(number)
+    assert sum(len(v) for v in got.values()) == len(compared)
+    for kind, cells in got.items():
+        assert kind in figures.CLASSES
+        for c, why in cells:
+            if kind in (figures.REPRODUCED, figures.FITTED):
+                assert c.matches
+            else:
+                assert not c.matches and c.cell.errata, (c.cell.row, c.cell.column)
 
 
-def test_cli_diff_names_no_cell_unexplained(capsys):
+def test_the_fit_reaches_the_audited_minimax():
+    """E-X-LINKS-1: an independent audit's minimax fit of the five lengths (Fig. 91's
+    cells less the five of E-FIG91-9/-10) reached a worst cell of 0.544 units with
+    683/539/351 cells of Figs. 91/94/96 within half a unit; the shipped fit must do as
+    well: at least those counts, and a worst fitted cell no larger than the audit's 0.544
+    (given to three decimals: 0.5445)."""
+    for number, least in (("91", 683), ("94", 539), ("96", 351)):
+        _, comparisons = diff(number)
+        assert sum(c.matches for c in comparisons if c.cell.reproducible) >= least
+    fitted = {(c.row, c.column) for c in prog_x.fitted_cells()}
+    _, comparisons = diff("91")
+    worst = max(abs(c.units) for c in comparisons if (c.cell.row, c.cell.column) in fitted)
+    assert worst <= 0.5445
+
+
+def test_fit_script_gives_the_fitted_links():
+    """prog_x.FITTED_LINKS are scripts/fit_x_links.py's output (it refits from the
+    printed Fig. 91 and compares, exit status 1 otherwise)."""
+    pytest.importorskip("scipy")
+    import pathlib
+    script = pathlib.Path(__file__).resolve().parents[1] / "scripts" / "fit_x_links.py"
+    done = subprocess.run([sys.executable, str(script), "--check"], capture_output=True,
+                          text=True, cwd=tempfile.gettempdir(), timeout=300)
+    assert done.returncode == 0, done.stderr
+    assert "587 cells of Fig. 91" in done.stdout
+
+
+def test_fitted_cells_are_reported_as_fitted_not_reproduced():
+    got = classes("91")
+    fitted = {(c.row, c.column) for c in prog_x.fitted_cells()}
+    assert {(c.cell.row, c.cell.column) for c, _ in got[figures.FITTED]} <= fitted
+    assert not fitted & {(c.cell.row, c.cell.column) for c, _ in got[figures.REPRODUCED]}
+    # what is left reproduced is the crank angle, which no length moves (E-FIG91-7),
+    # and the cells the fit leaves out
+    for c, _ in got[figures.REPRODUCED]:
+        assert (c.cell.column in ("FI1", "FI1_V", "FI1_A")
+                or prog_x.FIT_LEFT_OUT & set(c.cell.errata.split(";"))), c.cell
+
+
+def test_arithmetic_runs_are_the_program_sarkp_runs():
+    """x_arithmetic writes program X's chain from the listings, independent of sarkp's
+    Fortran; run in IEEE double it must be sarkp's as-printed chain up to double
+    precision's rounding (1e-9 of each column's scale), so that its ES EVM and IEEE
+    single runs differ from sarkp by the arithmetic alone."""
+    from sarkp.book import x_arithmetic
+    other = x_arithmetic.run("double")
+    with sarkp.as_printed():                        # at the double run's crank angles
+        links = prog_x.synthesis()
+        k = prog_x.kinematics(links, other["kinematics"]["FI1"])
+        fo = prog_x.forces(links, k)
+        done = {"kinematics": k, "forces": fo, "dynamics": prog_x.dynamics(links, k, fo)}
+    for stage in ("kinematics", "forces", "dynamics"):
+        for name, values in other[stage].items():
+            ref = np.asarray(done[stage][name], float)
+            gap = np.abs(values - ref)
+            if name in ("ALE", "BE") or name.startswith("G"):       # directions: mod 2 pi
+                gap = np.abs(np.angle(np.exp(1j * (values - ref))))
+                scale = 2 * np.pi
+            else:
+                scale = np.abs(ref).max()
+            assert np.max(gap) <= 1e-9 * scale, (stage, name)
+
+
+def test_fig89_fastest_follower_speed_needs_a_rounding_sin_E_FIG89_4():
+    """E-FIG89-4: VT = WO SK/W1 SIN(PSI/SK) at PSI/SK = PI/2 (rows 6 and 21).  The exact
+    value is the tie 0.23625; with SIN's result truncated to REAL*4 (0.99999994) the
+    machine's VT lies below it and prints 0.2362, with SIN rounded (to 1.0) it prints
+    the printed 0.2363."""
+    p = printed("89")
+    with sarkp.as_printed():
+        truncated = prog_x.cam_law()
+        rounded = prog_x.cam_law(sin_rounds=True)
+    for row in (6, 21):
+        printed_vt = p[(str(row), "VT")]
+        assert abs(abs(printed_vt) - 0.2363) < 1e-12
+        assert abs(truncated["VT"][row - 1] - printed_vt) > 0.5e-4
+        assert abs(rounded["VT"][row - 1] - printed_vt) <= 0.5e-4
+    got = classes("89")
+    assert {(c.cell.row, c.cell.column) for c, _ in got[figures.ARITHMETIC]} == {
+        ("6", "VT"), ("21", "VT")}
+
+
+def test_fig87_sa_is_a_misprint_E_FIG87_1():
+    """E-FIG87-1: the printed S = 5.3776 and SB = 5.8936 of the same gear pin X (each
+    known to half a unit) to an interval in which SA cannot print 1.7100: it prints
+    1.7107 or 1.7108 (sarkp: 1.71076)."""
+    from sarkp.book import x_causes
+    x_lo, x_hi, lo, hi = x_causes.fig87_sa1_interval()
+    assert 0.3045 < x_lo < x_hi < 0.3047
+    sa = printed("87")[("DGMTZK1", "SA")]
+    assert 1.71070 < lo < hi < 1.71085 and sa < lo - 0.5e-4
+    got = classes("87")
+    shown = [(c.cell.row, c.cell.column) for c, _ in got[figures.CAUSE_SHOWN]]
+    assert shown == [("DGMTZK1", "SA")]
+
+
+def test_lengths_within_their_uncertainty_show_the_cause_E_X_LINKS_1():
+    """A cell of Figs. 94, 96 classified "cause shown" by the lengths' uncertainty: the
+    lengths applied lie within one standard uncertainty of the fitted ones (each length
+    within its own: a necessary condition of the Mahalanobis distance <= 1 the cause
+    requires), and program X's chain rerun here with them puts the cell within half a
+    unit of its print."""
+    sigma = prog_x.FITTED_UNCERTAINTY
+    found = 0
+    for number, stage in (("94", "forces"), ("96", "dynamics")):
+        figure = figures.load_figure(number)
+        got = classes(number)
+        for c, why in got.get(figures.CAUSE_SHOWN, []):
+            with sarkp.as_printed():
+                cause = book.figure_evidence(number).causes[(c.cell.row, c.cell.column)]
+                assert cause.errata == "E-X-LINKS-1" and cause.applied
+                for name, value in cause.applied.items():
+                    # sigma is stored to two digits: at most 0.05e-6 of 1.1e-6, 4.5%
+                    assert abs(value - prog_x.FITTED_LINKS[name]) <= sigma[name] * 1.046, name
+                s = prog_x.synthesis()
+                s.update(cause.applied)
+                s["RCB"] = s["RCD"]
+                k = prog_x.kinematics(s)
+                f = prog_x.forces(s, k)
+                r = f if stage == "forces" else prog_x.dynamics(s, k, f)
+            value = prog_x.stage_cells(stage, r)[(c.cell.row, c.cell.column)]
+            assert abs(value - c.cell.value) <= 0.5 * c.cell.unit
+            assert figure.number == number
+            found += 1
+    assert found >= 1
+
+
+def test_cli_diff_classifies_every_cell(capsys):
     for number in ("84", "89", "91", "94", "96"):
         main(["book", "diff", number])
         out = capsys.readouterr().out
-        assert "unexplained" not in out and "cells match" in out
+        assert "cells match" in out
+        for line in out.splitlines():
+            if "DIFFERS" in line:
+                assert any(k in line for k in figures.CLASSES[2:]), line
 
 
 def test_fig84_as_printed():
@@ -101,14 +233,19 @@ def test_fitted_links_round_to_fig84_and_dsntz1_is_far():
 
 
 def test_fig89_ocr_fixes_follow_from_the_same_row():
+    """X = sqrt(RK**2 - Y**2) of the same row (E-FIG89-1, -2), with RK and Y each known
+    to half a unit: the allowance is their spread through the identity plus X's own half
+    unit; the OCR readings lie outside it, the corrected values inside."""
     p = printed("89")
-    for row in ("14", "16"):                        # X = sqrt(RK**2 - Y**2), E-FIG89-1, -2
-        x = math.sqrt(p[(row, "RK")]**2 - p[(row, "Y")]**2)
-        assert abs(x - p[(row, "X")]) < 1.5e-4
     ocr = {(c.row, c.column): float(c.ocr) for c in figures.load_figure("89").cells if c.ocr}
-    for (row, col), value in ocr.items():
-        x = math.sqrt(p[(row, "RK")]**2 - p[(row, "Y")]**2)
-        assert abs(x - value) > 1.5e-3
+
+    def x(rk, y):
+        return math.sqrt(rk**2 - y**2)
+    for row in ("14", "16"):
+        args = [p[(row, "RK")], p[(row, "Y")]]
+        allowed = _spread(x, args, [0.5e-4, 0.5e-4]) + 0.5e-4
+        assert abs(x(*args) - p[(row, "X")]) <= allowed
+        assert abs(x(*args) - ocr[(row, "X")]) > allowed
 
 
 def test_fig89_phase_rows_need_the_es_evm_arithmetic():
@@ -156,36 +293,69 @@ def test_fig91_crank_angle_needs_the_es_evm_arithmetic():
     assert np.sum(np.abs(double - p) > 0.5e-4) >= 5
 
 
+def _spread(f, args, halves):
+    """How far f(*args) can move when each argument moves by its half unit: the first-
+    order worst case, sum of |f(.., x_i + h_i, ..) - f(.., x_i - h_i, ..)| / 2."""
+    total = 0.0
+    for i, h in enumerate(halves):
+        up, down = list(args), list(args)
+        up[i] += h
+        down[i] -= h
+        total += abs(f(*up) - f(*down)) / 2.0
+    return total
+
+
 def test_fig91_identities_of_the_printed_columns():
     """The evidence for E-FIG91-1..5 and -9, from the printed table alone (and the
-    printed 4-digit neighbours), with the link lengths of E-X-LINKS-1."""
+    printed 4-digit neighbours), with the link lengths of E-X-LINKS-1.  Each identity is
+    evaluated on printed cells, each known to half a unit (0.5e-4), and on the fitted
+    lengths, each known to its standard uncertainty: the allowance is what those move the
+    identity by (:func:`_spread`), plus the half unit of the cell it is compared with."""
     c = columns("91")
-    roa, rab = prog_x.FITTED_LINKS["ROA"], prog_x.FITTED_LINKS["RAB"]
-    rcd, rde = 0.5787882, 0.7012536
-    f1, f2, fcb, fde = c["FI1"], c["FI2"], c["FICB"], c["FIDE"]
-    va = 3.0 * roa * np.stack([-np.sin(f1), np.cos(f1)])
-    # velocities: v_B = v_A + W2 k x AB = W3 k x CB
-    w2 = -(va[0] * np.cos(fcb) + va[1] * np.sin(fcb)) / (rab * np.sin(fcb - f2))
-    w3 = (va[0] * np.cos(f2) + va[1] * np.sin(f2)) / (rcd * np.sin(f2 - fcb))
-    assert abs(w3[12] - c["W3"][12]) < 1e-4                     # -0.5037, E-FIG91-1
-    assert abs(w2[34] - c["W2"][34]) < 1e-4                     # 0.1926, E-FIG91-4
-    assert abs(w2[34] - 0.1928) > 1.5e-4
+    L, sigma = prog_x.FITTED_LINKS, prog_x.FITTED_UNCERTAINTY
+    h = 0.5e-4
+
+    def w2(f1, f2, fcb, roa, rab):          # v_B = v_A + W2 k x AB = W3 k x CB
+        return -(3.0 * roa * (-math.sin(f1) * math.cos(fcb) + math.cos(f1) * math.sin(fcb))
+                 / (rab * math.sin(fcb - f2)))
+
+    def w3(f1, f2, fcb, roa, rcd):
+        return (3.0 * roa * (-math.sin(f1) * math.cos(f2) + math.cos(f1) * math.sin(f2))
+                / (rcd * math.sin(f2 - fcb)))
+    for fn, row, column, lengths, ocr in ((w3, 13, "W3", ("ROA", "RCD"), -0.6037),
+                                          (w2, 35, "W2", ("ROA", "RAB"), 0.1928)):
+        args = [c[n][row - 1] for n in ("FI1", "FI2", "FICB")] + [L[n] for n in lengths]
+        halves = [h, h, h] + [sigma[n] for n in lengths]
+        value, allowed = fn(*args), _spread(fn, args, halves) + h
+        assert abs(value - c[column][row - 1]) <= allowed        # E-FIG91-1, -4
+        assert abs(value - ocr) > allowed                        # what the OCR read
     # E3/E2 = RAB/RCB in every row (E-DUSKR1-1), which fixes E2 rows 16, 20 (-3, -5)
-    assert np.all(np.abs(np.abs(c["E3"]) - RAB_OVER_RCB * np.abs(c["E2"]))
-                  <= 0.5e-4 * (1 + RAB_OVER_RCB) + 1e-9)
-    for row in (15, 19):
-        assert abs(abs(c["E3"][row]) / RAB_OVER_RCB - c["E2"][row]) < 1e-4
+    ratio = L["RAB"] / L["RCD"]
+    ratio_sigma = ratio * (sigma["RAB"] / L["RAB"] + sigma["RCD"] / L["RCD"])
+    allowed = h * (1 + ratio) + ratio_sigma * np.abs(c["E2"])
+    assert np.all(np.abs(np.abs(c["E3"]) - ratio * np.abs(c["E2"])) <= allowed + 1e-12)
+    for row, ocr in ((16, 0.8588), (20, 0.5868)):
+        e2 = abs(c["E3"][row - 1]) / ratio
+        allowed = h / ratio + e2 * ratio_sigma / ratio + h
+        assert abs(e2 - c["E2"][row - 1]) <= allowed and abs(e2 - ocr) > allowed
+
     # E4 from the vertical component of DUSKR2's equation (omega2 for omega4, E-X-W4)
-    e3, w3p, w2p = c["E3"], c["W3"], c["W2"]
-    ady = -e3 * rcd * np.cos(fcb) + w3p**2 * rcd * np.sin(fcb)
-    e4 = (w2p**2 * rde * np.sin(fde) - ady) / (rde * np.cos(fde))
-    assert abs(e4[4] - c["E4"][4]) < 1e-4                       # 3.8884, E-FIG91-2
-    assert abs(e4[4] - 3.8804) > 5e-3
+    def e4(e3, w3p, w2p, fcb, fde, rcd, rde):
+        ady = -e3 * rcd * math.cos(fcb) + w3p**2 * rcd * math.sin(fcb)
+        return (w2p**2 * rde * math.sin(fde) - ady) / (rde * math.cos(fde))
+    names = ("E3", "W3", "W2", "FICB", "FIDE")
+    for row in (5,):
+        args = [c[n][row - 1] for n in names] + [L["RCD"], L["RDE"]]
+        halves = [h] * 5 + [sigma["RCD"], sigma["RDE"]]
+        value, allowed = e4(*args), _spread(e4, args, halves) + h
+        assert abs(value - c["E4"][row - 1]) <= allowed          # 3.8884, E-FIG91-2
+        assert abs(value - 3.8804) > allowed
     # E-FIG91-9: the print lies between this identity and the double-precision value
     with sarkp.as_printed():
         got = prog_x.figure_cells("91")
     for row in (15, 16):
-        lo, hi = sorted((e4[row - 1], got[(str(row), "E4")]))
+        identity = e4(*[c[n][row - 1] for n in names], L["RCD"], L["RDE"])
+        lo, hi = sorted((identity, got[(str(row), "E4")]))
         assert lo <= c["E4"][row - 1] <= hi
 
 
@@ -224,10 +394,9 @@ def test_fig86_ocr_fix_from_coaxiality():
     z1, z2, z3, z4 = (int(p[("8", f"Z{i}")]) for i in range(1, 5))
     assert 1 + Fraction(z4, z1) == Fraction(71, 10) and (z1 + z4) % 3 == 0
     assert z1 + z2 != z4 - z3
-    if prog_x.available("teeth"):
-        with sarkp.mode("corrected"):
-            variants = prog_x.run(["teeth"])["teeth"]["variants"]
-        assert [r is None for _, r in variants] == [False] * 7 + [True]
+    with sarkp.mode("corrected"):
+        variants = prog_x.run(["teeth"])["teeth"]["variants"]
+    assert [r is None for _, r in variants] == [False] * 7 + [True]
 
 
 def test_fig87_identities_of_the_printed_cells():
@@ -241,7 +410,6 @@ def test_fig87_identities_of_the_printed_cells():
         assert abs(half - p[("DGMZVN", h)]) <= 0.5e-4 + 1e-9
 
 
-@NO_GEARS
 def test_fig87_sa1_is_on_its_rounding_edge():
     """E-FIG87-3: SA1 of the internal mesh, for any DA1 within the printed 157.2092's
     interval, straddles the rounding edge of the printed 2.4346 (x of the gear 51 from
@@ -261,7 +429,6 @@ def test_fig87_sa1_is_on_its_rounding_edge():
     assert lo < p[("DGMZVN", "SA1")] - 0.5e-4 < hi
 
 
-@NO_GEARS
 def test_fig87_internal_mesh_cells_are_what_the_es_evm_computed():
     """E-FIG87-3: DGMZVN run statement by statement in the ES EVM's REAL*4
     (prog_vi_7.emulate, independent of sarkp's Fortran) with program X's call gives the
@@ -278,6 +445,49 @@ def test_fig87_internal_mesh_cells_are_what_the_es_evm_computed():
         cell = cells[name]
         assert not cell.matches
         assert abs(emulated[("X", name)] - cell.cell.value) <= 0.5 * cell.cell.unit
+    # but not H1 (+0.63 units) and SA1 (-0.58): no cause shown for those two
+    for name, units in (("H1", 0.63), ("SA1", -0.58)):
+        cell = cells[name]
+        off = (emulated[("X", name)] - cell.cell.value) / cell.cell.unit
+        assert not cell.matches and abs(off - units) < 0.01
+    got = classes("87")
+    assert {c.cell.column for c, _ in got[figures.NO_CAUSE] if c.cell.row == "DGMZVN"} == {
+        "H1", "SA1"}
+
+
+def test_fig87_dgmzpc_cells_are_not_what_the_es_evm_gives_E_FIG87_2():
+    """E-FIG87-2: DGMZPC run statement by statement in the ES EVM's REAL*4
+    (prog_vi_6.emulate, program X's call) gives AW = 106.497101, -0.92 units from the
+    printed 106.4972: the machine's arithmetic as emulated does not reproduce AW, XU, XUR,
+    and the diff says "no cause shown" for them."""
+    p = printed("87")
+    with sarkp.as_printed():
+        emulated = book.figure_evidence("87").arithmetics["ES EVM"]
+    assert abs(emulated[("DGMZPC", "AW")] - 106.497101) < 5e-7
+    assert abs(emulated[("DGMZPC", "AW")] - p[("DGMZPC", "AW")]) > 0.5e-4
+    got = classes("87")
+    assert {c.cell.column for c, _ in got[figures.NO_CAUSE] if c.cell.row == "DGMZPC"} == {
+        "AW", "XU", "XUR"}
+
+
+def test_fig91_slider_is_on_the_guide_E_X_DPRM2_1():
+    """E-X-DPRM2-1: the 13-argument DPRM2 call (L7512) is read as the guide y = H5 + YC
+    (K = (0, H5 + YC), FIM = 0, RZ2 = RDE): the printed FICB and FIDE of every row of
+    Fig. 91 satisfy RDE sin(FIDE) = H5 + YC - YD, YD = YC + RCD sin(FICB + PI).  The
+    printed angles are known to half a unit (0.5e-4 rad): the identity's residual in FIDE
+    is bounded by 0.5e-4 (FIDE) + 0.5e-4 RCD |cos FICB| / (RDE cos FIDE) (FICB), and the
+    lengths' uncertainty (E-X-LINKS-1, < 5e-6 m) adds less than 1e-5 rad."""
+    c = columns("91")
+    links = prog_x.FITTED_LINKS
+    rcd, rde = links["RCD"], links["RDE"]
+    yc = links["ROC"] * math.cos(prog_x.DELTA)
+    yd = yc + rcd * np.sin(c["FICB"] + 3.14159)
+    fide = np.arcsin((prog_x.H5 + yc - yd) / rde)
+    bound = (0.5e-4 + 0.5e-4 * rcd * np.abs(np.cos(c["FICB"])) / (rde * np.cos(c["FIDE"]))
+             + 1e-5)
+    assert np.all(np.abs(fide - c["FIDE"]) <= bound)
+    # the call as written (XK = 0, YK = 0, FIM = H5 + YC, RZ2 = 0) has no link DE
+    assert sarkp.listing("X").count("CALL DPRM2(XD, YD, 0.0, 0.0, H5 + YC, 0.0, RDE,") == 1
 
 
 def test_fig94_ocr_fixes_from_the_printed_columns():
@@ -297,10 +507,65 @@ def test_fig94_ocr_fixes_from_the_printed_columns():
 
 # ---- corrected mode: the design the task card asks for ---------------------------------------
 
+def checks(done):
+    """The task card's measures of a run (x_report.design) and its physical checks:
+    the accelerations against central differences of the velocities over a fine sweep,
+    and the moment M1 against the virtual work of the loads (relative to each quantity's
+    largest value)."""
+    from sarkp.book import x_report
+    out = x_report.design(done)
+    W1, G = prog_x.W1, prog_x.G
+    if "kinematics" in done:
+        links = done["synthesis"]
+        fine = np.linspace(0.0, 2.0 * math.pi, 3601)
+        k = prog_x.kinematics(links, fine)
+        h = 1e-5
+        plus, minus = prog_x.kinematics(links, fine + h), prog_x.kinematics(links, fine - h)
+
+        def rel(a, b):
+            return float(np.max(np.abs(a - b)) / np.max(np.abs(b)))
+
+        def vex(t):
+            return t["VE"] * np.cos(t["ALE"])
+
+        def aex(t):
+            return t["AE"] * np.cos(t["BE"])
+        out["E2_vs_dW2/dt"] = rel(k["E2"], W1 * (plus["W2"] - minus["W2"]) / (2 * h))
+        out["E3_vs_dW3/dt"] = rel(k["E3"], W1 * (plus["W3"] - minus["W3"]) / (2 * h))
+        out["E4_vs_dW4/dt"] = rel(k["E4"], W1 * (plus["W4"] - minus["W4"]) / (2 * h))
+        out["AE_vs_dVE/dt"] = rel(aex(k), W1 * (vex(plus) - vex(minus)) / (2 * h))
+    if "forces" in done:
+        # virtual work (no inertia loads): the moment M1 of link 2's force on the crank
+        # about O times omega1 is the power of the loads, FS on 5 and the weights of 2-5;
+        # the points' velocities as central differences of their positions
+        links = done["synthesis"]
+        fine = np.linspace(0.0, 2.0 * math.pi, 721)[:-1]
+        h = 1e-6
+        k, kp, km = (prog_x.kinematics(links, fine + d) for d in (0.0, h, -h))
+        fo = prog_x.forces(links, k)
+        m = prog_x.masses(links)
+        pi = sarkp.modes.book_pi()
+
+        def centres(t):
+            c3 = (t["XC"] + 0.15 * links["RCD"] * np.cos(t["FICB"] + pi),
+                  t["YC"] + 0.15 * links["RCD"] * np.sin(t["FICB"] + pi))
+            s4y = t["YD"] + 0.3 * links["RDE"] * np.sin(t["FIDE"])
+            s2y = t["YA"] + 0.5 * links["RAB"] * np.sin(t["FI2"])
+            return t["XE"], s2y, c3[1], s4y
+        (xe_p, s2_p, s3_p, s4_p), (xe_m, s2_m, s3_m, s4_m) = centres(kp), centres(km)
+        rate = W1 / (2.0 * h)
+        power = (-fo["FS"] * (xe_p - xe_m) * rate
+                 - G * (m["M2"] * (s2_p - s2_m) + m["M3"] * (s3_p - s3_m)
+                        + m["M4"] * (s4_p - s4_m)) * rate)      # slider 5 moves level
+        out["virtual_work"] = float(np.max(np.abs(fo["M1"] * W1 - power))
+                                    / np.max(np.abs(power)))
+    return out
+
+
 def test_corrected_design_meets_the_task_card():
     with sarkp.mode("corrected"):
         done = prog_x.run(["synthesis", "cam", "kinematics"])
-        c = prog_x.checks(done)
+        c = checks(done)
     s = done["synthesis"]
     # E-X-FICD1-1: with CD at FICD1 to the guide the slider is at the card's x_E = 0.82
     ficd1 = s["FICD1"]
@@ -322,11 +587,9 @@ def test_corrected_design_meets_the_task_card():
 def test_corrected_forces_and_flywheel():
     """Virtual work: M1 w1 is the loads' power; the flywheel for the card's delta = 0.02
     gives it (E-X-DELTA-1); without it the machine stalls (E-DZKNDV-2)."""
-    if not prog_x.available("dynamics"):
-        pytest.skip("chapters 7-8 not in this build")
     with sarkp.mode("corrected"):
         done = prog_x.run(["dynamics"])
-        c = prog_x.checks(done)
+        c = checks(done)
     assert c["virtual_work"] < 1e-6
     d = done["dynamics"]
     assert d["DELTA"] == 0.02 and d["STALLS"] and np.isnan(d["WPR"]).all()
@@ -336,9 +599,19 @@ def test_corrected_forces_and_flywheel():
 def test_the_book_run_fails_the_task_card():
     with sarkp.as_printed():
         done = prog_x.run(["synthesis", "kinematics"])
-        c = prog_x.checks(done)
-    xe = columns("91")["XE"]                 # the printed 10-degree table brackets it
-    assert xe.max() - xe.min() - 1e-4 <= c["stroke"] <= xe.max() - xe.min() + 2e-3 < 0.3
+        c = checks(done)
+    # the printed 10-degree table brackets the stroke: from below by its range less the
+    # two extremes' half units; from above by what XE can exceed its samples by between
+    # them, max |d2 XE / dphi2| (dphi/2)**2 / 2 at each extreme
+    xe = columns("91")["XE"]
+    with sarkp.as_printed():
+        fine = np.linspace(0.0, 2.0 * math.pi, 3601)
+        sweep = prog_x.kinematics(done["synthesis"], fine)["XE"]
+    step = fine[1] - fine[0]
+    curvature = np.abs(np.diff(sweep, 2)).max() / step**2
+    between = 2 * curvature * (math.pi / 36) ** 2 / 2
+    assert xe.max() - xe.min() - 1e-4 <= c["stroke"] <= xe.max() - xe.min() + 1e-4 + between
+    assert c["stroke"] < 0.3                 # the card asks 0.40 m
     assert abs(c["K_realized"] - 1.1) > 0.03
     assert c["E3_vs_dW3/dt"] > 0.1 and c["E2_vs_dW2/dt"] < 1e-4
 
@@ -374,17 +647,6 @@ def test_stage_alone_prints_only_that_stage():
     assert "РАЗМЕРЫ" not in kin and kin.count("\n") > 111
 
 
-def test_stage_with_an_upstream_stage_that_cannot_run(monkeypatch):
-    monkeypatch.delattr(sarkp, "DPRM1")
-    with pytest.raises(prog_x.StageError, match="stage 'kinematics'.*DPRM1"):
-        prog_x.run(["kinematics"])
-    monkeypatch.undo()
-    monkeypatch.delattr(sarkp, "DSNTZ1")
-    with pytest.raises(sarkp.SarkpError,
-                       match="stage 'kinematics'.*stage 'synthesis'.*DSNTZ1"):
-        prog_x.render("kinematics")
-
-
 def test_task_card_without_a_mechanism(monkeypatch):
     monkeypatch.setattr(prog_x, "X5", (0.82, 0.82, 0.82))
     with pytest.raises(sarkp.SarkpError, match="stage 'synthesis'.*DSNTZR"):
@@ -396,6 +658,38 @@ def test_cli_stage(capsys):
     out = capsys.readouterr().out
     assert out.startswith(" РАЗМЕРЫ ЗВЕНЬЕВ МАНИПУЛЯТОРА")
     assert "RCD =   0.579 RDE =   0.701 FICD =   0.000" in out
+
+
+def test_cli_run_in_the_es_evm_arithmetic(capsys):
+    """``sarkp book run X --arithmetic es-evm``: the kinematics, forces and dynamics
+    printed from x_arithmetic's ES EVM run (the printed Fig. 91's first row, and rows the
+    ES EVM reproduces where double does not)."""
+    from sarkp.book import x_arithmetic
+    assert main(["book", "run", "X", "--arithmetic", "es-evm", "--stage", "kinematics"]) == 0
+    out = capsys.readouterr().out
+    es = x_arithmetic.run("es-evm")["kinematics"]
+    with sarkp.as_printed():
+        double = prog_x.run(["kinematics"])["kinematics"]
+    assert prog_x.RENDER["kinematics"](es) == out.rstrip("\n")
+    assert prog_x.RENDER["kinematics"](double) != out.rstrip("\n")
+    assert main(["book", "run", "X", "--arithmetic", "es-evm", "--mode", "corrected"]) == 2
+    assert "as-printed mode only" in capsys.readouterr().err
+
+
+def test_cli_diff_in_the_es_evm_arithmetic(capsys):
+    """``sarkp book diff 91 --arithmetic es-evm`` compares x_arithmetic's run cell by cell:
+    its count is the emulation's own (computed here from the same data)."""
+    from sarkp.book import x_arithmetic
+    for number in x_arithmetic.FIGURES:
+        main(["book", "diff", number, "--arithmetic", "es-evm"])
+        out = capsys.readouterr().out
+        figure = figures.load_figure(number)
+        comparisons = figures.compare(figure, x_arithmetic.figure_cells(number, "es-evm"))
+        done = [c for c in comparisons if c.cell.reproducible]
+        assert out.rstrip().endswith(f"{sum(c.matches for c in done)} of {len(done)} cells "
+                                     f"match")
+        assert "(es-evm)" in out
+    assert main(["book", "diff", "4", "--arithmetic", "es-evm"]) == 2
 
 
 @pytest.mark.parametrize("args, message, status", [
@@ -411,15 +705,16 @@ def test_cli_stage_mistakes(args, message, status):
 
 def test_plots_are_written(tmp_path):
     pytest.importorskip("matplotlib")
+    from sarkp.book import x_plots
     with sarkp.as_printed():
-        paths = prog_x.plots(tmp_path)
+        paths = x_plots.plots(tmp_path)
     names = {p.name for p in paths}
     assert {"x_mechanism.png", "x_velocities.png", "x_accelerations.png",
             "x_cam_profile.png", "x_cam_curvature.png"} <= names
     for p in paths:
         assert p.read_bytes()[:8] == b"\x89PNG\r\n\x1a\n" and p.stat().st_size > 10_000
     with sarkp.mode("corrected"):
-        assert [p.name for p in prog_x.plots(tmp_path / "c", "cam")] == [
+        assert [p.name for p in x_plots.plots(tmp_path / "c", "cam")] == [
             "x_cam_profile.png", "x_cam_curvature.png"]
 
 
@@ -433,5 +728,5 @@ def test_readme_summary_is_the_diff_summary():
     rows = []
     for number in book.FIGURES:
         figure, comparisons = diff(number)
-        rows.append(figures.summary(figure, comparisons))
+        rows.append(figures.summary(figure, comparisons, book.figure_evidence(number)))
     assert shown == figures.summary_table(rows)

@@ -17,13 +17,14 @@ from .cams import *           # noqa: F401,F403  chapter 5
 from .gears import *          # noqa: F401,F403  chapter 6
 from .forces import *         # noqa: F401,F403  chapter 7 (DUGL6: sarkp's extension)
 from .dynamics import *       # noqa: F401,F403  chapter 8
+from .mechanism import Mechanism, MechanismResult   # a whole mechanism (issue 19)
 
 __version__ = "0.1.0"
 
 __all__ = [
     "SarkpError", "AssemblyError", "SingularError", "RequirementError", "RangeError",
     "SignificanceWarning", "Status", "MODES", "set_mode", "get_mode", "mode", "as_printed",
-    "listing", "errata",
+    "listing", "errata", "Mechanism", "MechanismResult",
     *solver.__all__, *operators.__all__, *synthesis.__all__, *kinematics.__all__,
     *cams.__all__, *gears.__all__,
     *forces.__all__, *dynamics.__all__,

@@ -164,7 +164,7 @@ class Routine:
 
     def __init__(self, name, *, listing, lines, chapter, inputs, outputs, tables=None,
                  lengths=(), nonnegative=(), nonzero=(), integers=None, checks=(),
-                 messages=None, function=False, report=None, example=None):
+                 messages=None, function=False, report=None, example=None, kept=None):
         self.name = name
         self.listing = listing
         self.lines = lines
@@ -184,6 +184,8 @@ class Routine:
         self.checks = tuple(checks)
         self.messages = dict(_DEFAULT_MESSAGES)
         self.messages.update(messages or {})
+        #: {status: outputs that are still valid after a failure with that status}
+        self.kept = {st: frozenset(names) for st, names in (kept or {}).items()}
         self.function = function
         self.report = report
         # a valid input row (book order), for routines whose valid inputs random values
@@ -220,6 +222,9 @@ class Routine:
         raw_required, raw_optional, _ = f2py_signature(self.one, raw=True)
         self._f2py_name = {_f2py_unbad(a): a for a in raw_required + raw_optional}
         required, optional, rets = f2py_signature(self.one)
+        # tables that Fortran writes (intent(inout): f2py returns them) are copied before
+        # the call, so that the caller's array is never changed; the others go as they are
+        self._written = frozenset(rets)
         fortran_in = [a for a in required + optional if not a.startswith("sarkp_")]
         declared = [a.lower() for a in self.inputs]
         if sorted(fortran_in) != sorted(declared):
@@ -377,12 +382,17 @@ class Routine:
                 f"{self.name}: {_significance_message(self.messages, status)}",
                 digits=_digits(status)), stacklevel=_caller_stacklevel())
             return out
+        kept = self.kept.get(status, ())
+        settled = [o if name in kept else _nan_like(o) for name, o in zip(self.outputs, out)]
         if on_error == "raise":
             message = check.message if check is not None else None
             if status == ST_RANGE:
                 message = self._range_message(out)
-            raise status_error(self.name, status, None, self.messages, message)
-        return [_nan_like(o) for o in out]
+            error = status_error(self.name, status, None, self.messages, message)
+            if kept:            # what is still valid: the result of on_error="nan"
+                error.result = self._result(settled, Status(_status_code(status)))
+            raise error
+        return settled
 
     def _range_message(self, out, index=None):
         names = [n for n, o in zip(self.outputs, out)
@@ -553,7 +563,8 @@ class Routine:
                                      f"shape {a.shape}")
                 self._check_array(arg, a, allow_nan=False)
                 named[arg] = a
-                kw[self._f2py_name[arg.lower()]] = np.array(a, order="F", copy=True)
+                kw[self._f2py_name[arg.lower()]] = np.array(
+                    a, order="F", copy=arg.lower() in self._written or None)
             else:
                 if isinstance(value, (bool, np.bool_)) or not isinstance(
                         value, (int, float, np.integer, np.floating)):
@@ -727,7 +738,10 @@ def book_routine(name: str, *, listing: str, lines: str, chapter: str,
         range}; counts default to the integers >= 1), ``checks`` (:class:`Check`),
         ``messages`` ({status: text}), ``function`` (a book FUNCTION: returns a number),
         ``report`` (callable(inputs, outputs) -> text, printed for AAA = 0), ``example``
-        (a valid input row in the book's order, for the generic tests).
+        (a valid input row in the book's order, for the generic tests), ``kept``
+        ({status: output names}: outputs still valid when the routine fails with that
+        status -- kept under ``on_error="nan"``, and the error raised otherwise carries
+        that result as ``.result``).
     """
     spec = Routine(name, listing=listing, lines=lines, chapter=chapter, inputs=inputs,
                    outputs=outputs, **options)

@@ -13,15 +13,18 @@ COMMON results come back as fields of the result, after the routine's own output
 
 from __future__ import annotations
 
+import functools
 import math
 
 import numpy as np
 
+from .errors import RequirementError
 from .library import ST_REQUIREMENT, Check, book_routine
+from .results import result_type
 from .modes import book_pi, get_mode
 from .report import fortran_write
 
-__all__ = ["DZBPL", "DKRKT", "DUGINV", "DGMTZK", "DGMZPC", "DGMZVN", "DCHRVC"]
+__all__ = ["DZBPL", "DKRKT", "DUGINV", "DGMTZK", "DGMZPC", "DGMZVN", "DCHRVC", "dkrkt_splits"]
 
 
 # ---- reasons and checks ----------------------------------------------------------------
@@ -104,12 +107,14 @@ def dzbpl_report(KS, SHEMA, result=None) -> str:
 
 DZBPL = book_routine(
     "DZBPL", listing="VI.1", lines="L3720-3798", chapter="gears",
-    inputs=("KS", "P", "Q", "L2", "L3", "Z1MIN", "Z1MAX", "SHEMA"),
+    inputs=("KS", "P", "Q", "L2", "L3", "Z1MIN", "Z1MAX", "SHEMA", "ZKRN", "ZKRW", "DZ"),
     outputs=("Z1", "Z2", "Z3", "Z4"),
     integers={"KS": range(1, 101), "P": range(-1000, 1001), "Q": range(1, 1001),
               "L2": range(1, 1001), "L3": range(1, 1001), "Z1MIN": range(1, 10001),
-              "Z1MAX": range(1, 10001), "SHEMA": (1, 2, 3)},
-    example=(2, 4, 1, 1, 1, 13, 35, 1),
+              "Z1MAX": range(1, 10001), "SHEMA": (1, 2, 3), "ZKRN": range(1, 10001),
+              "ZKRW": range(1, 10001), "DZ": range(1, 10001)},
+    defaults={"ZKRN": 20, "ZKRW": 85, "DZ": 8},
+    example=(2, 4, 1, 1, 1, 13, 35, 1, 20, 85, 8),
     checks=(
         Check(lambda P, **_: P == 0, ST_REQUIREMENT,
               "P = 0: the ratio i_1h = P/Q of the train must not be 0"),
@@ -147,6 +152,14 @@ DZBPL = book_routine(
         The range of z1 (undercut, jamming, size).
     SHEMA : int
         1, 2 or 3 (see above).
+    ZKRN, ZKRW, DZ : int, optional
+        The book's COMMON /ZUB/ inputs, here arguments (sarkp extension), defaults the
+        book's (VI.2, L3815-3817): the least tooth number of an external wheel (20; the
+        classic undercut limit z >= 17 can be asked with 17) and of an internal wheel
+        (85), and the least tooth difference of an internal pair (8).  Each limit applies
+        where the book applies it: scheme 1, z2, z3 >= ZKRN, z4 >= ZKRW, z4 - z3 >= DZ;
+        scheme 2, z2, z3, z4 >= ZKRN; scheme 3, z1, z4 >= ZKRW, z2, z3 >= ZKRN,
+        z1 - z2, z4 - z3 >= DZ.
 
     Returns
     -------
@@ -297,7 +310,9 @@ DKRKT = book_routine(
     ------
     RequirementError
         The teeth would be undercut (x < X1P, the book's message 20) or pointed (x > X1Z
-        = 0.15 z^0.7, message 21); SDVIG = 1 with both x above X1Z or SDVIG = 3 with
+        = 0.15 z^0.7, message 21; with AW > 0 the message says which of x1, x2 and
+        which split of the same x1 + x2 would do, or that none would:
+        :func:`dkrkt_splits`); SDVIG = 1 with both x above X1Z or SDVIG = 3 with
         z2 < 17 (message 22); AW at or below the sum of the base radii; AW = 0 with
         SDVIG = 0.
     ValueError
@@ -312,6 +327,85 @@ DKRKT = book_routine(
     with, where the listing prints 0.000001 (E-DKRKT-3).  The book prints the header and
     the diagnostics whatever AAA; sarkp prints only for AAA = 0.
     """)
+
+
+Splits = result_type("Splits", ("XS", "X1_BOOK", "X2_BOOK", "X1_LOW", "X1_HIGH", "X1", "X2",
+                               "REASON"))
+
+
+def dkrkt_splits(M, Z1, Z2, AW):
+    """Every split of the shift sum that DKRKT's centre distance AW needs -- a sarkp
+    extension, what DKRKT says when its own split is refused.
+
+    DKRKT fits the pair into AW with x1 + x2 = XS ((6.12)-(6.13)) and splits XS by
+    (6.14).  That split can fall below the undercut limit X1P (6.15) or above the pointed
+    limit X1Z (6.19) of one gear while another split of the same XS keeps both gears
+    within ``X1P <= x1 <= X1Z``, ``X2P <= XS - x1 <= X2Z``: ``x1`` in ``[X1_LOW, X1_HIGH]``.
+
+    Returns
+    -------
+    Splits(XS, X1_BOOK, X2_BOOK, X1_LOW, X1_HIGH, X1, X2, REASON)
+        ``XS`` the shift sum AW needs; DKRKT's split ``X1_BOOK, X2_BOOK``; the range of x1
+        that avoids undercut and pointed teeth (``X1_LOW > X1_HIGH``: no split does);
+        ``X1, X2`` the admissible split nearest to the book's (NaN if none) and
+        ``REASON``, one sentence: why the book's split is refused (or "") and which split
+        would do, or why none would.
+    """
+    for arg, value in (("M", M), ("Z1", Z1), ("Z2", Z2), ("AW", AW)):
+        if isinstance(value, bool) or not isinstance(value, (int, float, np.integer,
+                                                             np.floating)):
+            raise TypeError(f"dkrkt_splits: {arg} must be a real number, not "
+                            f"{type(value).__name__}")
+        if not (math.isfinite(value) and value > 0):
+            raise ValueError(f"dkrkt_splits: {arg} = {value!r} must be a finite number > 0")
+    if not (AW > 0.5 * M * (Z1 + Z2) * math.cos(_alpha())):
+        raise ValueError(f"dkrkt_splits: AW = {AW!r} must be above r_b1 + r_b2 = "
+                         f"{0.5 * M * (Z1 + Z2) * math.cos(_alpha())!r}")
+    lim = dkrkt_limits(M, Z1, Z2, AW)
+    alfa, zs, y = _alpha(), Z1 + Z2, lim["Y"]
+    alfaw = math.acos(0.5 * zs * math.cos(alfa) / (y + 0.5 * zs))
+    xs = zs * (_inv(alfaw) - _inv(alfa)) / (2.0 * math.tan(alfa))
+    x1b = 0.5 * (xs - (Z2 - Z1) / zs * y)
+    x2b = xs - x1b
+    low = max(lim["X1P"], xs - lim["X2Z"])
+    high = min(lim["X1Z"], xs - lim["X2P"])
+    why = []
+    if x1b < lim["X1P"]:
+        why.append(f"x1 = {x1b:.4f} is below X1P = {lim['X1P']:.4f} (undercut)")
+    if x2b < lim["X2P"]:
+        why.append(f"x2 = {x2b:.4f} is below X2P = {lim['X2P']:.4f} (undercut)")
+    if x1b > lim["X1Z"]:
+        why.append(f"x1 = {x1b:.4f} is above X1Z = {lim['X1Z']:.4f} (pointed)")
+    if x2b > lim["X2Z"]:
+        why.append(f"x2 = {x2b:.4f} is above X2Z = {lim['X2Z']:.4f} (pointed)")
+    head = ("The book's split (6.14): " + "; ".join(why) + ". ") if why else ""
+    if low <= high:
+        x1 = min(max(x1b, low), high)
+        reason = (f"{head}The split x1 = {x1:.4f}, x2 = {xs - x1:.4f} (any x1 from "
+                  f"{low:.4f} to {high:.4f} with x2 = {xs:.4f} - x1) fits AW without "
+                  f"undercut or pointed teeth")
+        return Splits(xs, x1b, x2b, low, high, x1, xs - x1, reason)
+    reason = (f"{head}No split of x1 + x2 = {xs:.4f} keeps both gears between undercut and "
+              f"pointed teeth (x1 would need {lim['X1P']:.4f}..{lim['X1Z']:.4f} and x2 "
+              f"{lim['X2P']:.4f}..{lim['X2Z']:.4f}): change AW or the tooth numbers")
+    return Splits(xs, x1b, x2b, low, high, math.nan, math.nan, reason)
+
+
+def _explained(routine):
+    """DKRKT with the reason and the split that would do in its error (scalar AW > 0)."""
+    @functools.wraps(routine)
+    def DKRKT(M, Z1, Z2, AW, SDVIG, AAA=1.0, *, on_error="raise", out=None):
+        try:
+            return routine(M, Z1, Z2, AW, SDVIG, AAA, on_error=on_error, out=out)
+        except RequirementError as exc:
+            if not all(isinstance(v, (int, float)) for v in (M, Z1, Z2, AW)) or not AW > 0 \
+                    or "undercut" not in str(exc) and "pointed" not in str(exc):
+                raise
+            raise type(exc)(f"{exc}. {dkrkt_splits(M, Z1, Z2, AW).REASON}") from None
+    return DKRKT
+
+
+DKRKT = _explained(DKRKT)
 
 
 # ---- VI.4 DUGINV -----------------------------------------------------------------------
@@ -355,8 +449,12 @@ DUGINV = book_routine(
     by about 6 TCHNST at 20 deg (E-DUGINV-1: this is why the book prints ALFAW = 0.3490,
     not 0.3491, for zero shifts) and crawls for small angles; it is bounded here at 10**6
     steps (E-DUGINV-2).  Corrected mode ignores XNACH and TCHNST and returns the root to
-    full double precision (relative error below 1e-15 for every involute from 0 up, the
-    series of tan x - x below 0.4 rad where tan x - x cancels, then Newton steps).
+    full double precision: relative error below 1e-15 for every normal INVX (from
+    2.2e-308 up; the series of tan x - x below 0.4 rad where tan x - x cancels, then
+    Newton steps).  A subnormal INVX (below 2.2e-308) holds fewer than 53 significant
+    bits and so does the cube x**3/3 the step compares it with: there the error grows to
+    2.8e-14 (at INVX = 1.05e-312; measured against the exact (3 INVX)**(1/3) in
+    tests/test_gears.py).
     """)
 
 
@@ -389,7 +487,7 @@ def _dgmtzk_report(i, o):
 DGMTZK = book_routine(
     "DGMTZK", listing="VI.5", lines="L4245-4308", chapter="gears",
     inputs=("M", "Z", "BETA", "X", "AAA"),
-    outputs=("D", "S", "DB", "SB", "DA", "SA", "DF"),
+    outputs=("D", "S", "DB", "SB", "DA", "SA", "DF", "XUR"),
     lengths=("M",), integers={"Z": TEETH}, example=(4.0, 20.0, 0.1745, 0.0, 1.0),
     checks=(_helix_ok(), _undercut("X", "Z", "BETA")),
     messages={ST_UNDERCUT: "undercut: X is below x_min of (6.15)/(6.17)",
@@ -415,10 +513,16 @@ DGMTZK = book_routine(
 
     Returns
     -------
-    DGMTZK(D, S, DB, SB, DA, SA, DF)
+    DGMTZK(D, S, DB, SB, DA, SA, DF, XUR)
         Diameters of the reference (D = m z/cos beta), base (DB = D cos alpha_t), tip
         (DA) and root (DF = D - 2 (1.25 - x) m) circles, and the tooth thickness (arc, in
         the transverse plane) on the reference (S), base (SB) and tip (SA) circles.
+        Then a sarkp extension, ``XUR``: the tip shortening coefficient that DA and SA
+        include, always 0.  DA is the gear's own tip circle, with no shortening:
+        DGMTZK does not know its mate.  In a mesh whose shifts are not zero the tips are
+        shortened by ``dy m`` each (DGMZPC's XUR), and the mesh's tip diameters are
+        DGMZPC's ``DA1, DA2`` (e.g. 65.409 against this DA of 65.449 for program X's
+        20-tooth gear).
 
     Raises
     ------
@@ -426,6 +530,8 @@ DGMTZK = book_routine(
         Undercut: X below x_min = 1 - z sin^2(alpha_t)/(2 cos beta) of (6.17) (corrected
         mode; the book does not check it, and Fig. 46's x = -1 gear is undercut); a
         pointed tooth (SA <= 0); a tip circle inside the base circle.
+    RangeError
+        A diameter beyond double precision (M Z near 1e308).
     ValueError
         M <= 0; Z not a whole number from 8 to 10000 (below 8 teeth every shift of a
         standard spur gear undercuts or points the tooth).
@@ -463,7 +569,8 @@ def _involute_negative(xs_of, z_sum_of, beta=None):
 DGMZPC = book_routine(
     "DGMZPC", listing="VI.6", lines="L4410-4454", chapter="gears",
     inputs=("M", "Z1", "Z2", "BETA", "X1", "X2", "BW", "AAA"),
-    outputs=("A", "XS", "ALFAW", "AW", "XY", "XUR", "E"),
+    outputs=("A", "XS", "ALFAW", "AW", "XY", "XUR", "E",
+             "DA1", "DA2", "ALFAA1", "ALFAA2", "SA1", "SA2"),
     lengths=("M",), nonnegative=("BW",), integers={"Z1": TEETH, "Z2": TEETH},
     example=(5.0, 11.0, 26.0, 0.0, 0.5, 0.5, 30.0, 1.0),
     checks=(
@@ -501,13 +608,19 @@ DGMZPC = book_routine(
 
     Returns
     -------
-    DGMZPC(A, XS, ALFAW, AW, XY, XUR, E)
+    DGMZPC(A, XS, ALFAW, AW, XY, XUR, E, DA1, DA2, ALFAA1, ALFAA2, SA1, SA2)
         A = m (z1 + z2)/(2 cos beta) reference centre distance; XS = x1 + x2; ALFAW the
         operating transverse pressure angle, inv alpha_w = inv alpha_t + 2 XS tan(alpha)/
         (z1 + z2); AW = A cos(alpha_t)/cos(alpha_w); XY = y = (AW - A)/m; XUR = dy = XS
         - y, the tip shortening; E = eps_alpha + eps_beta, the contact ratio with
         eps_alpha = (z1 tan alpha_a1 + z2 tan alpha_a2 - (z1 + z2) tan alpha_w)/(2 pi) on
         the operating centre distance and eps_beta = BW |sin beta|/(pi m).
+        Then what the routine computes and the book does not return (a sarkp extension):
+        ``DA1, DA2`` the tip diameters with the tip shortening, d + 2 (1 + x - dy) m;
+        ``ALFAA1, ALFAA2`` the (transverse) pressure angles on them, cos alpha_a = d_b/d_a;
+        ``SA1, SA2`` the (transverse, arc) tooth thicknesses there, d_a ((pi/2 + 2 x
+        tan alpha)/z + inv alpha_t - inv alpha_a).  In as-printed mode these follow the
+        listing's spur formulas, as E does.
 
     Raises
     ------

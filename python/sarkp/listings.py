@@ -221,14 +221,12 @@ _DECLARATION = re.compile(r"^(\d+\s+)?(REAL|INTEGER|DIMENSION|COMMON|IMPLICIT|US
                           r"DOUBLE\s*PRECISION)\b|^REAL\s*\(DP\)", re.I)
 
 
-_DESIGN = re.compile(r"^(\w+\s*=\s*0\.0_dp|if\s*\(\s*failed\(ier\)\s*\)\s*return|"
-                     r"ier\s*=\s*st_ok)$", re.I)
-
-
 def _statements(statements: list[str]) -> list[str]:
-    """Executable statements only, one END.  Left out: declarations, and sarkp's status
-    handling (outputs zeroed, IER set and tested), which differ by design."""
-    out = [s for s in statements if not _DECLARATION.match(s) and not _DESIGN.match(s)]
+    """Executable statements only (declarations differ by design), one END.  sarkp's
+    statements are all shown as written, its status handling too (IER set and tested,
+    outputs of a failed call zeroed): statements joined by ``;`` one by one, one-line IFs
+    as they are."""
+    out = [s for s in statements if not _DECLARATION.match(s)]
     out = [("END" if re.match(r"END\s+(SUBROUTINE|FUNCTION)\b", s, re.I) else s) for s in out]
     if len(out) > 1 and out[-1].upper() == "END" and out[-2].upper() == "RETURN":
         del out[-2]

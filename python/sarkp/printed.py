@@ -20,6 +20,7 @@ from __future__ import annotations
 
 import csv
 import io
+import math
 import os
 import re
 from importlib import resources
@@ -98,9 +99,11 @@ def _make(name: str):
         if spec.function:
             return float(out)
         out = out if isinstance(out, tuple) else () if out is None else (out,)
-        if len(out) < len(spec.outputs):
+        if len(out) < len(spec.outputs) and block:
             common = getattr(_printed, block.group(1).lower())
             out = out + tuple(getattr(common, w) for w in words)
+        # sarkp's extension outputs, which the printed code does not compute: NaN
+        out = out + (math.nan,) * (len(spec.outputs) - len(out))
         return spec.result(*[np.array(o, dtype=float) if np.ndim(o) else float(o)
                              for o in out])
 

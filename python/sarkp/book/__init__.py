@@ -72,5 +72,18 @@ def figure_cells(number: str) -> dict:
     return prog.cells()
 
 
-__all__ = ["PROGRAMS", "FIGURES", "program", "figure_program", "figure_cells", "Figure",
+def figure_evidence(number: str):
+    """What the figure's program shows beyond its double-precision run, as-printed mode
+    (:class:`sarkp.book.figures.Evidence`: fitted cells, runs in other arithmetics,
+    demonstrated causes); empty for a program that has none."""
+    from .figures import Evidence
+    from ..modes import as_printed
+    prog = figure_program(number)
+    if hasattr(prog, "evidence"):
+        with as_printed():
+            return prog.evidence(str(number))
+    return Evidence()
+
+
+__all__ = ["figure_evidence", "PROGRAMS", "FIGURES", "program", "figure_program", "figure_cells", "Figure",
            "load_figure", "compare"]

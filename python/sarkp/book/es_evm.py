@@ -4,7 +4,10 @@ REAL*4 there is a hexadecimal floating-point number: a fraction of 6 hex digits
 (24 bits) times a power of 16, and the arithmetic truncates instead of rounding.  A few
 printed cells differ from a double-precision (or IEEE single) run only because of this,
 e.g. the last crank angle of Fig. 4 (ERRATA E-FIG4-4).  The book's programs in
-as-printed mode use :func:`real4` where such a cell depends on it.
+as-printed mode use :func:`real4` where such a cell depends on it; the emulations (a
+printed program run statement by statement as the machine ran it: V.5, II.13, VI.6, VI.7,
+X) compute with :class:`Real4` numbers and the library functions of :func:`fn`.  This module
+is the one place that arithmetic is written.
 """
 
 from __future__ import annotations
@@ -28,6 +31,17 @@ def real4(x: float) -> float:
     return math.copysign(f * 16.0 ** e, x)
 
 
+def real4_rounded(x: float) -> float:
+    """``x`` rounded to the nearest System/360 short hexadecimal float (as a library
+    function that rounds its result, rather than truncating it, delivers it)."""
+    down = real4(x)
+    if down == x or x == 0.0 or not math.isfinite(x):
+        return down
+    step = 16.0 ** (math.floor(math.log(abs(down), 16)) + 1 - 6)   # one unit of the 6th
+    up = math.copysign(abs(down) + step, x)                          # hex digit of down
+    return real4(up) if abs(up - x) < abs(x - down) else down
+
+
 def add(a: float, b: float) -> float:
     """``a + b`` as the ES EVM computed it: the exact sum truncated to a short float."""
     return real4(real4(a) + real4(b))
@@ -36,3 +50,59 @@ def add(a: float, b: float) -> float:
 def div(a: float, b: float) -> float:
     """``a / b`` as the ES EVM computed it (quotient truncated to a short float)."""
     return real4(real4(a) / real4(b))
+
+
+class Real4(float):
+    """A REAL*4 of the ES EVM: every operation's exact result truncated to 6 hex digits
+    (an operand that is a plain number is truncated first, as a REAL*4 constant is)."""
+
+    def __new__(cls, x):
+        return float.__new__(cls, real4(float(x)))
+
+    def __add__(self, o):
+        return Real4(float(self) + float(Real4(o)))
+
+    def __radd__(self, o):
+        return Real4(float(Real4(o)) + float(self))
+
+    def __sub__(self, o):
+        return Real4(float(self) - float(Real4(o)))
+
+    def __rsub__(self, o):
+        return Real4(float(Real4(o)) - float(self))
+
+    def __mul__(self, o):
+        return Real4(float(self) * float(Real4(o)))
+
+    def __rmul__(self, o):
+        return Real4(float(Real4(o)) * float(self))
+
+    def __truediv__(self, o):
+        return Real4(float(self) / float(Real4(o)))
+
+    def __rtruediv__(self, o):
+        return Real4(float(Real4(o)) / float(self))
+
+    def __neg__(self):
+        return Real4(-float(self))
+
+    def __pos__(self):
+        return self
+
+    def __abs__(self):
+        return Real4(abs(float(self)))
+
+    def __pow__(self, n):
+        # X**2 and X**4 of the listings: repeated multiplication, as FORTRAN compiles
+        # an integer power
+        if not isinstance(n, int) or n < 1:
+            raise TypeError(f"Real4 ** {n!r}: only positive integer powers")
+        out = self
+        for _ in range(n - 1):
+            out = out * self
+        return out
+
+
+def fn(function):
+    """A library function of the ES EVM: the exact value, truncated to a REAL*4."""
+    return lambda *x: Real4(function(*(float(v) for v in x)))

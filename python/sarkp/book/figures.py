@@ -7,10 +7,19 @@ A figure is a CSV file in ``sarkp/book/data`` named ``fig<N>.csv``: ``#`` lines 
 
 ``printed`` is the value as printed with OCR errors corrected (``ocr`` then holds what
 the OCR read), ``decimals`` the digits printed after the point, ``errata`` the ids of
-docs/ERRATA.md that explain the cell, ``reproducible`` = ``no`` where the printed
+docs/ERRATA.md that discuss the cell (an id alone explains nothing: :func:`classify` says
+what is shown), ``reproducible`` = ``no`` where the printed
 program computed the cell wrongly in a way no run can repeat, ``magnitude`` where only
 its absolute value is reproducible (its sign came from what no run can repeat; the cell's
 ``errata`` say why): the diff then compares magnitudes and says so.
+
+Every compared cell is exactly one of (:func:`classify`): reproduced (within half a unit
+of its last printed digit, double precision); fitted (the same, but an input was fitted
+to it: program X's link lengths, scripts/fit_x_links.py); reproduced under a named
+arithmetic (the ES EVM's emulation or IEEE single reproduces it); differs, cause shown
+(the cause, applied by shipped code, moves it within half a unit, or a printed identity
+proves the print a misprint); differs, no cause shown.  An ERRATA id alone explains
+nothing.
 """
 
 from __future__ import annotations
@@ -104,12 +113,14 @@ def compare(figure: Figure, computed: dict) -> list:
 
 
 def report(figure: Figure, comparisons: list, mode: str,
-           corrected_differences: dict | None = None) -> tuple[str, int, int]:
+           corrected_differences: dict | None = None,
+           evidence: "Evidence | None" = None) -> tuple[str, int, int]:
     """The text of a diff, and (matching, compared) counts of the compared cells: the
     reproducible ones and the magnitude-only ones (the last line counts the former).
+    Every differing cell is printed with its class (:func:`classify`, with ``evidence``).
 
-    ``corrected_differences`` ({column or "*": errata ids}) explains, in corrected mode,
-    the cells that differ because corrected mode fixes what the printed run did.
+    ``corrected_differences`` ({column or "*": errata ids}) names, in corrected mode,
+    what corrected mode changed for the cells that differ from the printed run.
     """
     explain = corrected_differences if mode == "corrected" else None
     lines = [f"Fig. {figure.number}: {figure.meta.get('caption', '')}",
@@ -120,22 +131,28 @@ def report(figure: Figure, comparisons: list, mode: str,
     magnitudes = [c for c in comparisons if c.cell.magnitude]
     skipped = [c for c in comparisons if not (c.cell.reproducible or c.cell.magnitude)]
     matching = [c for c in compared if c.matches]
-    for c in compared + magnitudes:
-        if not c.matches:
-            why = c.cell.errata
-            if not why and explain:
-                why = explain.get(c.cell.column) or explain.get("*", "")
-            why = why or "unexplained"
-            got = "missing" if c.computed is None else f"{c.computed:.{c.cell.decimals + 2}f}"
-            diff = "" if c.units is None else f" ({c.units:+.1f} units)"
-            what = "DIFFERS" if c.cell.reproducible else "DIFFERS in magnitude"
-            lines.append(f"  {what} row {c.cell.row} {c.cell.column} (L{c.cell.line}): "
-                         f"printed {c.cell.printed}, computed {got}{diff} [{why}]")
+    for c, kind, why in classify(comparisons, evidence):
+        if kind in (REPRODUCED, FITTED):
+            continue
+        if kind == NO_CAUSE and explain:
+            # corrected mode differs from the printed run by design: say what it corrects
+            kind = "differs, corrected mode"
+            why = explain.get(c.cell.column) or explain.get("*", "") or why
+        got = "missing" if c.computed is None else f"{c.computed:.{c.cell.decimals + 2}f}"
+        diff = "" if c.units is None else f" ({c.units:+.2f} units)"
+        what = "DIFFERS" if c.cell.reproducible else "DIFFERS in magnitude"
+        lines.append(f"  {what} row {c.cell.row} {c.cell.column} (L{c.cell.line}): "
+                     f"printed {c.cell.printed}, computed {got}{diff}; {kind} [{why}]")
     for c in comparisons:
         if (c.cell.reproducible or c.cell.magnitude) and c.matches and c.cell.ocr:
             lines.append(f"  note    row {c.cell.row} {c.cell.column} (L{c.cell.line}): "
                          f"OCR read {c.cell.ocr}, printed {c.cell.printed} "
                          f"[{c.cell.errata}]")
+    if evidence is not None and evidence.fitted:
+        fitted = sum(1 for c in compared + magnitudes
+                     if (c.cell.row, c.cell.column) in evidence.fitted)
+        lines.append(f"  {fitted} compared cells are inputs of a fit ({evidence.fit}): "
+                     f"counted as fitted, not reproduced")
     if magnitudes:
         reasons = sorted({e for c in magnitudes for e in c.cell.errata.split(";") if e})
         columns = sorted({c.cell.column for c in magnitudes})
@@ -153,43 +170,128 @@ def report(figure: Figure, comparisons: list, mode: str,
             len(compared) + len(magnitudes))
 
 
-def summary(figure: Figure, comparisons: list, corrected_differences: dict | None = None
-            ) -> dict:
-    """Counts of a diff: cells compared, matching, differing with an ERRATA id of their
-    own (explained), differing without one (unexplained), left out and the ids why.
+#: the classes of a compared cell, in the order of the summary's columns
+REPRODUCED = "reproduced"
+FITTED = "fitted"
+ARITHMETIC = "reproduced under a named arithmetic"
+CAUSE_SHOWN = "differs, cause shown"
+NO_CAUSE = "differs, no cause shown"
+CLASSES = (REPRODUCED, FITTED, ARITHMETIC, CAUSE_SHOWN, NO_CAUSE)
 
-    ``corrected_differences`` (the program's reasons for corrected mode, as for
-    :func:`report`) also explains a differing cell, counted as "corrected mode";
-    ``own_ids`` counts the differing cells with no ERRATA id of their own either way."""
-    compared = [c for c in comparisons if c.cell.reproducible or c.cell.magnitude]
-    differ = [c for c in compared if not c.matches]
-    own = [c for c in differ if c.cell.errata]
+
+@dataclass(frozen=True)
+class Cause:
+    """A demonstration that a differing cell's cause is real: ``errata`` names it,
+    ``how`` says what was applied (a shipped script or test, or a printed identity).
+    ``moved`` is the cell's value with the cause applied: the cause is shown when it lies
+    within half a unit of the print.  ``misprint`` is the interval a printed identity
+    allows the cell: the print is shown a misprint when it lies outside that interval
+    (widened by half a unit) and the computed value inside it."""
+    errata: str
+    how: str
+    moved: float | None = None
+    misprint: tuple | None = None
+    applied: dict | None = None       # the inputs the cause was applied with, if any
+
+    def shown(self, comparison: Comparison) -> bool:
+        cell = comparison.cell
+        half = 0.5 * cell.unit * (1 + 1e-9)
+        if self.moved is not None:
+            value = abs(self.moved) if cell.magnitude else self.moved
+            return abs(value - (abs(cell.value) if cell.magnitude else cell.value)) <= half
+        if self.misprint is not None and comparison.computed is not None:
+            lo, hi = self.misprint
+            outside = cell.value < lo - half or cell.value > hi + half
+            return outside and lo - half <= comparison.computed <= hi + half
+        return False
+
+
+@dataclass
+class Evidence:
+    """What a program shows about its figure's cells beyond the double-precision run:
+    ``fitted`` the cells an input was fitted to, ``arithmetics`` ({name: {(row, column):
+    value}}) the figure run in another arithmetic (the ES EVM's emulation, IEEE single),
+    ``causes`` ({(row, column): Cause}) the demonstrated causes of differing cells."""
+    fitted: frozenset = frozenset()
+    arithmetics: dict = field(default_factory=dict)
+    causes: dict = field(default_factory=dict)
+    fit: str = ""                     # where the fit is (a shipped script)
+
+
+def _units(cell: Cell, value: float) -> float:
+    if cell.magnitude:
+        return (abs(value) - abs(cell.value)) / cell.unit
+    return (value - cell.value) / cell.unit
+
+
+def classify(comparisons: list, evidence: Evidence | None = None) -> list:
+    """``[(comparison, class, why)]`` for every compared cell (reproducible or
+    magnitude-only), ``class`` one of :data:`CLASSES`: fitted (an input was fitted to it
+    and it is within half a unit), reproduced (within half a unit, double precision),
+    reproduced under a named arithmetic (``why`` names it and its difference), differs
+    with its cause shown (``why``: the ERRATA id and how), or differs, no cause shown
+    (``why``: the cell's ERRATA ids, which alone explain nothing)."""
+    evidence = evidence or Evidence()
+    out = []
+    for c in comparisons:
+        if not (c.cell.reproducible or c.cell.magnitude):
+            continue
+        key = (c.cell.row, c.cell.column)
+        if c.matches:
+            out.append((c, FITTED if key in evidence.fitted else REPRODUCED, ""))
+            continue
+        done = False
+        for name, run in evidence.arithmetics.items():
+            value = run.get(key)
+            if value is not None and abs(_units(c.cell, value)) <= 0.5 + 1e-9:
+                out.append((c, ARITHMETIC, f"{name}: {_units(c.cell, value):+.2f} units"))
+                done = True
+                break
+        if done:
+            continue
+        cause = evidence.causes.get(key)
+        if cause is not None and cause.shown(c):
+            out.append((c, CAUSE_SHOWN, f"{cause.errata}: {cause.how}"))
+        else:
+            out.append((c, NO_CAUSE, c.cell.errata or "no ERRATA id"))
+    return out
+
+
+def summary(figure: Figure, comparisons: list, evidence: Evidence | None = None,
+            corrected_differences: dict | None = None) -> dict:
+    """Counts of a diff by class (:func:`classify`), the cells left out and the ids why,
+    ``no_id``: differing cells that carry no ERRATA id of their own, and of those
+    ``corrected_mode`` the ones that ``corrected_differences`` names a reason for."""
     explain = corrected_differences or {}
-    by_mode = [c for c in differ if not c.cell.errata
-               and (explain.get(c.cell.column) or explain.get("*"))]
+    classes = classify(comparisons, evidence)
     skipped = [c for c in comparisons if not (c.cell.reproducible or c.cell.magnitude)]
     reasons = sorted({e for c in skipped for e in c.cell.errata.split(";") if e})
-    because = sorted({e for c in own for e in c.cell.errata.split(";") if e})
-    if by_mode:
-        because.append(f"corrected mode: {len(by_mode)}")
-    return {"figure": figure.number, "compared": len(compared), "because": ", ".join(because),
-            "matching": len(compared) - len(differ), "explained": len(own) + len(by_mode),
-            "unexplained": len(differ) - len(own) - len(by_mode),
-            "own_ids": len(differ) - len(own), "left_out": len(skipped),
-            "why": ", ".join(reasons)}
+    row = {"figure": figure.number, "compared": len(classes),
+           "left_out": len(skipped), "why": ", ".join(reasons),
+           "no_id": sum(k not in (REPRODUCED, FITTED) and not c.cell.errata
+                        for c, k, _ in classes),
+           "corrected_mode": sum(k not in (REPRODUCED, FITTED) and not c.cell.errata
+                                 and bool(explain.get(c.cell.column) or explain.get("*"))
+                                 for c, k, _ in classes),
+           "arithmetic_names": ", ".join(sorted({w.split(":")[0] for _, k, w in classes
+                                                 if k == ARITHMETIC}))}
+    for name in CLASSES:
+        row[name] = sum(k == name for _, k, _ in classes)
+    return row
 
 
 def summary_table(rows: list) -> str:
     """The summary of several diffs as a Markdown table."""
-    out = ["| figure | cells compared | matching | explained differences | unexplained "
-           "| cells left out (why) |", "|---|---|---|---|---|---|"]
+    out = ["| figure | cells compared | reproduced | fitted | reproduced under a named "
+           "arithmetic | differs, cause shown | differs, no cause shown "
+           "| cells left out (why) |", "|---|---|---|---|---|---|---|---|"]
     for r in rows:
         left = f"{r['left_out']} ({r['why']})" if r["left_out"] else "0"
-        explained = f"{r['explained']} ({r['because']})" if r["explained"] else "0"
-        out.append(f"| Fig. {r['figure']} | {r['compared']} | {r['matching']} | "
-                   f"{explained} | {r['unexplained']} | {left} |")
-    total = {k: sum(r[k] for r in rows) for k in ("compared", "matching", "explained",
-                                                 "unexplained", "left_out")}
-    out.append(f"| all | {total['compared']} | {total['matching']} | {total['explained']} "
-               f"| {total['unexplained']} | {total['left_out']} |")
+        arith = (f"{r[ARITHMETIC]} ({r['arithmetic_names']})" if r[ARITHMETIC] else "0")
+        out.append(f"| Fig. {r['figure']} | {r['compared']} | {r[REPRODUCED]} | "
+                   f"{r[FITTED]} | {arith} | {r[CAUSE_SHOWN]} | {r[NO_CAUSE]} | {left} |")
+    total = {k: sum(r[k] for r in rows) for k in ("compared", "left_out") + CLASSES}
+    out.append(f"| all | {total['compared']} | {total[REPRODUCED]} | {total[FITTED]} | "
+               f"{total[ARITHMETIC]} | {total[CAUSE_SHOWN]} | {total[NO_CAUSE]} | "
+               f"{total['left_out']} |")
     return "\n".join(out)

@@ -262,8 +262,7 @@ def emulate() -> dict:
     DSMVKT, DUGL5: L551-698) and IBM SSP's GELG written out the same way; library functions
     are the exact values truncated (as in :func:`sarkp.book.prog_v_5.emulate`).
     Independent of sarkp's Fortran.  Returns the columns by name."""
-    from .prog_v_5 import _R4 as R
-    from .prog_v_5 import _f
+    from .es_evm import Real4 as R, fn as _f
 
     cos, sin, sqrt, acos, atan = (_f(math.cos), _f(math.sin), _f(math.sqrt), _f(math.acos),
                                   _f(math.atan))
@@ -372,3 +371,14 @@ def arithmetic_table() -> str:
     for name in runs:
         lines.append(f"- {name} misses: {', '.join(missed[name]) or 'none'}")
     return "\n".join(lines)
+
+
+def evidence(number: str = "4"):
+    """Fig. 4 run in the ES EVM's arithmetic (:func:`emulate`) and in IEEE single
+    (:func:`single`), for :func:`sarkp.book.figures.classify`."""
+    from .figures import Evidence
+
+    def keyed(table):
+        return {(str(k + 1), name): float(table[name][k])
+                for name in COLUMNS for k in range(len(table["FI"]))}
+    return Evidence(arithmetics={"ES EVM": keyed(emulate()), "IEEE single": keyed(single())})

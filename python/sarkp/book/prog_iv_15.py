@@ -199,6 +199,37 @@ def compute(card=None, positions: int | None = None, angles=None,
             for k in keep}
 
 
+def mechanism(card=None):
+    """The mechanism of Fig. 29 as a :class:`sarkp.Mechanism` (the groups of
+    :func:`compute`, described once; solve it with ``omega = -W1``: the crank turns
+    clockwise).  Joints: O, A (crank pin), M (on the crank opposite A), F = (ROF, 0),
+    B (kind 1, DPRM1's P = -1: B on the left of A->F, branch +1), C and H on link 3
+    (F-B) at RCF and RFG, D (kind 2, slider on the guide y = A through GA = (0, A)),
+    K (kind 5: the yoke on the guide y = 0 through L = (0, 0), the block pivoted at H in
+    its vertical slot), N (kind 3: the slider pivoted at M on link 9 about O1 = (0, -C),
+    offset 0, so N = M), P (kind 4: on the axis of link 9 through O1 and on the guide
+    y = -(C + D) through Q = (0, -(C + D)))."""
+    from ..mechanism import Mechanism
+    c = dict(CARD, **(card or {}))
+    m = Mechanism()
+    m.fixed("O", 0.0, 0.0)
+    m.fixed("F", c["ROF"], 0.0)
+    m.fixed("GA", 0.0, c["A"])
+    m.fixed("L", 0.0, 0.0)
+    m.fixed("O1", 0.0, -c["C"])
+    m.fixed("Q", 0.0, -(c["C"] + c["D"]))
+    m.crank("A", "O", c["ROA"])
+    m.point("M", "O", "A", c["ROM"], np.pi)
+    m.rrr("B", "A", "F", c["RAB"], c["RBF"], branch=1)
+    m.point("C", "F", "B", c["RCF"])
+    m.point("H", "F", "B", c["RFG"])
+    m.rrp("D", "C", "GA", 0.0, c["RCD"], branch=1)
+    m.rpp("K", "L", 0.0, "H", np.pi / 2)
+    m.rpr("N", "M", "O1", 0.0, 0.0)
+    m.prp("P", "O1", 0.0, "Q", 0.0, guide_m=("O1", "N"))
+    return m
+
+
 def cells(card=None) -> dict:
     """The computed table as {(row, column): value}; row = position number from 1."""
     table = compute(card)

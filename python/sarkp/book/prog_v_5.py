@@ -162,43 +162,7 @@ def render() -> str:
 
 # ---- the whole printed program in the ES EVM's arithmetic (evidence, not the library) ----
 
-class _R4(float):
-    """A REAL*4 of the ES EVM: every operation's exact result truncated to 6 hex digits."""
-
-    def __new__(cls, x):
-        return float.__new__(cls, es_evm.real4(float(x)))
-
-    def __add__(self, o):
-        return _R4(float(self) + float(_R4(o)))
-
-    def __radd__(self, o):
-        return _R4(float(_R4(o)) + float(self))
-
-    def __sub__(self, o):
-        return _R4(float(self) - float(_R4(o)))
-
-    def __rsub__(self, o):
-        return _R4(float(_R4(o)) - float(self))
-
-    def __mul__(self, o):
-        return _R4(float(self) * float(_R4(o)))
-
-    def __rmul__(self, o):
-        return _R4(float(_R4(o)) * float(self))
-
-    def __truediv__(self, o):
-        return _R4(float(self) / float(_R4(o)))
-
-    def __rtruediv__(self, o):
-        return _R4(float(_R4(o)) / float(self))
-
-    def __neg__(self):
-        return _R4(-float(self))
-
-
-def _f(function):
-    return lambda x: _R4(function(float(x)))
-
+_R4, _f = es_evm.Real4, es_evm.fn
 
 _SIN, _COS, _TAN, _ATAN, _SQRT = (_f(math.sin), _f(math.cos), _f(math.tan), _f(math.atan),
                                   _f(math.sqrt))
@@ -289,10 +253,14 @@ def emulated_cells() -> dict:
                    for k, v in emulate().items()})
 
 
-def plots(directory) -> list:
+#: the names (without suffix) of the pictures :func:`plots` writes
+PICTURES = ("v5_profile", "v5_alfa_rok")
+
+
+def plots(directory, *, format: str = "png", dpi: float | None = None) -> list:
     """Write the profile (with the base circle and the follower at the highest lift) and
-    the pressure angle and radius of curvature against FI as PNG files in ``directory``;
-    return their paths.  Needs matplotlib."""
+    the pressure angle and radius of curvature against the cam angle as ``format`` files
+    (png, svg or pdf) in ``directory``; return their paths.  Needs matplotlib."""
     from pathlib import Path
 
     from .. import plot
@@ -300,14 +268,24 @@ def plots(directory) -> list:
     t = compute()
     directory = Path(directory)
     directory.mkdir(parents=True, exist_ok=True)
-    mode = get_mode()
-    paths = [directory / "v5_profile.png", directory / "v5_alfa_rok.png"]
-    plot.save(plot.cam_profile(t["XPRFL"], t["YPRFL"], t["FI"], follower="knife",
-                               offset=t["EXCTST"],
-                               base_radius=math.hypot(t["RKSH"], t["EXCTST"]),
-                               title=f"V.5: knife-edge follower, offset e = "
-                                     f"{t['EXCTST']:.5f} m ({mode})"), paths[0])
-    plot.save(plot.cam_diagrams(t["FI"], t["RKRZVN"], t["ALFA"], ALD=ALFAD,
-                                title=f"V.5: pressure angle and radius of curvature "
-                                      f"({mode})"), paths[1])
-    return paths
+    numbers = np.arange(1, len(t["FI"]) + 1)            # the rows K of Fig. 35
+    return [
+        plot.save(plot.cam_profile(t["XPRFL"], t["YPRFL"], t["FI"], follower="knife",
+                                   offset=t["EXCTST"],
+                                   base_radius=math.hypot(t["RKSH"], t["EXCTST"]),
+                                   title=plot.mode_title(
+                                       f"V.5: cam with a knife-edge follower, offset e = "
+                                       f"{t['EXCTST'] * 1000:.2f} mm")),
+                  Path(directory, PICTURES[0]), format=format, dpi=dpi),
+        plot.save(plot.cam_diagrams(t["FI"], t["RKRZVN"], t["ALFA"], ALD=ALFAD,
+                                    positions=numbers,
+                                    title=plot.mode_title("V.5: pressure angle and radius "
+                                                          "of curvature")),
+                  Path(directory, PICTURES[1]), format=format, dpi=dpi)]
+
+
+def evidence(number: str = "35"):
+    """Fig. 35 run in the ES EVM's arithmetic (:func:`emulate`), for
+    :func:`sarkp.book.figures.classify`."""
+    from .figures import Evidence
+    return Evidence(arithmetics={"ES EVM": emulated_cells()})

@@ -72,21 +72,43 @@ def render() -> str:
     return "\n".join(lines)
 
 
-def plots(directory) -> list:
+#: the names (without suffix) of the pictures :func:`plots` writes
+PICTURES = ("v5_flat_profile", "v5_flat_rok")
+
+
+def plots(directory, *, format: str = "png", dpi: float | None = None) -> list:
     """Write the profile with the flat follower at the highest lift, and the radius of
-    curvature against FI, as PNG files in ``directory``; return their paths."""
+    curvature against the cam angle, as ``format`` files (png, svg or pdf) in
+    ``directory``; return their paths.  Needs matplotlib."""
     from pathlib import Path
+
+    import numpy as np
 
     from .. import plot
 
     t = compute()
     directory = Path(directory)
     directory.mkdir(parents=True, exist_ok=True)
-    mode = get_mode()
-    paths = [directory / "v5_flat_profile.png", directory / "v5_flat_rok.png"]
-    plot.save(plot.cam_profile(t["XPRFL"], t["YPRFL"], t["FI"], follower="flat",
-                               base_radius=t["RKSH"],
-                               title=f"V.5-FLAT: flat-faced follower ({mode})"), paths[0])
-    plot.save(plot.cam_diagrams(t["FI"], t["RKRZVN"],
-                                title=f"V.5-FLAT: radius of curvature ({mode})"), paths[1])
-    return paths
+    return [
+        plot.save(plot.cam_profile(t["XPRFL"], t["YPRFL"], t["FI"], follower="flat",
+                                   base_radius=t["RKSH"],
+                                   title=plot.mode_title("V.5-FLAT: cam with a flat-faced "
+                                                         "follower")),
+                  Path(directory, PICTURES[0]), format=format, dpi=dpi),
+        plot.save(plot.cam_diagrams(t["FI"], t["RKRZVN"],
+                                    positions=np.arange(1, len(t["FI"]) + 1),
+                                    title=plot.mode_title("V.5-FLAT: radius of curvature")),
+                  Path(directory, PICTURES[1]), format=format, dpi=dpi)]
+
+
+def evidence(number: str = "36"):
+    """Fig. 36 run in the ES EVM's arithmetic (:func:`sarkp.book.prog_v_5.emulate` with
+    the flat follower), for :func:`sarkp.book.figures.classify`."""
+    from .figures import Evidence
+    from .prog_v_5 import emulate
+    e = emulate(flat=True)
+    out = {("dims", "RKSH"): float(e["RKSH"])}
+    for k in range(N):
+        for name in COLUMNS:
+            out[(str(k + 1), name)] = float(e[name][k])
+    return Evidence(arithmetics={"ES EVM": out})

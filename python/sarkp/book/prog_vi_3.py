@@ -26,7 +26,7 @@ M, Z1, Z2 = 4.0, 13.0, 34.0
 #: (AW, SDVIG) of the five runs, in print order.
 RUNS = ((100.0, 0), (0.0, 1), (0.0, 3), (110.0, 0), (0.0, 2))
 #: the book's message number for sarkp's reasons (FORMATs 50, 51, 54 after labels 20-22)
-_MESSAGES = (("undercut", 50), ("pointed", 51), ("message 22", 54))
+_MESSAGES = (("undercut", 50), ("pointed", 51), ("no system of shifts", 54))
 CORRECTED_DIFFERENCES = {"ALFAW": "E-DUGINV-1 (corrected: the exact root)",
                          "ALFAW/55": "E-DUGINV-1 (corrected: the exact root)"}
 
@@ -38,7 +38,9 @@ def _run():
         try:
             yield inputs, DKRKT(M, Z1, Z2, aw, sdvig), 52
         except RequirementError as err:
-            fmt = next((f for word, f in _MESSAGES if word in str(err)), 54)
+            # the reason opens the message (what follows it may name the other limit)
+            reason = str(err).partition(": ")[2]
+            fmt = next((f for word, f in _MESSAGES if reason.startswith(word)), 54)
             yield inputs, None, fmt
 
 
@@ -68,3 +70,31 @@ def render() -> str:
     for inputs, result, fmt in _run():
         parts.append(dkrkt_report(inputs, result, None if fmt == 52 else fmt))
     return "\n".join(parts)
+
+
+def rejected_run(aw: float = 110.0) -> dict:
+    """E-FIG44-1: what the listing computes (L4053-4060, the ALFAW statement with its
+    parenthesis where formula (6.12) has it, PI = 3.14159) for a run that sarkp refuses
+    (pointed teeth) and the book prints all the same: ALFAW, XS, X1, X2."""
+    import math
+    pi = 3.14159
+    alfao = pi / 9.0
+    zs = Z1 + Z2
+    y = (aw - M * zs / 2.0) / M
+    alfaw = math.acos(0.5 * zs * math.cos(alfao) / (y + 0.5 * zs))
+    xs = zs * (math.tan(alfaw) - alfaw - math.tan(alfao) + alfao) / (2.0 * math.tan(alfao))
+    x1 = 0.5 * (xs - (Z2 - Z1) / zs * y)
+    return {"ALFAW": alfaw, "XS": xs, "X1": x1, "X2": xs - x1}
+
+
+def evidence(number: str = "44"):
+    """The cells of the run sarkp refuses, computed by the listing's formulas
+    (:func:`rejected_run`), as demonstrated causes for :func:`sarkp.book.figures.classify`."""
+    from .figures import Cause, Evidence
+    k = str(RUNS.index((110.0, 0)) + 1)
+    got = rejected_run()
+    how = ("sarkp refuses the call (pointed teeth); the listing's formulas give "
+           "{:.6f}").format
+    return Evidence(causes={(k, column): Cause("E-FIG44-1", how(got[name]), moved=got[name])
+                            for column, name in (("ALFAW/55", "ALFAW"), ("XS", "XS"),
+                                                 ("X1/55", "X1"), ("X2/55", "X2"))})

@@ -16,7 +16,7 @@ import math
 
 from ..gears import DGMZPC
 from ..modes import book_pi
-from .prog_v_5 import _R4, _f
+from .es_evm import Real4 as _R4, fn as _f
 
 LISTING = "VI.6"
 TITLE = "External involute mesh (DGMZPC example, chapter 6)"
@@ -57,14 +57,18 @@ def _duginv(invx, xnach, tchnst):
         x = x1
 
 
-def emulate() -> dict:
+def emulate(calls=None) -> dict:
     """DGMZPC (L4420-4443, with E-DGMZPC-1, -2) statement by statement in the ES EVM's
     truncating hexadecimal REAL*4, left to right as written; library functions are the
     exact values truncated.  Independent of sarkp's Fortran: the evidence for E-FIG47-1.
-    Returns ``{(row, name): value}`` keyed as :func:`cells`."""
+    Returns ``{(row, name): value}`` keyed as :func:`cells`; ``calls`` ({row: (M, Z1, Z2,
+    BETA, X1, X2, BW)}, BETA None for 16 degrees) replaces the figure's calls (program X
+    uses it for Fig. 87)."""
     out = {}
-    for row, call in {"a": (5.0, 11.0, 26.0, 0.0, 0.5, 0.5, 30.0),
-                      "b": (7.0, 18.0, 60.0, None, 0.0, 0.0, 100.0)}.items():
+    if calls is None:
+        calls = {"a": (5.0, 11.0, 26.0, 0.0, 0.5, 0.5, 30.0),
+                 "b": (7.0, 18.0, 60.0, None, 0.0, 0.0, 100.0)}
+    for row, call in calls.items():
         pi = _R4(3.14159)
         m, z1, z2, beta, x1, x2, bw = (_R4(v) if v is not None else None for v in call)
         if beta is None:
@@ -88,3 +92,32 @@ def emulate() -> dict:
                                (a, xs, alfaw, aw, xy, xur, ealfa + ebeta)):
             out[(row, name)] = float(value)
     return out
+
+
+def evidence(number: str = "47"):
+    """Fig. 47 run in the ES EVM's arithmetic (:func:`emulate`), for
+    :func:`sarkp.book.figures.classify`."""
+    from .figures import Evidence
+    return Evidence(arithmetics={"ES EVM": emulate()})
+
+
+#: the names (without suffix) of the pictures :func:`plots` writes
+PICTURES = ("vi6_mesh_a",)
+
+
+def plots(directory, *, format: str = "png", dpi: float | None = None) -> list:
+    """Write the mesh of example (a), the spur pair z1 = 11, z2 = 26, m = 5 mm,
+    x1 = x2 = 0.5 (:func:`sarkp.plot.gear_mesh`), as a ``format`` file (png, svg or pdf)
+    in ``directory``; return its path in a list.  Example (b) is a helical pair, which
+    the drawing of a spur mesh does not show.  Needs matplotlib."""
+    from pathlib import Path
+
+    from .. import plot
+
+    m, z1, z2, _, x1, x2, _ = _calls()["a"]
+    directory = Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    figure = plot.gear_mesh(m, z1, z2, x1, x2, title=plot.mode_title(
+        f"VI.6 (a): external spur mesh, m = {m:g} mm, z1 = {z1:g}, z2 = {z2:g}, "
+        f"x1 = {x1:g}, x2 = {x2:g}"))
+    return [plot.save(figure, directory / PICTURES[0], format=format, dpi=dpi)]

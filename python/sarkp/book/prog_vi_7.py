@@ -11,7 +11,7 @@ from __future__ import annotations
 import math
 
 from ..gears import DGMZVN
-from .prog_v_5 import _R4, _f
+from .es_evm import Real4 as _R4, fn as _f
 from .prog_vi_6 import _duginv
 
 LISTING = "VI.7"
@@ -85,3 +85,34 @@ def emulate(calls=None) -> dict:
         for name, value in zip(DGMZVN.spec.outputs, values):
             out[(row, name)] = float(value)
     return out
+
+
+def evidence(number: str = "48"):
+    """Fig. 48 run in the ES EVM's arithmetic (:func:`emulate`), for
+    :func:`sarkp.book.figures.classify`."""
+    from .figures import Evidence
+    return Evidence(arithmetics={"ES EVM": emulate()})
+
+
+#: the names (without suffix) of the pictures :func:`plots` writes
+PICTURES = ("vi7_mesh_a", "vi7_mesh_b")
+
+
+def plots(directory, *, format: str = "png", dpi: float | None = None) -> list:
+    """Write the two internal meshes of Fig. 48 (:func:`sarkp.plot.internal_mesh`) as
+    ``format`` files (png, svg or pdf) in ``directory``; return their paths.  Needs
+    matplotlib."""
+    from pathlib import Path
+
+    from .. import plot
+
+    directory = Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    written = []
+    for (row, call), name in zip(CALLS.items(), PICTURES):
+        m, z1, z2, x1, x2 = call[:5]
+        figure = plot.internal_mesh(*call, title=plot.mode_title(
+            f"VI.7 ({row}): internal mesh, m = {m:g} mm, z1 = {z1:g}, z2 = {z2:g}, "
+            f"x1 = {x1:g}, x2 = {x2:g}, ring cut by a shaper z0 = {call[5]:g}"))
+        written.append(plot.save(figure, directory / name, format=format, dpi=dpi))
+    return written

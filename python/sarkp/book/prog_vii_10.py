@@ -195,6 +195,39 @@ def compute(card=None, positions: int | None = None, angles=None, on_error: str 
     return result
 
 
+def mechanism(card=None, angles=None):
+    """The mechanism of Fig. 57 with the program's loads as a :class:`sarkp.Mechanism`
+    (IV.15's :func:`~sarkp.book.prog_iv_15.mechanism` plus the weights Q2 .. Q9 at the
+    centres the program uses and the resistances FC1 .. FC3 at the crank ``angles``
+    (default IV.15's), on the links the program puts them on: FC1 and Q5 on the yoke 7
+    at (XH, B), FC2 on the slider 5 at D, FC3 on the slider 11 at P).  Static: solve with
+    ``need="forces"``; its balancing moment is the program's MY."""
+    card = dict(card or {})
+    forces = {k: card.pop(k) if k in card else v for k, v in CARD.items()}
+    c = dict(prog_iv_15.CARD, **card)
+    FI = (prog_iv_15.crank_angles() if angles is None
+          else np.atleast_1d(np.asarray(angles, dtype=float)))
+    m = prog_iv_15.mechanism(card)
+    r = m.solve(FI, omega=-c["W1"], need="velocities")
+    w3, w9 = r.omega("F", "B"), r.omega("O1", "N")
+    fc1 = np.where(w3 <= 0.0, forces["FS1"], 0.0)                 # steps 1-3
+    fc2 = np.where(w3 <= 0.0, forces["FS2"], 0.0)
+    fc3 = np.where(w9 > 0.0, forces["FS3"], 0.0)
+    m.point("Y7", "K", None, c["B"], math.pi / 2)                 # (XH, B) on the yoke
+    m.force("Y7", -fc1, -c["Q5"] + 0.0 * fc1)
+    m.point("S4", "C", "D", 0.5 * c["RCD"])
+    m.force("S4", 0.0, -forces["Q4"])
+    m.force("D", -fc2, 0.0 * fc2)
+    m.point("S3", "F", "B", c["RFS3"])
+    m.force("S3", 0.0, -forces["Q3"])
+    m.point("S2", "A", "B", 0.5 * c["RAB"])
+    m.force("S2", 0.0, -c["Q2"])
+    m.force("P", -fc3, 0.0 * fc3, link=("P", "Q"))
+    m.point("S9", "O1", "N", c["RO1S9"])
+    m.force("S9", 0.0, -forces["Q9"])
+    return m, FI
+
+
 def _centre_accelerations(t, c):
     """Accelerations (x, y) of the centres of mass of links 2, 3, 4, 5, 7, 9, 11 from
     IV.15's exact accelerations."""
@@ -239,3 +272,35 @@ def render(card=None) -> str:
             lines.append(fortran_write(fmt, [table[n][k] for n in names]))
         lines += ["", ""]
     return "\n".join(lines)
+
+
+#: the names (without suffix) of the pictures :func:`plots` writes
+PICTURES = ("vii10_hodograph_21", "vii10_hodograph_81", "vii10_hodograph_30",
+            "vii10_hodograph_90")
+
+
+def plots(directory, *, format: str = "png", dpi: float | None = None) -> list:
+    """Write the hodographs of the reactions at the crank's two joints (F21, F81) and at
+    the frame pivots of links 3 and 9 (F30, F90) over the book's 25 positions, as
+    ``format`` files (png, svg or pdf) in ``directory``; return their paths.  Needs
+    matplotlib."""
+    from pathlib import Path
+
+    from .. import plot
+
+    t = compute()
+    directory = Path(directory)
+    directory.mkdir(parents=True, exist_ok=True)
+    numbers = np.arange(1, len(t["FI"]) + 1)
+    written = []
+    for name in PICTURES:
+        ij = name.rsplit("_", 1)[1]
+        i, j = ij[0], ij[1:]
+        on = "the frame" if j == "0" else f"link {j}"
+        figure = plot.reaction_hodograph(
+            t["F" + ij], t["G" + ij], positions=numbers,
+            label=f"F{ij}: link {i} on {on}",
+            title=plot.mode_title(f"VII.10: hodograph of the reaction F{ij} (link {i} on "
+                                  f"{on}), crank turning clockwise"))
+        written.append(plot.save(figure, directory / name, format=format, dpi=dpi))
+    return written

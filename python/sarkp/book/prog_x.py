@@ -24,9 +24,12 @@ links of 50 kg/m, and a flywheel for delta = 0.02.
 Each stage can run alone (``sarkp book run X --stage cam``), as the book recommends for
 the dialogue mode (L7238-7252); a stage that needs an earlier stage's results (the
 kinematics needs the link lengths, the forces the kinematics, the dynamics the forces)
-runs that stage silently first.  When an earlier stage cannot run (its routines are not
-in this build of sarkp, or its task card has no mechanism), the stage raises a
-:class:`sarkp.SarkpError` naming both stages and the cause, and prints nothing.
+runs that stage silently first.  When an earlier stage cannot run (its task card has no
+mechanism), the stage raises a :class:`sarkp.SarkpError` naming both stages and the
+cause, and prints nothing.  The printouts are :mod:`sarkp.book.x_render`'s, the corrected
+design's report :mod:`sarkp.book.x_report`'s; :mod:`sarkp.book.x_arithmetic` runs the
+kinematics, forces and dynamics in the ES EVM's arithmetic or IEEE single, and
+:mod:`sarkp.book.x_causes` holds the demonstrated causes of differing cells.
 
 As-printed mode reproduces the printed figures: PI = 3.14159, the main program's own
 arithmetic that a printed cell depends on (the crank angle ``F = F + DF``, L7504, and
@@ -35,17 +38,18 @@ the program's choices and errors the figures were computed with, each a row of
 docs/ERRATA.md (section "Program X"):
 
 * E-X-FICD1-1: FICD1 = 0 for the crank angle of DSNTZR's first position (1.3563 rad);
-* E-X-LINKS-1: ROA, RAB, ROC as fitted to Fig. 91's positions (no DSNTZ1 gives them);
+* E-X-LINKS-1: the five link lengths as fitted to Fig. 91 (scripts/fit_x_links.py; no
+  DSNTZ1 gives them);
 * E-DUSKR1-1 (DUSKR1's ``ABS(Y(1))``) and E-X-W4 (omega2 passed to DUSKR2 for omega4);
 * E-X-IPR-1: the m3 term counted twice in the reduced inertia;
 * E-X-DELTA-1: delta = 0.01 for the flywheel where the card asks 0.02.
 
 Corrected mode is the design the task card asks for: exact pi, FICD1 from DSNTZR, the
 lengths from DSNTZ1's construction, true accelerations, the reduced inertia counted
-once, delta = 0.02; :func:`corrected_report` prints where it differs from the book, and
-:func:`checks` holds it against physics (the stroke, the coefficient of speed change,
-accelerations against numerical derivatives of the velocities, the forces against virtual
-work, the flywheel against the delta it is sized for).  Without a flywheel the corrected
+once, delta = 0.02; :func:`corrected_report` prints where it differs from the book and
+the task card's measures (the stroke, the coefficient of speed change, the flywheel's
+delta); tests/test_program_x.py holds it against physics (accelerations against numerical
+derivatives of the velocities, the forces against virtual work).  Without a flywheel the corrected
 machine stalls (E-DZKNDV-2): WPR, EPR are then not printed.
 """
 
@@ -60,9 +64,9 @@ from .. import DSMVKT, DUGL3, DMOMNT, get_mode
 from ..errors import SarkpError
 from ..kinematics import DPRM1, DPRM2, DSKOR1, DSKOR2, DUSKR1, DUSKR2
 from ..modes import book_pi
-from ..report import fortran_write
 from ..synthesis import DSNTZ1, DSNTZR
-from .prog_v_5 import _R4      # a REAL*4 of the ES EVM (sarkp.book.es_evm)
+from . import es_evm
+from .es_evm import Real4, fn
 
 LISTING = "X"
 TITLE = "Course project of chapter 10: the conveyor-feeder mechanism (program X)"
@@ -81,9 +85,17 @@ GAMMA_DIVISOR = 3.0              # L7467: DPRFPL's design angle PI/3.0
 G, ML = 9.81, 50.0               # L7542: gravity, mass per metre of a link
 POSITIONS = 37                   # L7503: DO 30 K = 1, 37
 CAM_POINTS = 26                  # L7434: DO 5 K = 1, 26
-#: E-X-LINKS-1: ROA, RAB, ROC fitted (least squares) to the 259 printed position cells of
-#: Fig. 91 with the other lengths from DSNTZR; the printed Fig. 84 has them to 3 decimals.
-FITTED_LINKS = {"ROA": 0.16646893, "RAB": 2.33535352, "ROC": 2.09023145}
+#: E-X-LINKS-1: the link lengths of the printed run, the output of scripts/fit_x_links.py
+#: (a minimax fit to 587 printed cells of Fig. 91; worst cell 0.544 units; standard
+#: uncertainties 0.4-4.3e-6 m).  Fig. 84 prints ROA RAB ROC to 3 decimals, and DSNTZR's
+#: RCD RDE (0.5787882, 0.7012536), which these round to as well.
+FITTED_LINKS = {"ROA": 0.16646745, "RAB": 2.33534586, "ROC": 2.09022290, "RCD": 0.57878712,
+                "RDE": 0.70125374}
+#: the cells of Fig. 91 the fit leaves out, by their ERRATA ids (scripts/fit_x_links.py)
+FIT_LEFT_OUT = frozenset({"E-FIG91-9", "E-FIG91-10"})
+#: their standard uncertainties (m), from the same script
+FITTED_UNCERTAINTY = {"ROA": 4.3e-7, "RAB": 4.3e-6, "ROC": 4.0e-6, "RCD": 1.8e-6,
+                      "RDE": 1.1e-6}
 #: E-X-DELTA-1: the flywheel's coefficient of speed fluctuation, as run and as asked.
 DELTA_FLYWHEEL = {"as-printed": 0.01, "corrected": 0.02}
 
@@ -94,17 +106,6 @@ STAGE_FIGURE = {"synthesis": "84", "teeth": "86", "gears": "87", "cam": "89",
 NEEDS = {"synthesis": (), "teeth": (), "gears": (), "cam": (),
          "kinematics": ("synthesis",), "forces": ("synthesis", "kinematics"),
          "dynamics": ("synthesis", "kinematics", "forces")}
-#: the library routines each stage calls, and the chapter they belong to
-ROUTINES = {
-    "synthesis": (("DSNTZR", "DSNTZ1"), 3),
-    "teeth": (("DZBPL",), 6),
-    "gears": (("DKRKT", "DGMTZK", "DGMZPC", "DGMZVN"), 6),
-    "cam": (("DPRFPL",), 5),
-    "kinematics": (("DPRM1", "DPRM2", "DSKOR1", "DSKOR2", "DUSKR1", "DUSKR2"), 4),
-    "forces": (("DNMAF2", "DNMAF1"), 7),
-    "dynamics": (("DZKNDV", "DMHVK"), 8),
-}
-
 #: Why a printed cell differs in corrected mode (see docs/ERRATA.md).
 CORRECTED_DIFFERENCES = {
     **{c: "E-PI-1; E-FIG89-3 (exact pi and IEEE double arithmetic, phases by the row number)"
@@ -120,23 +121,16 @@ CORRECTED_DIFFERENCES = {
 }
 
 
-def missing_routines(stage: str) -> tuple:
-    """The routines of ``stage`` that this build of sarkp does not have."""
-    names, _ = ROUTINES[stage]
-    return tuple(n for n in names if not hasattr(sarkp, n))
-
-
 def available(stage: str) -> bool:
-    """Whether ``stage`` and every stage it needs can run in this build."""
-    return not missing_routines(stage) and all(available(s) for s in NEEDS[stage])
+    """Whether ``stage`` can run: every stage's routines are in sarkp (kept for
+    :func:`plots`)."""
+    if stage not in STAGES:
+        raise ValueError(f"program X has no stage {stage!r}; stages: {', '.join(STAGES)}")
+    return True
 
 
-def _figures() -> tuple:
-    return tuple(STAGE_FIGURE[s] for s in STAGES if available(s))
-
-
-#: the figures this build reproduces (the others plug in when their chapters are built)
-FIGURES = _figures()
+#: the figures program X prints
+FIGURES = tuple(STAGE_FIGURE[s] for s in STAGES)
 
 
 class StageError(SarkpError):
@@ -147,13 +141,12 @@ class StageError(SarkpError):
 
 def _number():
     """The main program's REAL: the ES EVM's as printed, a double corrected."""
-    return _R4 if get_mode() == "as-printed" else float
+    return Real4 if get_mode() == "as-printed" else float
 
 
 def _fn(function):
-    if get_mode() == "as-printed":
-        return lambda x: _R4(function(float(x)))
-    return function
+    """A library function in the main program's arithmetic (see :func:`_number`)."""
+    return fn(function) if get_mode() == "as-printed" else function
 
 
 # ---- stage 1: synthesis (Fig. 84) -----------------------------------------------------------
@@ -179,8 +172,8 @@ def synthesis() -> dict:
                          f"four-bar for K = {SKW} and the extreme positions "
                          f"{ficb1:.4f}, {ficb1 + DELTA:.4f} rad: {exc}") from exc
     out = {"RCD": r.L1, "RDE": r.L2, "FICD1": ficd1, "FI11": r.FI11, "FICB1": ficb1,
-           "DSNTZ1": (s.L1, s.L2, s.LO)}
-    if printed:                     # E-X-LINKS-1
+           "DSNTZ1": (s.L1, s.L2, s.LO), "RCD_DSNTZR": r.L1, "RDE_DSNTZR": r.L2}
+    if printed:                     # E-X-LINKS-1 (Fig. 84 prints DSNTZR's RCD, RDE)
         out.update(FITTED_LINKS)
     else:
         out.update(ROA=s.L1, RAB=s.L2, ROC=s.LO)
@@ -188,20 +181,11 @@ def synthesis() -> dict:
     return out
 
 
-def render_synthesis(s: dict) -> str:
-    return "\n".join([
-        fortran_write("(1X,'РАЗМЕРЫ ЗВЕНЬЕВ МАНИПУЛЯТОРА'//"
-                      "'RCD = ',F7.3,' RDE = ',F7.3,' FICD = ',F7.3//)",
-                      [s["RCD"], s["RDE"], s["FICD1"]]),
-        fortran_write("('ROA = ',F7.3,' RAB = ',F7.3,' ROC = ',F7.3//)",
-                      [s["ROA"], s["RAB"], s["ROC"]])])
-
-
 # ---- stage 2: tooth numbers (Fig. 86) -------------------------------------------------------
 
-#: L7344-7363: COMMON /ZUB/ limits and the eight DZBPL calls (KS, P, Q, L2, L3, Z1MIN,
-#: Z1MAX, SHEMA).  The printed 5th call reads "6, 7, 3, 0, 200" for "6, 7, 30, 200" (OCR).
-ZUB_LIMITS = {"ZKRN": 20, "ZKRW": 85, "DZ": 8}
+#: L7348-7363: the eight DZBPL calls (KS, P, Q, L2, L3, Z1MIN, Z1MAX, SHEMA); the COMMON
+#: /ZUB/ limits ZKRN, ZKRW, DZ the program sets (L7344-7346) are DZBPL's own.  The printed
+#: 5th call reads "6, 7, 3, 0, 200" for "6, 7, 30, 200" (OCR).
 DZBPL_CALLS = ((1, 1, 25, 2, 3, 30, 200, 3), (1, 1, 25, 3, 4, 30, 200, 3),
                (1, 1, 25, 4, 5, 30, 200, 3), (1, 1, 25, 6, 7, 30, 200, 3),
                (2, 5, 1, 1, 1, 13, 35, 1), (3, 5, 1, 1, 1, 13, 35, 1),
@@ -224,12 +208,6 @@ def teeth() -> dict:
                              f"{exc}") from exc
         out.append((dict(zip(sarkp.DZBPL.spec.inputs, call)), result))
     return {"variants": out}
-
-
-def render_teeth(t: dict) -> str:
-    return "\n".join(sarkp.gears.dzbpl_report(args["KS"], args["SHEMA"],
-                                              None if result is None else list(result))
-                     for args, result in t["variants"])
 
 
 # ---- stage 3: gear geometry (Fig. 87) -------------------------------------------------------
@@ -269,31 +247,25 @@ def gears() -> dict:
     return out
 
 
-def render_gears(g: dict) -> str:
-    args, k = g["DKRKT"]
-    # with AAA = 1 DKRKT prints only its input line (FORMAT 25, two records)
-    parts = ["\n".join(sarkp.gears.dkrkt_report(args).split("\n")[:2]),
-             fortran_write("(1X,'КОЭФФИЦИЕНТЫ СМЕЩЕНИЯ КОЛЕС:'/' X1 = ',F7.3,"
-                           "' X2 = ',F7.3/' УГОЛ ЗАЦЕПЛЕНИЯ AL12 = ',F8.4)",
-                           [k.X1, k.X2, k.ALFAW])]
-    for name, routine in (("DGMTZK1", sarkp.DGMTZK), ("DGMTZK2", sarkp.DGMTZK),
-                          ("DGMZPC", sarkp.DGMZPC), ("DGMZVN", sarkp.DGMZVN)):
-        args, result = g[name]
-        parts.append(routine.spec.report(args, list(result)))
-    return "\n".join(parts)
-
-
 # ---- stage 4: cam (Fig. 89) -----------------------------------------------------------------
 
-def cam_law() -> dict:
+def _sin_rounded(x):
+    """SIN whose result is rounded to the ES EVM's REAL*4, not truncated (E-FIG89-4)."""
+    return Real4(es_evm.real4_rounded(math.sin(float(x))))
+
+
+def cam_law(sin_rounds: bool = False) -> dict:
     """The follower's motion law, loop DO 5 (L7414-7463), formulas (10.1)-(10.3).
 
     As printed, in the ES EVM's arithmetic: it puts FI(11) just below FIU (row 11 is the
     end of the rise, AT = -1.8605) and FI(16) just below FIU + FID (row 16 is still on
     the dwell, AT = 0), as Fig. 89 prints (E-FIG89-3).  Corrected: the same phases by
-    the row number, exact pi, double precision."""
+    the row number, exact pi, double precision.  ``sin_rounds``: as printed with a SIN
+    that rounds its result (E-FIG89-4)."""
     R = _number()
     cos, sin = _fn(math.cos), _fn(math.sin)
+    if sin_rounds and get_mode() == "as-printed":    # E-FIG89-4: a SIN that rounds
+        sin = _sin_rounded
     pi = R(book_pi())
     beta = pi * (R(SKW) - R(1.0)) / (R(SKW) + R(1.0))
     fiu = (pi - beta) * R(0.4)
@@ -347,21 +319,6 @@ def cam() -> dict:
             "RKSH": p.RKSH, "ROKMIN": p.ROKMIN, "NCONC": p.NCONC}
 
 
-def render_cam(c: dict) -> str:
-    lines = [fortran_write("(1X,'КИНЕМАТИЧЕСКИЕ ХАРАКТЕРИСТИКИ ДВИЖЕНИЯ ','ТОЛКАТЕЛЯ'/5X,"
-                           "'FIK',8X,'AT',8X,'VT',8X,'ST')")]
-    lines += [fortran_write("(1X,4F10.4)", [c[n][k] for n in ("FIK", "AT", "VT", "ST")])
-              for k in range(CAM_POINTS)]
-    lines.append(fortran_write("(1X//'РАДИУС КУЛАЧКОВОЙ ШАЙБЫ - RKSH = ',F7.4//)",
-                               [c["RKSH"]]))
-    lines.append(fortran_write("(1X,'ХАРАКТЕРИСТИКИ ПРОФИЛЯ КУЛАЧКА'//5X,'FIK',7X,'X',"
-                               "9X,'Y',9X,'RK',7X,'DLT',7X,'ROK')"))
-    lines += [fortran_write("(1X,6F10.4)",
-                            [c[n][k] for n in ("FIK", "X", "Y", "RK", "DLT", "ROK")])
-              for k in range(CAM_POINTS)]
-    return "\n".join(lines)
-
-
 # ---- stage 5: kinematics (Fig. 91) ----------------------------------------------------------
 
 def crank_angles(positions: int = POSITIONS) -> np.ndarray:
@@ -369,7 +326,7 @@ def crank_angles(positions: int = POSITIONS) -> np.ndarray:
     ``F = F + DF`` in the ES EVM's REAL*4, as program II.13 does (E-FIG4-4): the
     printed FI1 = 2.9670, 3.4906, ... (E-FIG91-7)."""
     if get_mode() == "as-printed":
-        R = _R4
+        R = Real4
         df = R(2.0) * R(book_pi()) / R(36.0)
         f, out = -df, []
         for _ in range(positions):
@@ -416,24 +373,6 @@ def kinematics(links: dict, angles=None) -> dict:
             "ALE": v2.ALB, "W4": v2.W2, "VA": va, "ALA": ala, "VD": vd, "ALD": ald,
             "ALBA": v1.ALBA, "ALED": v2.ALBA, "E2": a1.E2, "E3": a1.E3, "E4": a2.E2,
             "AE": a2.AB, "BE": a2.BB}
-
-
-def render_kinematics(k: dict) -> str:
-    n = len(k["FI1"])
-    lines = [fortran_write("(1X,'КИНЕМАТИЧЕСКИЙ РАСЧЕТ МЕХАНИЗМА ','МАНИПУЛЯТОРА'//5X,"
-                           "'ЛИНЕЙНЫЕ И УГЛОВЫЕ ПЕРЕМЕЩЕНИЯ ЗВЕНЬЕВ'/3X,'FI1',5X,'FI2',"
-                           "6X,'FICB',6X,'XE',6X,'FIDE',6X,'XB',7X,'YB'/)")]
-    cols = ("FI1", "FI2", "FICB", "XE", "FIDE", "XB", "YB")
-    lines += [fortran_write("(7F9.4)", [k[c][i] for c in cols]) for i in range(n)]
-    lines.append(fortran_write("(5X//'ЛИНЕЙНЫЕ И УГЛОВЫЕ СКОРОСТИ ЗВЕНЬЕВ'/3X,'FI1',6X,"
-                               "'W2',7X,'W3',7X,'VE',7X,'ALE',6X,'W4'/)"))
-    cols = ("FI1", "W2", "W3", "VE", "ALE", "W4")
-    lines += [fortran_write("(6F9.4)", [k[c][i] for c in cols]) for i in range(n)]
-    lines.append(fortran_write("(5X//'ЛИНЕЙНЫЕ И УГЛОВЫЕ УСКОРЕНИЯ ЗВЕНЬЕВ'/3X,'FI1',6X,"
-                               "'E2',7X,'E3',7X,'E4',7X,'AE',7X,'BE'/)"))
-    cols = ("FI1", "E2", "E3", "E4", "AE", "BE")
-    lines += [fortran_write("(6F9.4)", [k[c][i] for c in cols]) for i in range(n)]
-    return "\n".join(lines)
 
 
 # ---- stage 6: forces (Fig. 94) --------------------------------------------------------------
@@ -486,21 +425,6 @@ def forces(links: dict, kin: dict) -> dict:
             "T3": t3, **m}
 
 
-def render_forces(fo: dict) -> str:
-    n = len(fo["FI1"])
-    lines = [fortran_write("(//'ОПРЕДЕЛЕНИЕ УСИЛИЙ В КИНЕМАТИЧЕСКИХ'/'ПАРАХ МЕХАНИЗМА "
-                           "МАНИПУЛЯТОРА'//10X,'ВЕЛИЧИНЫ УСИЛИЙ И МОМЕНТ СОПРОТИВЛЕНИЯ'/"
-                           "4X,'FI1',5X,'F43',6X,'F45',6X,'F50',6X,'F30',6X,'F23',6X,"
-                           "'F21',6X,'M1')")]
-    cols = ("FI1", "F43", "F45", "F50", "F30", "F23", "F21", "M1")
-    lines += [fortran_write("(F8.3,6F9.1,F8.1)", [fo[c][i] for c in cols]) for i in range(n)]
-    lines.append(fortran_write("(/10X,'НАПРАВЛЯЮЩИЕ УГЛЫ ВЕКТОРОВ СИЛ'/4X,'FI1',5X,'G43',"
-                               "6X,'G45',6X,'G50',6X,'G30',6X,'G23',6X,'G21')"))
-    cols = ("FI1", "G43", "G45", "G50", "G30", "G23", "G21")
-    lines += [fortran_write("(F8.3,6F9.3)", [fo[c][i] for c in cols]) for i in range(n)]
-    return "\n".join(lines)
-
-
 # ---- stage 7: dynamics (Fig. 96) ------------------------------------------------------------
 
 def reduced_inertia(links: dict, kin: dict) -> np.ndarray:
@@ -548,45 +472,14 @@ def dynamics(links: dict, kin: dict, fo: dict) -> dict:
             "IMH": imh, "DELTA": delta, "IS1": is1, "STALLS": stalls}
 
 
-TRAPEZOIDS = " ИСПОЛЬЗУЕТСЯ МЕТОД ТРАПЕЦИЙ"          # DINTGR's message, once per DZKNDV
-
-
-def render_dynamics(d: dict) -> str:
-    n = len(d["FI1"])
-    lines = [TRAPEZOIDS, TRAPEZOIDS,
-             fortran_write("(//1X,'РЕЗУЛЬТАТЫ РЕШЕНИЯ УРАВНЕНИЯ ДВИЖЕНИЯ'/8X,'МЕХАНИЗМА "
-                           "МАНИПУЛЯТОРА'/2X,'FI1',4X,'IPR',5X,'AS',4X,'ASUM',4X,'EV',5X,"
-                           "'DEC',3X,'WPR',5X,'EPR',2X,'WPRM',4X,'EPRM'/)")]
-    cols = ("FI1", "IPR", "AS", "ASUM", "EV", "DEC", "WPR", "EPR", "WPRM", "EPRM")
-    if d.get("STALLS"):     # corrected mode: no steady motion without the flywheel
-        lines += [fortran_write("(F6.3,5F7.1,A7,A8,F6.2,F8.2)",
-                                [d[c][i] for c in cols[:6]] + ["  stall", "   stall"]
-                                + [d["WPRM"][i], d["EPRM"][i]]) for i in range(n)]
-    else:
-        lines += [fortran_write("(F6.3,5F7.1,F7.2,F8.2,F6.2,F8.2)", [d[c][i] for c in cols])
-                  for i in range(n)]
-    lines.append(fortran_write("(//1X,'МОМЕНТ ИНЕРЦИИ МАХОВИКА - IMH = ',F7.2)",
-                               [d["IMH"]]))
-    return "\n".join(lines)
+from .x_render import RENDER  # noqa: E402  (the printouts; they use the data above)
+from .x_report import corrected_report  # noqa: E402
 
 
 # ---- running the program ---------------------------------------------------------------------
 
 def _cannot(stage: str, why: str) -> StageError:
     return StageError(f"program X, stage '{stage}' (Fig. {STAGE_FIGURE[stage]}): {why}")
-
-
-def _check_routines(stage: str, needed_by: str | None = None) -> None:
-    missing = missing_routines(stage)
-    if missing:
-        chapter = ROUTINES[stage][1]
-        cause = (f"sarkp has no {', '.join(missing)} in this build (chapter {chapter} of "
-                 f"the library is not built yet)")
-        if needed_by:
-            raise _cannot(needed_by, f"needs the results of stage '{stage}' "
-                                     f"(Fig. {STAGE_FIGURE[stage]}), which cannot run: "
-                                     f"{cause}")
-        raise _cannot(stage, cause)
 
 
 def run(stages=None) -> dict:
@@ -598,9 +491,6 @@ def run(stages=None) -> dict:
         if s not in STAGES:
             raise ValueError(f"program X has no stage {s!r}; stages: {', '.join(STAGES)}")
     todo = [s for s in STAGES if s in wanted or any(s in NEEDS[w] for w in wanted)]
-    for s in todo:
-        for w in [w for w in wanted if s in NEEDS[w]] or [None]:
-            _check_routines(s, needed_by=w if s not in wanted else None)
     done: dict = {}
     for s in todo:
         try:
@@ -627,35 +517,35 @@ def run(stages=None) -> dict:
     return done
 
 
-_RENDER = {"synthesis": render_synthesis, "teeth": render_teeth, "gears": render_gears,
-           "cam": render_cam, "kinematics": render_kinematics, "forces": render_forces,
-           "dynamics": render_dynamics}
-
-
-def render(stage: str | None = None) -> str:
+def render(stage: str | None = None, arithmetic: str | None = None) -> str:
     """The program's printout in the book's layout: every stage that this build can run
     (a note names the others and why), or one ``stage`` alone.  Everything is computed
-    before anything is returned, so a failure prints nothing."""
-    if stage is not None:
-        done = run([stage])
-        text = _RENDER[stage](done[stage])
-        if get_mode() == "corrected":
-            text += "\n\n" + corrected_report(done, [stage])
-        return text
-    runnable = [s for s in STAGES if available(s)]
-    done = run(runnable)
-    parts = []
-    for s in STAGES:
-        if s in done:
-            parts.append(_RENDER[s](done[s]))
-        else:
-            missing = missing_routines(s) or next(
-                missing_routines(n) for n in NEEDS[s] if missing_routines(n))
-            parts.append(f"[program X: stage '{s}' (Fig. {STAGE_FIGURE[s]}) not run: "
-                         f"sarkp has no {', '.join(missing)} in this build]")
-    text = "\n".join(parts)
+    before anything is returned, so a failure prints nothing.
+
+    ``arithmetic`` ("es-evm" or "ieee-single", as-printed mode only) runs the stages
+    kinematics, forces and dynamics statement by statement in that arithmetic
+    (:mod:`sarkp.book.x_arithmetic`) instead of sarkp's double precision."""
+    if arithmetic is not None:
+        from . import x_arithmetic
+        if arithmetic not in x_arithmetic.ARITHMETICS:
+            raise ValueError(f"arithmetic must be one of "
+                             f"{', '.join(x_arithmetic.ARITHMETICS)}, not {arithmetic!r}")
+        if get_mode() != "as-printed":
+            raise ValueError("an arithmetic other than double emulates the printed run: "
+                             "as-printed mode only")
+        stages = list(STAGES) if stage is None else [stage]
+        done = run(stages)
+        other = x_arithmetic.run(arithmetic)
+        for s in ("kinematics", "forces", "dynamics"):
+            if s in done:
+                done[s] = other[s]
+        return "\n".join(RENDER[s](done[s]) for s in STAGES
+                         if s in done and (stage is None or s == stage))
+    stages = list(STAGES) if stage is None else [stage]
+    done = run(stages)
+    text = "\n".join(RENDER[s](done[s]) for s in STAGES if s in stages)
     if get_mode() == "corrected":
-        text += "\n\n" + corrected_report(done, runnable)
+        text += "\n\n" + corrected_report(done, stages)
     return text
 
 
@@ -667,7 +557,8 @@ def stage_cells(stage: str, results: dict) -> dict:
     out = {}
     if stage == "synthesis":
         s = results
-        for name, key in (("RCD", "RCD"), ("RDE", "RDE"), ("FICD", "FICD1"), ("ROA", "ROA"),
+        for name, key in (("RCD", "RCD_DSNTZR"), ("RDE", "RDE_DSNTZR"), ("FICD", "FICD1"),
+                          ("ROA", "ROA"),
                           ("RAB", "RAB"), ("ROC", "ROC")):
             out[("1", name)] = float(s[key])
     elif stage == "cam":
@@ -722,224 +613,65 @@ def figure_cells(number: str) -> dict:
     return stage_cells(stage, run([stage])[stage])
 
 
-# ---- corrected mode: the design the task card asks for -------------------------------------
+def fitted_cells() -> list:
+    """The printed cells of Fig. 91 that :data:`FITTED_LINKS` were fitted to: every cell
+    that depends on the lengths (all but FI1), less those of :data:`FIT_LEFT_OUT`."""
+    from .figures import load_figure
+    return [c for c in load_figure("91").cells
+            if c.reproducible and not c.column.startswith("FI1")
+            and not FIT_LEFT_OUT & set(c.errata.split(";"))]
 
-def checks(done: dict) -> dict:
-    """Physical checks of a run (meant for corrected mode): the slider's stroke against
-    the card's 0.40 m, the coefficient of speed change realized against K = 1.1, the
-    swing of link 3 against DELTA, and the accelerations against central differences of
-    the velocities over a fine sweep (relative to each quantity's largest value)."""
-    out = {}
-    if "kinematics" in done:
-        links = done["synthesis"]
-        fine = np.linspace(0.0, 2.0 * math.pi, 3601)
-        k = kinematics(links, fine)
-        out["stroke"] = float(k["XE"].max() - k["XE"].min())
-        out["swing"] = float(k["FICB"].max() - k["FICB"].min())
-        # the working stroke: link 3 turning clockwise (W3 < 0, FS = 2000 N), between the
-        # two zeros of W3 (the rocker's extreme positions), interpolated on the sweep
-        w3 = k["W3"]
-        i = np.flatnonzero(np.sign(w3[:-1]) != np.sign(w3[1:]))
-        zeros = fine[i] - w3[i] * (fine[i + 1] - fine[i]) / (w3[i + 1] - w3[i])
-        if zeros.size != 2:
-            raise _cannot("kinematics", f"link 3 stops {zeros.size} times per turn, "
-                                        f"not twice: the mechanism is no crank-rocker")
-        inside = (zeros[1] - zeros[0]) / (2.0 * math.pi)
-        work = inside if w3[i[0] + 1] < 0.0 else 1.0 - inside
-        out["working_stroke_deg"] = 360.0 * work
-        out["K_realized"] = max(work, 1 - work) / min(work, 1 - work)
-        h = 1e-5
-        plus, minus = kinematics(links, fine + h), kinematics(links, fine - h)
 
-        def rel(a, b):
-            return float(np.max(np.abs(a - b)) / np.max(np.abs(b)))
+def evidence(number: str):
+    """What shows more about a printed figure than the double-precision run
+    (:class:`sarkp.book.figures.Evidence`): the cells the link lengths were fitted to
+    (Fig. 91), program X's chain in the ES EVM's arithmetic and in IEEE single
+    (:mod:`sarkp.book.x_arithmetic`; Figs. 91, 94, 96), the ES EVM's DGMZVN (Fig. 87),
+    the cam's law with a rounding SIN (Fig. 89) and the demonstrated causes."""
+    from . import x_arithmetic
+    from .figures import Evidence
+    from .x_causes import causes
+    number = str(number)
+    arithmetics = {}
+    if number in x_arithmetic.FIGURES:
+        arithmetics = {"ES EVM": x_arithmetic.figure_cells(number, "es-evm"),
+                       "IEEE single": x_arithmetic.figure_cells(number, "ieee-single")}
+    elif number == "87":
+        arithmetics = {"ES EVM": _gears_es_evm()}
+    elif number == "89":
+        arithmetics = {"ES EVM, SIN rounded": _cam_law_cells(cam_law(sin_rounds=True))}
+    fitted = frozenset((c.row, c.column) for c in fitted_cells()) if number == "91" else \
+        frozenset()
+    shown = causes(number)
+    if number in x_arithmetic.FIGURES:               # the fitted lengths' uncertainty
+        from .figures import compare, load_figure
+        from .x_causes import length_causes
+        figure = load_figure(number)
+        shown.update(length_causes({number: compare(figure, figure_cells(number))})[number])
+    return Evidence(fitted=fitted, arithmetics=arithmetics, causes=shown,
+                    fit="scripts/fit_x_links.py, prog_x.FITTED_LINKS" if fitted else "")
 
-        def vex(t):
-            return t["VE"] * np.cos(t["ALE"])
 
-        def aex(t):
-            return t["AE"] * np.cos(t["BE"])
-        out["E2_vs_dW2/dt"] = rel(k["E2"], W1 * (plus["W2"] - minus["W2"]) / (2 * h))
-        out["E3_vs_dW3/dt"] = rel(k["E3"], W1 * (plus["W3"] - minus["W3"]) / (2 * h))
-        out["E4_vs_dW4/dt"] = rel(k["E4"], W1 * (plus["W4"] - minus["W4"]) / (2 * h))
-        out["AE_vs_dVE/dt"] = rel(aex(k), W1 * (vex(plus) - vex(minus)) / (2 * h))
-    if "forces" in done:
-        # virtual work (no inertia loads): the moment M1 of link 2's force on the crank
-        # about O times omega1 is the power of the loads, FS on 5 and the weights of 2-5;
-        # the points' velocities as central differences of their positions
-        links = done["synthesis"]
-        fine = np.linspace(0.0, 2.0 * math.pi, 721)[:-1]
-        h = 1e-6
-        k, kp, km = (kinematics(links, fine + d) for d in (0.0, h, -h))
-        fo = forces(links, k)
-        m = masses(links)
-        pi = book_pi()
-
-        def centres(t):
-            c3 = (t["XC"] + 0.15 * links["RCD"] * np.cos(t["FICB"] + pi),
-                  t["YC"] + 0.15 * links["RCD"] * np.sin(t["FICB"] + pi))
-            s4y = t["YD"] + 0.3 * links["RDE"] * np.sin(t["FIDE"])
-            s2y = t["YA"] + 0.5 * links["RAB"] * np.sin(t["FI2"])
-            return t["XE"], s2y, c3[1], s4y
-        (xe_p, s2_p, s3_p, s4_p), (xe_m, s2_m, s3_m, s4_m) = centres(kp), centres(km)
-        rate = W1 / (2.0 * h)
-        power = (-fo["FS"] * (xe_p - xe_m) * rate
-                 - G * (m["M2"] * (s2_p - s2_m) + m["M3"] * (s3_p - s3_m)
-                        + m["M4"] * (s4_p - s4_m)) * rate)      # slider 5 moves level
-        out["virtual_work"] = float(np.max(np.abs(fo["M1"] * W1 - power))
-                                    / np.max(np.abs(power)))
-    if "dynamics" in done:
-        d = done["dynamics"]
-        w = d["WPRM"]
-        out["delta_realized"] = float((w.max() - w.min()) / W1)
+def _gears_es_evm() -> dict:
+    """Fig. 87's DGMZPC and DGMZVN blocks as the ES EVM computed them (prog_vi_6.emulate,
+    prog_vi_7.emulate with program X's calls; the shifts from as-printed DKRKT)."""
+    from .. import as_printed
+    from . import prog_vi_6, prog_vi_7
+    with as_printed():
+        x = sarkp.DKRKT(**GEAR_CALLS["DKRKT"]).X2
+    call = dict(GEAR_CALLS["DGMZVN"], X1=x)
+    inputs = tuple(call[n] for n in sarkp.DGMZVN.spec.inputs if n != "AAA")
+    out = {("DGMZVN", name): v for (_, name), v in prog_vi_7.emulate({"X": inputs}).items()}
+    pc = GEAR_CALLS["DGMZPC"]
+    with as_printed():
+        k = sarkp.DKRKT(**GEAR_CALLS["DKRKT"])
+    call = (pc["M"], pc["Z1"], pc["Z2"], pc["BETA"], k.X1, k.X2, pc["BW"])
+    rename = {"ALFAW": "ALFA", "XY": "XU"}               # the printed names
+    out.update((("DGMZPC", rename.get(name, name)), v)
+               for (_, name), v in prog_vi_6.emulate({"X": call}).items())
     return out
 
 
-def corrected_report(done: dict, stages) -> str:
-    """Where the corrected design differs from the book's run, and its checks."""
-    with sarkp.as_printed():
-        book = run([s for s in stages if s in STAGES])
-        cb = checks(book)
-    c = checks(done)
-    lines = ["CORRECTED DESIGN (sarkp --mode corrected) AGAINST THE BOOK'S RUN",
-             f"  {'quantity':40s} {'corrected':>12} {'book':>12}"]
-
-    def row(name, ours, theirs, unit="", why=""):
-        lines.append(f"  {name:40s} {ours:>12} {theirs:>12} {unit:6s} {why}")
-    if "synthesis" in done:
-        s, b = done["synthesis"], book["synthesis"]
-        row("FICD1, angle of CD in position 1", f"{s['FICD1']:.4f}", f"{b['FICD1']:.4f}",
-            "rad", "E-X-FICD1-1")
-        for n in ("ROA", "RAB", "ROC"):
-            row(n, f"{s[n]:.4f}", f"{b[n]:.4f}", "m", "E-X-LINKS-1")
-    if "teeth" in done:
-        found = sum(r is not None for _, r in done["teeth"]["variants"])
-        row("teeth: DZBPL variants with a set", f"{found} of 8",
-            f"{sum(r is not None for _, r in book['teeth']['variants'])} of 8", "",
-            "E-DZBPL-4, E-FIG86-2")
-    if "gears" in done:
-        for block, name in (("DKRKT", "ALFAW"), ("DGMZPC", "AW"), ("DGMZVN", "AW")):
-            row(f"gears: {block} {name}", f"{getattr(done['gears'][block][1], name):.4f}",
-                f"{getattr(book['gears'][block][1], name):.4f}", "", "E-DUGINV-1")
-    if "cam" in done:
-        row("cam: working angle PI - BETA", f"{done['cam']['FIU'] / 0.4:.6f}",
-            f"{book['cam']['FIU'] / 0.4:.6f}", "rad", "E-PI-1")
-        row("cam: base radius RKSH", f"{done['cam']['RKSH']:.6f}",
-            f"{book['cam']['RKSH']:.6f}", "m", "E-PI-1")
-    if "kinematics" in done:
-        row("slider stroke (card: 0.40)", f"{c['stroke']:.4f}", f"{cb['stroke']:.4f}", "m")
-        row("swing of link 3 (card: 0.698)", f"{c['swing']:.4f}", f"{cb['swing']:.4f}",
-            "rad")
-        row("K realized (card: 1.1)", f"{c['K_realized']:.4f}", f"{cb['K_realized']:.4f}")
-        row("working stroke (cam: 171.43 deg)", f"{c['working_stroke_deg']:.2f}",
-            f"{cb['working_stroke_deg']:.2f}", "deg")
-        k, kb = done["kinematics"], book["kinematics"]
-        for n in ("E3", "E4", "AE"):
-            row(f"largest |{n}|", f"{np.abs(k[n]).max():.4f}",
-                f"{np.abs(kb[n]).max():.4f}", "", "E-DUSKR1-1; E-X-W4")
-        for n in ("E2", "E3", "E4", "AE"):
-            key = next(x for x in c if x.startswith(n + "_vs"))
-            row(f"{key}, relative", f"{c[key]:.1e}", f"{cb[key]:.1e}", "",
-                "accelerations against numerical derivatives of the velocities")
-    if "forces" in done:
-        row("M1 w1 against the loads' power, relative", f"{c['virtual_work']:.1e}",
-            f"{cb['virtual_work']:.1e}", "", "virtual work")
-    if "dynamics" in done:
-        d, db = done["dynamics"], book["dynamics"]
-        row("flywheel delta (card: 0.02)", f"{d['DELTA']:.2f}", f"{db['DELTA']:.2f}", "",
-            "E-X-DELTA-1")
-        row("delta realized with the flywheel", f"{c['delta_realized']:.4f}",
-            f"{cb['delta_realized']:.4f}")
-        row("steady motion without the flywheel", "stalls" if d["STALLS"] else "yes",
-            "stalls" if db["STALLS"] else "printed", "", "E-DZKNDV-2")
-        row("IMH", f"{d['IMH']:.2f}", f"{db['IMH']:.2f}", "kg m2", "E-X-IPR-1; E-X-DELTA-1")
-        row("largest IPR", f"{d['IPR'].max():.2f}", f"{db['IPR'].max():.2f}", "kg m2",
-            "E-X-IPR-1")
-    return "\n".join(lines)
-
-
-# ---- pictures --------------------------------------------------------------------------------
-
-def plots(directory, stage: str | None = None) -> list:
-    """Write the drawing-sheet pictures of the stages run (``stage``, or every stage this
-    build can run) as PNG files in ``directory``; return their paths.  Needs matplotlib.
-
-    kinematics: the mechanism in its positions, the velocity and the acceleration
-    diagrams; cam: the profile with the flat follower, the radius of curvature; forces:
-    the hodographs of the joint reactions; dynamics: the energy and the crank's angular
-    speed without and with the flywheel."""
-    from pathlib import Path
-
-    from .. import plot
-
-    stages = [stage] if stage else [s for s in STAGES if available(s)]
-    done = run(stages)
-    directory = Path(directory)
-    directory.mkdir(parents=True, exist_ok=True)
-    mode = get_mode()
-    written = []
-
-    def save(figure, name):
-        path = directory / name
-        plot.save(figure, path)
-        written.append(path)
-    if "kinematics" in stages:
-        k, s = done["kinematics"], done["synthesis"]
-        pts = {"O": (0.0, 0.0), "A": (k["XA"], k["YA"]), "B": (k["XB"], k["YB"]),
-               "C": (k["XC"], k["YC"]), "D": (k["XD"], k["YD"]), "E": (k["XE"], k["YE"])}
-        save(plot.mechanism(pts, [("O", "A"), ("A", "B"), ("B", "C", "D"), ("D", "E")],
-                            fixed=("O", "C"), guide=float(k["YE"][0]), every=3,
-                            paths=("A", "E"),
-                            title=f"Program X ({mode}): the mechanism every 30° of the "
-                                  f"crank\nROA {s['ROA']:.3f} m, RAB {s['RAB']:.3f} m, "
-                                  f"ROC {s['ROC']:.3f} m"),
-             "x_mechanism.png")
-        vex = k["VE"] * np.cos(k["ALE"])
-        save(plot.diagrams(k["FI1"], [
-            ("angular velocity, rad/s", {"ω2": k["W2"], "ω3": k["W3"], "ω4": k["W4"]}),
-            ("velocity of E, m/s", {"v_E (along x)": vex})],
-            title=f"Program X: velocities, ω1 = {W1:g} rad/s ({mode})"), "x_velocities.png")
-        aex = k["AE"] * np.cos(k["BE"])
-        save(plot.diagrams(k["FI1"], [
-            ("angular acceleration, rad/s²", {"ε2": k["E2"], "ε3": k["E3"], "ε4": k["E4"]}),
-            ("acceleration of E, m/s²", {"a_E (along x)": aex})],
-            title=f"Program X: accelerations ({mode}"
-                  + ("; E3 with E-DUSKR1-1, E4 and a_E with E-X-W4)" if mode == "as-printed"
-                     else ")")), "x_accelerations.png")
-    if "cam" in stages:
-        c = done["cam"]
-        save(plot.cam_profile(c["X"], c["Y"], c["FIK"], follower="flat",
-                              base_radius=c["RKSH"],
-                              title=f"Program X ({mode}): flat-faced follower,"
-                                    f" r0 = {c['RKSH']:.4f} m\nradius of curvature < 0 at "
-                                    f"{int(np.sum(c['ROK'] < 0))} of {CAM_POINTS} points: "
-                                    f"not convex (E-DPRFPL-1)"), "x_cam_profile.png")
-        save(plot.cam_diagrams(c["FIK"], c["ROK"],
-                               title=f"Program X: radius of curvature of the cam ({mode})"),
-             "x_cam_curvature.png")
-    if "forces" in stages and hasattr(plot, "reaction_hodograph"):
-        f = done["forces"]
-        for name, label in (("21", "A (F21)"), ("23", "B (F23)"), ("30", "C (F30)"),
-                            ("43", "D (F43)")):
-            save(plot.reaction_hodograph(f["F" + name], f["G" + name],
-                                         label=f"reaction at {label}",
-                                         title=f"Program X ({mode}): reaction at "
-                                               f"{label}, N"),
-                 f"x_hodograph_{name}.png")
-    if "dynamics" in stages:
-        d = done["dynamics"]
-        save(plot.diagrams(d["FI1"], [
-            ("work and energy, J", {"ΣA (ASUM)": d["ASUM"], "E of the links (EV)": d["EV"],
-                                    "ΔE (DEC)": d["DEC"]}),
-            ("reduced moment of inertia, kg·m²", {"J_pr (IPR)": d["IPR"]})],
-            title=f"Program X ({mode}): work, energy and reduced inertia"), "x_energy.png")
-        panels = [] if d["STALLS"] else [
-            ("ω without flywheel, rad/s", {"ω1 (WPR)": d["WPR"]})]
-        panels.append(("ω with flywheel, rad/s", {"ω1 (WPRM)": d["WPRM"],
-                                                  "mean speed W1": np.full(len(d["FI1"]), W1)}))
-        save(plot.diagrams(d["FI1"], panels,
-                           title=f"Program X ({mode}): angular speed of the crank\n"
-                                 f"flywheel IMH = {d['IMH']:.1f} kg·m² for δ = {d['DELTA']:g}"
-                                 + ("\nwithout the flywheel the machine stalls (E-DZKNDV-2)"
-                                    if d["STALLS"] else "")), "x_omega.png")
-    return written
+def _cam_law_cells(law: dict) -> dict:
+    return {(str(k + 1), name): float(law[name][k])
+            for k in range(CAM_POINTS) for name in ("AT", "VT", "ST")}

@@ -41,7 +41,8 @@ C OCR: "(IX," -> "(1X,"
       RCB = RCD
       FICB1 = FICD1 + PI - (PID2 + DELTA)
       CALL DSNTZ1(SKW, FICB1, FICB1 + DELTA, RCB, 0.7, -1.0, 1.0, ROA,
-     *RAB, R)
+C OCR: "*RAB, R)" -> "*RAB, ROC)"
+     *RAB, ROC)
       R2 = RAB
       WRITE(3, 2) ROA, RAB, ROC
 2     FORMAT('ROA = ', F7.3,' RAB = ', F7.3,' ROC = ', F7.3//)

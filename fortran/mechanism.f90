@@ -1,0 +1,793 @@
+! mechanism.f90 -- a whole mechanism solved in one call (issue 19): the book's Assur-group
+! method (chapter 4 for the kinematics, chapter 7 for the forces, the student's main program
+! of chapter 10 carrying it out call by call) as an interpreter over the mechanism's list of
+! groups, run for every position in one loop.
+!
+! The description (built and checked by python/sarkp/mechanism.py):
+!   points 1..np  (joints, rigid points, centres of mass), each position kept as Cartesian x, y;
+!   links 0..nl   (0 the frame, 1 the crank), each with its direction's cosine and sine,
+!                 computed once per position from the points that define it;
+!   steps gi(:, k), gr(:, k), k = 1..ns, in order (gi(1, k) = the kind):
+!     0 crank   gi = 0, A, O, 1                       gr = r
+!     1 RRR     gi = 1, B, A, C, L2, L3, 0, 0         gr = l2, l3, branch, 1/l2, 1/l3
+!     2 RRP     gi = 2, B, A, K, L2, L3, LM           gr = l2, branch, cos, sin (guide angle
+!               on LM), offset, angle, 1/l2
+!     3 RPR     gi = 3, B, A, C, L2, L3               gr = h, branch
+!     4 PRP     gi = 4, B, A, C, L2, L3, LM, LN       gr = cos, sin (guide M), cos, sin (guide
+!               N), offset M, offset N
+!     5 RPP     gi = 5, K, A, C, L2, L3, LM           gr = cos, sin (guide M), cos, sin (slot T2)
+!     6 point   gi = 6, D, P, Q, L                    gr = dist, cos, sin of the angle from P->Q
+!               (Q = P: from the link's own direction)
+!   Branch +1: the new joint on the left of A->C (kinds 1, 3), ahead along the guide of the
+!   foot of the perpendicular from A (kind 2); kinds 4, 5 have one position.
+!
+! Kinematics in position analogues: the crank turns at d(phi)/dt = 1, so each point carries
+! x, x' = dx/dphi, x'' = d2x/dphi2 and each link theta, w' , e''; the velocities asked for
+! are x' omega and the accelerations x'' omega**2 + x' epsilon (the same for the links).
+! Each group's velocities and accelerations are one 2x2 system with one matrix, GELG's
+! elimination done once (numerics' factor2, solve2f: the kernel and error estimate of
+! DKNMA1), positions by numerics' tri_apex / apex_vectors (kind 1), solve2e (kinds 4, 5).
+! The dead-centre policy of kinematics.f90 decides each position's status (policy): the
+! estimate is the largest over the groups.
+!
+! Forces (need = 4), in reverse order of the groups (chapter 7): each link's load is gathered
+! as a force and a moment about its first point (gravity, inertia -m a_S and -J_S eps,
+! external forces, torques, springs, and the reactions of the groups already solved); each
+! group's six equilibrium equations (forces and moment of its two links) give its three
+! pairs' reactions: a revolute (fx, fy), a slider (the normal force and the couple).  The
+! crank's moment about O gives the balancing moment.  J_red = sum (m v_S'**2 + J w'**2),
+! M_red = sum (F . v' + M w') over the external loads (no inertia).
+module mechanism
+  use prmtr, only: dp, st_ok, st_assembly, st_singular, st_range, st_digits, norm2d
+  use numerics, only: uround, system2, cramer_set, cramer, solve2e, tri_apex, apex_vectors, &
+                      unscale, angle_sensitivity, policy, failed
+  implicit none
+  private
+  public :: mech_solve
+
+contains
+
+  ! One call for all positions.  need: 1 positions, 2 velocities, 3 accelerations, 4 forces.
+  ! Outputs whose level is not asked for are not touched (the caller passes 1-long arrays).
+  ! status(i): the worst of the groups (prmtr codes, 100 + d = d digits left), fgroup(i) the
+  ! first step that failed or lost digits (0: none).
+  subroutine mech_solve(need, n, np, nl, ns, gi, gr, phi, omega, epsil, inc_w, inc_e, &
+                        nm, mlink, mpoint, mval, gravity, &
+                        nf, fpoint, flink, nfv, fval, nt, tlink, ntv, tval, &
+                        nsp, spp, spl, spv, npair, powner, lbase, x0, nop, outp, nol, outl, &
+                        nv, na, nr, pos, vel, acc, th, om, ep, react, mbal, jred, mred, &
+                        status, fgroup)
+    !f2py threadsafe
+    integer, intent(in) :: need, n, np, nl, ns, nm, nf, nfv, nt, ntv, nsp, npair, nv, na, nr
+    integer, intent(in) :: inc_w, inc_e, nop, nol, outp(nop), outl(nol)
+    integer, intent(in) :: gi(8, ns)
+    real(dp), intent(in) :: gr(8, ns), phi(n), omega(*), epsil(*)
+    integer, intent(in) :: powner(np), lbase(0:nl)
+    real(dp), intent(in) :: x0(2, np)
+    integer, intent(in) :: mlink(nm), mpoint(nm)
+    real(dp), intent(in) :: mval(2, nm), gravity
+    integer, intent(in) :: fpoint(nf), flink(nf)
+    real(dp), intent(in) :: fval(2, nf, nfv)
+    integer, intent(in) :: tlink(nt)
+    real(dp), intent(in) :: tval(nt, ntv)
+    integer, intent(in) :: spp(2, nsp), spl(2, nsp)
+    real(dp), intent(in) :: spv(2, nsp)
+    real(dp), intent(inout) :: pos(2, nop, n), vel(2, nop, nv), acc(2, nop, na)
+    real(dp), intent(inout) :: th(2, nol, n), om(nol, nv), ep(nol, na)
+    real(dp), intent(inout) :: react(3, npair, nr), mbal(nr), jred(nv), mred(nr)
+    integer, intent(inout) :: status(n), fgroup(n)
+    ! work arrays of one position (allocated once per call, none per group)
+    real(dp), allocatable :: x(:, :), v(:, :), a(:, :), c(:), s(:), w(:), e(:)
+    real(dp), allocatable :: fl(:, :), ml(:), aa(:, :), ee(:)
+    integer, allocatable :: gslot(:)
+    integer :: i, k, kind, st, worst, jf, jt, fg, g
+    real(dp) :: est, maxest, wi, ei
+
+    allocate(x(2, np), v(2, np), a(2, np), c(0:nl), s(0:nl), w(0:nl), e(0:nl))
+    allocate(fl(2, 0:nl), ml(0:nl), aa(2, np), ee(0:nl))
+    x = x0; v = 0.0_dp; a = 0.0_dp
+    c = 1.0_dp; s = 0.0_dp; w = 0.0_dp; e = 0.0_dp
+    ! the reaction slots of the groups: 1 the crank's O, then three per group in order
+    allocate(gslot(ns))
+    g = 0
+    do k = 1, ns
+      gslot(k) = 0
+      if (gi(1, k) >= 1 .and. gi(1, k) <= 5) then
+        gslot(k) = 2 + 3*g
+        g = g + 1
+      end if
+    end do
+    wi = 0.0_dp
+    do i = 1, n
+      worst = st_ok
+      fg = 0
+      maxest = 0.0_dp
+      do k = 1, ns
+        kind = gi(1, k)
+        call step(k, kind, i, st, est)
+        if (failed(st)) then
+          worst = st
+          fg = k
+          exit
+        end if
+        if (est > maxest .or. .not. est <= huge(est)) then
+          maxest = est
+          fg = k
+        end if
+      end do
+      if (.not. failed(worst)) then
+        worst = policy(maxest)
+        if (worst == st_ok) fg = 0
+      end if
+      if (failed(worst)) then
+        status(i) = worst
+        fgroup(i) = fg
+        cycle
+      end if
+      do k = 1, nop
+        if (.not. (abs(x(1, outp(k))) <= huge(1.0_dp) .and. &
+                   abs(x(2, outp(k))) <= huge(1.0_dp))) then
+          worst = st_range
+          fg = 0
+        end if
+      end do
+      status(i) = worst
+      fgroup(i) = fg
+      if (worst == st_range) cycle
+      ! the outputs: the moving points and links only (the caller knows the frame's)
+      do k = 1, nop
+        pos(:, k, i) = x(:, outp(k))
+      end do
+      do k = 1, nol
+        th(1, k, i) = c(outl(k))
+        th(2, k, i) = s(outl(k))
+      end do
+      if (need >= 2) then
+        wi = omega(1 + (i - 1)*inc_w)
+        do k = 1, nop
+          vel(:, k, i) = v(:, outp(k))*wi
+        end do
+        do k = 1, nol
+          om(k, i) = w(outl(k))*wi
+        end do
+        jred(i) = reduced_inertia()
+      end if
+      if (need >= 3) then
+        ei = epsil(1 + (i - 1)*inc_e)
+        if (need >= 4) then
+          aa = a*(wi*wi) + v*ei
+          ee = e*(wi*wi) + w*ei
+        end if
+        do k = 1, nop
+          acc(:, k, i) = a(:, outp(k))*(wi*wi) + v(:, outp(k))*ei
+        end do
+        do k = 1, nol
+          ep(k, i) = e(outl(k))*(wi*wi) + w(outl(k))*ei
+        end do
+      end if
+      if (need >= 4) call forces(i)
+    end do
+    deallocate(x, v, a, c, s, w, e, fl, ml, aa, ee, gslot)
+
+  contains
+
+    ! ------------------------------------------------------------------ kinematics
+
+    ! A link's direction (cosine cl, sine sl): the angle itself is not computed here (the
+    ! Python layer takes it, continuous along the sweep, only for the links asked for)
+    subroutine set_link(l, cl, sl)
+      integer, intent(in) :: l
+      real(dp), intent(in) :: cl, sl
+      c(l) = cl
+      s(l) = sl
+    end subroutine set_link
+
+    ! velocity analogue of a point X moving with link l, whose point p is known:
+    ! v'_p + w'_l k x (X - p); acceleration analogue a''_p + e''_l k x (X - p) - w'^2 (X - p)
+    pure subroutine carried(l, p, xx, vx, ax)
+      integer, intent(in) :: l, p
+      real(dp), intent(in) :: xx(2)
+      real(dp), intent(out) :: vx(2), ax(2)
+      real(dp) :: r(2)
+      r = xx - x(:, p)
+      if (l == 0) then
+        vx = 0.0_dp
+        ax = 0.0_dp
+        return
+      end if
+      vx = v(:, p) + w(l)*[-r(2), r(1)]
+      ax = a(:, p) + e(l)*[-r(2), r(1)] - w(l)**2*r
+    end subroutine carried
+
+    subroutine step(k, kind, i, st, est)
+      integer, intent(in) :: k, kind, i
+      integer, intent(out) :: st
+      real(dp), intent(out) :: est
+      select case (kind)
+      case (0)
+        call crank(k, i, st, est)
+      case (1)
+        call rrr(k, st, est)
+      case (2)
+        call rrp(k, st, est)
+      case (3)
+        call rpr(k, st, est)
+      case (4)
+        call prp(k, st, est)
+      case (5)
+        call rpp(k, st, est)
+      case default
+        call rigid(k, st, est)
+      end select
+    end subroutine step
+
+    subroutine crank(k, i, st, est)
+      integer, intent(in) :: k, i
+      integer, intent(out) :: st
+      real(dp), intent(out) :: est
+      integer :: pa, po
+      real(dp) :: r, cp, sp
+      pa = gi(2, k); po = gi(3, k)
+      r = gr(1, k)
+      cp = cos(phi(i))
+      sp = sin(phi(i))
+      x(:, pa) = x(:, po) + r*[cp, sp]
+      c(1) = cp; s(1) = sp
+      w(1) = 1.0_dp
+      e(1) = 0.0_dp
+      v(:, pa) = r*[-sp, cp]
+      a(:, pa) = -r*[cp, sp]
+      st = st_ok
+      est = 0.0_dp
+    end subroutine crank
+
+    ! kind 1 (RRR, DPRM1/DKNMA1): B at l2 from A, l3 from C
+    subroutine rrr(k, st, est)
+      integer, intent(in) :: k
+      integer, intent(out) :: st
+      real(dp), intent(out) :: est
+      integer :: pb, pa, pc, l2, l3, ex
+      real(dp) :: dx, dy, d, pr, h, pq, dang, r2(2), r3(2), len2, len3, y1, y2, rel, sb
+      type(system2) :: f
+      pb = gi(2, k); pa = gi(3, k); pc = gi(4, k); l2 = gi(5, k); l3 = gi(6, k)
+      len2 = gr(1, k); len3 = gr(2, k)
+      dx = x(1, pc) - x(1, pa)
+      dy = x(2, pc) - x(2, pa)
+      d = norm2d(dx, dy)
+      est = 0.0_dp
+      if (d == 0.0_dp) then
+        st = st_singular
+        if (len2 /= len3) st = st_assembly
+        return
+      end if
+      call tri_apex(d, len2, len3, pr, h, pq, ex, dang, st)
+      if (failed(st)) return
+      call apex_vectors(dx, dy, d, pr, h, pq, gr(3, k), r2(1), r2(2), r3(1), r3(2))
+      r2 = [unscale(r2(1), ex), unscale(r2(2), ex)]
+      r3 = [unscale(r3(1), ex), unscale(r3(2), ex)]
+      x(:, pb) = x(:, pa) + r2
+      call set_link(l2, r2(1)*gr(4, k), r2(2)*gr(4, k))      ! gr(4:5) = 1/l2, 1/l3
+      call set_link(l3, r3(1)*gr(5, k), r3(2)*gr(5, k))
+      est = dang
+      if (need < 2) return
+      ! v_A + w2 k x r2 = v_C + w3 k x r3
+      call cramer_set(-r2(2), r3(2), r2(1), -r3(1), f)
+      sb = abs(v(1, pa)) + abs(v(2, pa)) + abs(v(1, pc)) + abs(v(2, pc))
+      call cramer(f, v(1, pc) - v(1, pa), v(2, pc) - v(2, pa), dang, 4.0_dp*uround*sb, sb, &
+                   y1, y2, st, rel)
+      if (failed(st)) return
+      est = max(est, rel)
+      w(l2) = y1
+      w(l3) = y2
+      v(:, pb) = v(:, pa) + y1*[-r2(2), r2(1)]
+      if (need < 3) return
+      call cramer(f, a(1, pc) - a(1, pa) - y2**2*r3(1) + y1**2*r2(1), &
+                   a(2, pc) - a(2, pa) - y2**2*r3(2) + y1**2*r2(2), dang, &
+                   4.0_dp*uround*(sb + y1**2*len2 + y2**2*len3), sb, y1, y2, st, rel)
+      if (failed(st)) return
+      est = max(est, rel)
+      e(l2) = y1
+      e(l3) = y2
+      a(:, pb) = a(:, pa) + y1*[-r2(2), r2(1)] - w(l2)**2*r2
+    end subroutine rrr
+
+    ! the guide of kind 2, 4, 5: through point p of link l, direction (cg, sg) turned by
+    ! the link's direction: unit vector u
+    pure function guide(l, cg, sg) result(u)
+      integer, intent(in) :: l
+      real(dp), intent(in) :: cg, sg
+      real(dp) :: u(2)
+      u = [c(l)*cg - s(l)*sg, s(l)*cg + c(l)*sg]
+    end function guide
+
+    ! kind 2 (RRP, DPRM2/DKNMA2): B on the guide through K (link LM), rod A-B of length l2
+    subroutine rrp(k, st, est)
+      integer, intent(in) :: k
+      integer, intent(out) :: st
+      real(dp), intent(out) :: est
+      integer :: pb, pa, pk, l2, l3, lm
+      real(dp) :: u(2), nn(2), wv(2), along, perp, off, len2, cq, root, sl, r2(2), dc
+      real(dp) :: vg(2), ag(2), y1, y2, rel, sb
+      type(system2) :: f
+      pb = gi(2, k); pa = gi(3, k); pk = gi(4, k); l2 = gi(5, k); l3 = gi(6, k); lm = gi(7, k)
+      len2 = gr(1, k); off = gr(5, k)
+      u = guide(lm, gr(3, k), gr(4, k))
+      nn = [-u(2), u(1)]
+      wv = x(:, pa) - x(:, pk)
+      along = wv(1)*u(1) + wv(2)*u(2)
+      perp = wv(1)*nn(1) + wv(2)*nn(2) - off
+      cq = perp/len2
+      est = 0.0_dp
+      if (abs(cq) > 1.0_dp) then
+        if (abs(cq) - 1.0_dp > 8.0_dp*epsilon(1.0_dp)) then
+          st = st_assembly
+          return
+        end if
+        cq = sign(1.0_dp, cq)
+      end if
+      root = len2*sqrt((1.0_dp - cq)*(1.0_dp + cq))
+      sl = along + gr(2, k)*root
+      x(:, pb) = x(:, pk) + sl*u + off*nn
+      r2 = x(:, pb) - x(:, pa)
+      call set_link(l2, r2(1)*gr(7, k), r2(2)*gr(7, k))      ! gr(7) = 1/l2
+      call set_link(l3, u(1), u(2))
+      dc = 4.0_dp*uround*(abs(perp) + abs(off) + len2 + abs(wv(1)) + abs(wv(2)))/len2
+      est = angle_sensitivity(cq, dc)
+      st = st_ok
+      if (need < 2) return
+      ! v_A + w2 k x r2 = v_G(B) + s' u
+      call carried(lm, pk, x(:, pb), vg, ag)
+      call cramer_set(-r2(2), -u(1), r2(1), -u(2), f)
+      sb = abs(v(1, pa)) + abs(v(2, pa)) + abs(vg(1)) + abs(vg(2))
+      call cramer(f, vg(1) - v(1, pa), vg(2) - v(2, pa), est + 4.0_dp*uround, &
+                   4.0_dp*uround*sb, sb, y1, y2, st, rel)
+      if (failed(st)) return
+      est = max(est, rel)
+      w(l2) = y1
+      w(l3) = w(lm)
+      v(:, pb) = v(:, pa) + y1*[-r2(2), r2(1)]
+      if (need < 3) return
+      ag = ag + 2.0_dp*w(lm)*y2*nn - a(:, pa) + y1**2*r2
+      call cramer(f, ag(1), ag(2), est + 4.0_dp*uround, &
+                   4.0_dp*uround*(sb + y1**2*len2), sb, y1, y2, st, rel)
+      if (failed(st)) return
+      est = max(est, rel)
+      e(l2) = y1
+      e(l3) = e(lm)
+      a(:, pb) = a(:, pa) + y1*[-r2(2), r2(1)] - w(l2)**2*r2
+    end subroutine rrp
+
+    ! kind 3 (RPR, DPRM3/DKNMA3): slider 2 pivoted at A slides along link 3 through C, A at
+    ! h from its axis; B = the foot of the perpendicular from A on the axis
+    subroutine rpr(k, st, est)
+      integer, intent(in) :: k
+      integer, intent(out) :: st
+      real(dp), intent(out) :: est
+      integer :: pb, pa, pc, l2, l3
+      real(dp) :: dx, dy, d, h, sq, cq, u(2), nn(2), fb(2), e3(2), n3(2), sl, ds
+      real(dp) :: rac(2), y1, y2, rel, sb, sd
+      type(system2) :: f
+      pb = gi(2, k); pa = gi(3, k); pc = gi(4, k); l2 = gi(5, k); l3 = gi(6, k)
+      h = abs(gr(1, k))
+      dx = x(1, pc) - x(1, pa)
+      dy = x(2, pc) - x(2, pa)
+      d = norm2d(dx, dy)
+      est = 0.0_dp
+      if (d == 0.0_dp) then
+        st = st_singular
+        return
+      end if
+      sq = h/d
+      if (sq > 1.0_dp) then
+        if (sq - 1.0_dp > 8.0_dp*epsilon(1.0_dp)) then
+          st = st_assembly
+          return
+        end if
+        sq = 1.0_dp
+      end if
+      cq = sqrt((1.0_dp - sq)*(1.0_dp + sq))
+      u = [dx, dy]/d
+      nn = [-u(2), u(1)]
+      fb = (h*sq)*u + (gr(2, k)*h*cq)*nn          ! B - A (Thales: on the circle over AC)
+      x(:, pb) = x(:, pa) + fb
+      sl = d*cq                                    ! |B - C|
+      if (sl == 0.0_dp) then
+        st = st_singular
+        return
+      end if
+      e3 = (x(:, pb) - x(:, pc))/sl
+      n3 = [-e3(2), e3(1)]
+      call set_link(l3, e3(1), e3(2))
+      call set_link(l2, e3(1), e3(2))
+      ds = 4.0_dp*uround*(1.0_dp + sq)
+      est = angle_sensitivity(sq, ds)
+      st = st_ok
+      if (need < 2) return
+      ! v_A = v_C + w3 k x (A - C) + s' e3
+      rac = x(:, pa) - x(:, pc)
+      call cramer_set(-rac(2), e3(1), rac(1), e3(2), f)
+      sb = abs(v(1, pa)) + abs(v(2, pa)) + abs(v(1, pc)) + abs(v(2, pc))
+      call cramer(f, v(1, pa) - v(1, pc), v(2, pa) - v(2, pc), est + 4.0_dp*uround, &
+                   4.0_dp*uround*sb, sb, y1, y2, st, rel)
+      if (failed(st)) return
+      est = max(est, rel)
+      w(l3) = y1
+      w(l2) = y1
+      sd = y2
+      v(:, pb) = v(:, pc) + y1*sl*n3 + sd*e3
+      if (need < 3) return
+      call cramer(f, a(1, pa) - a(1, pc) + y1**2*rac(1) - 2.0_dp*y1*sd*n3(1), &
+                   a(2, pa) - a(2, pc) + y1**2*rac(2) - 2.0_dp*y1*sd*n3(2), &
+                   est + 4.0_dp*uround, 4.0_dp*uround*(sb + y1**2*d + abs(y1*sd)), sb, &
+                   y1, y2, st, rel)
+      if (failed(st)) return
+      est = max(est, rel)
+      e(l3) = y1
+      e(l2) = y1
+      a(:, pb) = a(:, pc) + y1*sl*n3 - w(l3)**2*sl*e3 + y2*e3 + 2.0_dp*w(l3)*sd*n3
+    end subroutine rpr
+
+    ! kind 4 (PRP, DPRM4/DKNMA4): B at the offsets from the guides through A (link LM) and
+    ! C (link LN)
+    subroutine prp(k, st, est)
+      integer, intent(in) :: k
+      integer, intent(out) :: st
+      real(dp), intent(out) :: est
+      integer :: pb, pa, pc, l2, l3, lm, ln
+      real(dp) :: um(2), un(2), nm_(2), nn(2), dca(2), bx, by, sb, rel
+      real(dp) :: vgm(2), agm(2), vgn(2), agn(2), y1, y2, s2, s3
+      type(system2) :: f
+      pb = gi(2, k); pa = gi(3, k); pc = gi(4, k); l2 = gi(5, k); l3 = gi(6, k)
+      lm = gi(7, k); ln = gi(8, k)
+      um = guide(lm, gr(1, k), gr(2, k))
+      un = guide(ln, gr(3, k), gr(4, k))
+      nm_ = [-um(2), um(1)]
+      nn = [-un(2), un(1)]
+      dca = x(:, pc) - x(:, pa)
+      ! nM . (B - A) = offM,  nN . (B - A) = offN + nN . (C - A)
+      sb = abs(gr(5, k)) + abs(gr(6, k)) + abs(dca(1)) + abs(dca(2))
+      call solve2e(nm_(1), nm_(2), nn(1), nn(2), gr(5, k), gr(6, k) + nn(1)*dca(1) + nn(2)*dca(2), &
+                   4.0_dp*uround, 4.0_dp*uround*sb, sb, bx, by, st, est)
+      if (failed(st)) return
+      x(:, pb) = x(:, pa) + [bx, by]
+      call set_link(l2, um(1), um(2))
+      call set_link(l3, un(1), un(2))
+      if (need < 2) return
+      call carried(lm, pa, x(:, pb), vgm, agm)
+      call carried(ln, pc, x(:, pb), vgn, agn)
+      call cramer_set(um(1), -un(1), um(2), -un(2), f)
+      sb = abs(vgm(1)) + abs(vgm(2)) + abs(vgn(1)) + abs(vgn(2))
+      call cramer(f, vgn(1) - vgm(1), vgn(2) - vgm(2), est + 4.0_dp*uround, &
+                   4.0_dp*uround*sb, sb, s2, s3, st, rel)
+      if (failed(st)) return
+      est = max(est, rel)
+      w(l2) = w(lm)
+      w(l3) = w(ln)
+      v(:, pb) = vgm + s2*um
+      if (need < 3) return
+      call cramer(f, agn(1) + 2.0_dp*w(ln)*s3*nn(1) - agm(1) - 2.0_dp*w(lm)*s2*nm_(1), &
+                   agn(2) + 2.0_dp*w(ln)*s3*nn(2) - agm(2) - 2.0_dp*w(lm)*s2*nm_(2), &
+                   est + 4.0_dp*uround, 4.0_dp*uround*(sb + abs(w(ln)*s3) + abs(w(lm)*s2)), &
+                   sb, y1, y2, st, rel)
+      if (failed(st)) return
+      est = max(est, rel)
+      e(l2) = e(lm)
+      e(l3) = e(ln)
+      a(:, pb) = agm + y1*um + 2.0_dp*w(lm)*s2*nm_
+    end subroutine prp
+
+    ! kind 5 (RPP, DPRM5/DKNMA5): link 2 slides on the guide through A (link LM), block 3
+    ! pivoted at C slides in link 2 along the guide's direction + T2; K = where the slot
+    ! axis meets the guide axis
+    subroutine rpp(k, st, est)
+      integer, intent(in) :: k
+      integer, intent(out) :: st
+      real(dp), intent(out) :: est
+      integer :: pk, pa, pc, l2, l3, lm
+      real(dp) :: um(2), us(2), nm_(2), ns_(2), dca(2), s2, s3, sb, rel
+      real(dp) :: vgc(2), agc(2), vgk(2), agk(2), y1, y2, d2, d3
+      type(system2) :: f
+      pk = gi(2, k); pa = gi(3, k); pc = gi(4, k); l2 = gi(5, k); l3 = gi(6, k); lm = gi(7, k)
+      um = guide(lm, gr(1, k), gr(2, k))
+      us = [um(1)*gr(3, k) - um(2)*gr(4, k), um(2)*gr(3, k) + um(1)*gr(4, k)]
+      nm_ = [-um(2), um(1)]
+      ns_ = [-us(2), us(1)]
+      dca = x(:, pc) - x(:, pa)
+      sb = abs(dca(1)) + abs(dca(2))
+      call solve2e(um(1), us(1), um(2), us(2), dca(1), dca(2), 4.0_dp*uround, &
+                   4.0_dp*uround*sb, sb, s2, s3, st, est)
+      if (failed(st)) return
+      x(:, pk) = x(:, pa) + s2*um
+      call set_link(l2, um(1), um(2))
+      call set_link(l3, us(1), us(2))
+      if (need < 2) return
+      call carried(lm, pa, x(:, pc), vgc, agc)
+      call carried(lm, pa, x(:, pk), vgk, agk)
+      call cramer_set(um(1), us(1), um(2), us(2), f)
+      sb = abs(v(1, pc)) + abs(v(2, pc)) + abs(vgc(1)) + abs(vgc(2))
+      call cramer(f, v(1, pc) - vgc(1), v(2, pc) - vgc(2), est + 4.0_dp*uround, &
+                   4.0_dp*uround*sb, sb, d2, d3, st, rel)
+      if (failed(st)) return
+      est = max(est, rel)
+      w(l2) = w(lm)
+      w(l3) = w(lm)
+      v(:, pk) = vgk + d2*um
+      if (need < 3) return
+      call cramer(f, a(1, pc) - agc(1) - 2.0_dp*w(lm)*(d2*nm_(1) + d3*ns_(1)), &
+                   a(2, pc) - agc(2) - 2.0_dp*w(lm)*(d2*nm_(2) + d3*ns_(2)), &
+                   est + 4.0_dp*uround, 4.0_dp*uround*(sb + abs(w(lm))*(abs(d2) + abs(d3))), &
+                   sb, y1, y2, st, rel)
+      if (failed(st)) return
+      est = max(est, rel)
+      e(l2) = e(lm)
+      e(l3) = e(lm)
+      a(:, pk) = agk + y1*um + 2.0_dp*w(lm)*d2*nm_
+    end subroutine rpp
+
+    ! a point rigidly on link L: D = P + dist * (the direction P->Q turned by the angle)
+    subroutine rigid(k, st, est)
+      integer, intent(in) :: k
+      integer, intent(out) :: st
+      real(dp), intent(out) :: est
+      integer :: pd, pp, pq, l
+      real(dp) :: dq(2), dn, u(2), vx(2), ax(2)
+      pd = gi(2, k); pp = gi(3, k); pq = gi(4, k); l = gi(5, k)
+      est = 0.0_dp
+      st = st_ok
+      if (pq == pp) then
+        u = [c(l), s(l)]                           ! along the link's own direction
+      else
+        dq = x(:, pq) - x(:, pp)
+        dn = norm2d(dq(1), dq(2))
+        if (dn == 0.0_dp) then
+          st = st_singular
+          return
+        end if
+        u = dq/dn
+      end if
+      x(:, pd) = x(:, pp) + gr(1, k)*[u(1)*gr(2, k) - u(2)*gr(3, k), u(2)*gr(2, k) + u(1)*gr(3, k)]
+      if (need < 2) return
+      call carried(l, pp, x(:, pd), vx, ax)
+      v(:, pd) = vx
+      a(:, pd) = ax
+    end subroutine rigid
+
+    ! ------------------------------------------------------------------ dynamics
+
+    real(dp) function reduced_inertia()
+      integer :: j, p, l
+      reduced_inertia = 0.0_dp
+      do j = 1, nm
+        p = mpoint(j); l = mlink(j)
+        reduced_inertia = reduced_inertia + mval(1, j)*(v(1, p)**2 + v(2, p)**2) &
+                          + mval(2, j)*w(l)**2
+      end do
+    end function reduced_inertia
+
+    ! load f at point p on link l: into the link's resultant and moment about its first point
+    subroutine load(l, p, fx, fy)
+      integer, intent(in) :: l, p
+      real(dp), intent(in) :: fx, fy
+      integer :: b
+      b = base(l)
+      fl(1, l) = fl(1, l) + fx
+      fl(2, l) = fl(2, l) + fy
+      ml(l) = ml(l) + (x(1, p) - x(1, b))*fy - (x(2, p) - x(2, b))*fx
+    end subroutine load
+
+    subroutine forces(i)
+      integer, intent(in) :: i
+      integer :: j, p, l, q, k
+      real(dp) :: fx, fy, mr, dl(2), dn, ff
+      fl = 0.0_dp
+      ml = 0.0_dp
+      mr = 0.0_dp
+      do j = 1, nm
+        p = mpoint(j); l = mlink(j)
+        fx = -mval(1, j)*aa(1, p)
+        fy = -mval(1, j)*(aa(2, p) + gravity)
+        call load(l, p, fx, fy)
+        ml(l) = ml(l) - mval(2, j)*ee(l)
+        mr = mr - mval(1, j)*gravity*v(2, p)
+      end do
+      jf = 1 + (i - 1)*min(nfv - 1, 1)
+      do j = 1, nf
+        p = fpoint(j); l = flink(j)
+        call load(l, p, fval(1, j, jf), fval(2, j, jf))
+        mr = mr + fval(1, j, jf)*v(1, p) + fval(2, j, jf)*v(2, p)
+      end do
+      jt = 1 + (i - 1)*min(ntv - 1, 1)
+      do j = 1, nt
+        l = tlink(j)
+        ml(l) = ml(l) + tval(j, jt)
+        mr = mr + tval(j, jt)*w(l)
+      end do
+      do j = 1, nsp
+        p = spp(1, j); q = spp(2, j)
+        dl = x(:, q) - x(:, p)
+        dn = norm2d(dl(1), dl(2))
+        if (dn == 0.0_dp) cycle
+        ff = spv(1, j)*(dn - spv(2, j))           ! tension > 0 pulls P towards Q
+        dl = dl/dn
+        call load(spl(1, j), p, ff*dl(1), ff*dl(2))
+        call load(spl(2, j), q, -ff*dl(1), -ff*dl(2))
+        mr = mr + ff*(dl(1)*(v(1, p) - v(1, q)) + dl(2)*(v(2, p) - v(2, q)))
+      end do
+      mred(i) = mr
+      ! the groups in reverse order (chapter 7)
+      do k = ns, 1, -1
+        if (gslot(k) > 0) call group_forces(k, gi(1, k), gslot(k), i)
+      end do
+      ! the crank (link 1), its loads gathered about O: M_b + M_1 = 0, the frame's
+      ! reaction on it -F_1
+      react(:, 1, i) = [-fl(1, 1), -fl(2, 1), 0.0_dp]
+      mbal(i) = -ml(1)
+    end subroutine forces
+
+    integer function base(l)
+      integer, intent(in) :: l
+      base = lbase(l)
+    end function base
+
+    integer function owner(p)
+      integer, intent(in) :: p
+      owner = powner(p)
+    end function owner
+
+    ! One group's reactions (the chapter 7 method): its six equilibrium equations (forces
+    ! and moment of link 2, of link 3) in the reactions of its three pairs -- 1 (the
+    ! outside on link 2), 2 (link 2 on link 3), 3 (the outside on link 3); a revolute's
+    ! unknowns are the force (fx, fy) at its joint, a slider's the normal force N (along its
+    ! sliding direction turned by +pi/2) and the couple C.  Pair 1 drops out of one
+    ! equation of link 2 (a revolute: the moment about its joint; a slider: the forces
+    ! along its direction), pair 3 out of one of link 3: two equations in pair 2's two
+    ! unknowns (numerics' Cramer kernel), then pairs 1 and 3 from the rest.
+    subroutine group_forces(k, kind, slot, i)
+      integer, intent(in) :: k, kind, slot, i
+      integer :: pt(3), ty(3), frl(3), l2, l3, j, st
+      real(dp) :: dir(2, 3), n2(2), a(2, 2), b(2), z(2), rel, r(2), c2, d(2), f(2), cp
+      real(dp) :: out(3, 3), mp
+      type(system2) :: sys
+      l2 = gi(5, k); l3 = gi(6, k)
+      call pairs(k, kind, pt, ty, dir, frl)
+      n2 = [-dir(2, 2), dir(1, 2)]
+      ! pair 2 as unknowns z: R = (z1, z2), C = 0 (revolute) or R = z1 n2, C = z2 (slider)
+      ! row 1: link 2 without pair 1
+      if (ty(1) == 0) then
+        d = x(:, pt(2)) - x(:, pt(1))           ! -(d x R) - C = -M2(about P1)
+        call coefficients(d(2), -d(1), -1.0_dp, ty(2), n2, a(1, :))
+        b(1) = -moment_about(l2, pt(1))
+      else
+        call coefficients(-dir(1, 1), -dir(2, 1), 0.0_dp, ty(2), n2, a(1, :))  ! -R.u1 = -F2.u1
+        b(1) = -(fl(1, l2)*dir(1, 1) + fl(2, l2)*dir(2, 1))
+      end if
+      ! row 2: link 3 without pair 3
+      if (ty(3) == 0) then
+        d = x(:, pt(2)) - x(:, pt(3))           ! d x R + C = -M3(about P3)
+        call coefficients(-d(2), d(1), 1.0_dp, ty(2), n2, a(2, :))
+        b(2) = -moment_about(l3, pt(3))
+      else
+        call coefficients(dir(1, 3), dir(2, 3), 0.0_dp, ty(2), n2, a(2, :))    ! R.u3 = -F3.u3
+        b(2) = -(fl(1, l3)*dir(1, 3) + fl(2, l3)*dir(2, 3))
+      end if
+      call cramer_set(a(1, 1), a(1, 2), a(2, 1), a(2, 2), sys)
+      call cramer(sys, b(1), b(2), 0.0_dp, 0.0_dp, 0.0_dp, z(1), z(2), st, rel)
+      if (st /= st_ok) then
+        status(i) = st
+        fgroup(i) = k
+      end if
+      if (ty(2) == 0) then
+        r = z
+        c2 = 0.0_dp
+      else
+        r = z(1)*n2
+        c2 = z(2)
+      end if
+      out(:, 2) = [r(1), r(2), c2]
+      ! pair 1: F2 + f1 - R = 0 (and, a slider, its couple from the moment about P1)
+      f = r - fl(:, l2)
+      if (ty(1) == 0) then
+        out(:, 1) = [f(1), f(2), 0.0_dp]
+      else
+        call normal(f, dir(:, 1), out(:, 1))
+        d = x(:, pt(2)) - x(:, pt(1))
+        mp = moment_about(l2, pt(1))
+        out(3, 1) = -mp + (d(1)*r(2) - d(2)*r(1)) + c2
+      end if
+      ! pair 3: F3 + R + f3 = 0
+      f = -r - fl(:, l3)
+      if (ty(3) == 0) then
+        out(:, 3) = [f(1), f(2), 0.0_dp]
+      else
+        call normal(f, dir(:, 3), out(:, 3))
+        d = x(:, pt(2)) - x(:, pt(3))
+        mp = moment_about(l3, pt(3))
+        out(3, 3) = -mp - (d(1)*r(2) - d(2)*r(1)) - c2
+      end if
+      do j = 1, 3
+        react(:, slot + j - 1, i) = out(:, j)
+        if (j /= 2 .and. frl(j) > 0) then
+          cp = out(3, j)
+          call load(frl(j), pt(j), -out(1, j), -out(2, j))   ! the outside bears the opposite
+          ml(frl(j)) = ml(frl(j)) - cp
+        end if
+      end do
+
+    end subroutine group_forces
+
+    ! the coefficients of pair 2's unknowns in one equation: (cx, cy) multiply R (a
+    ! revolute's two unknowns; a slider's N through R = N n2) and cc its couple C
+    pure subroutine coefficients(cx, cy, cc, t2, n2, row)
+      real(dp), intent(in) :: cx, cy, cc, n2(2)
+      integer, intent(in) :: t2
+      real(dp), intent(out) :: row(2)
+      if (t2 == 0) then
+        row = [cx, cy]
+      else
+        row = [cx*n2(1) + cy*n2(2), cc]
+      end if
+    end subroutine coefficients
+
+    ! a slider's reaction f: its normal part (the guide takes no force along u)
+    pure subroutine normal(f, u, out)
+      real(dp), intent(in) :: f(2), u(2)
+      real(dp), intent(out) :: out(3)
+      real(dp) :: nn
+      nn = -f(1)*u(2) + f(2)*u(1)
+      out = [-nn*u(2), nn*u(1), 0.0_dp]
+    end subroutine normal
+
+    ! the moment of link l's loads about point p (they are gathered about its base)
+    real(dp) function moment_about(l, p)
+      integer, intent(in) :: l, p
+      integer :: b
+      b = base(l)
+      moment_about = ml(l) + (x(1, b) - x(1, p))*fl(2, l) - (x(2, b) - x(2, p))*fl(1, l)
+    end function moment_about
+
+    ! the pairs of a group: point, type (0 revolute, 1 slider, with its sliding direction),
+    ! the outside link of pairs 1 and 3
+    subroutine pairs(k, kind, pt, ty, dir, frl)
+      integer, intent(in) :: k, kind
+      integer, intent(out) :: pt(3), ty(3), frl(3)
+      real(dp), intent(out) :: dir(2, 3)
+      integer :: pb, pa, pc, l2, l3
+      real(dp) :: u(2)
+      pb = gi(2, k); pa = gi(3, k); pc = gi(4, k); l2 = gi(5, k); l3 = gi(6, k)
+      dir = 0.0_dp
+      ty = 0
+      frl = 0
+      select case (kind)
+      case (1)
+        pt = [pa, pb, pc]
+        frl(1) = owner(pa); frl(3) = owner(pc)
+      case (2)
+        pt = [pa, pb, pb]
+        ty(3) = 1
+        dir(:, 3) = [c(l3), s(l3)]
+        frl(1) = owner(pa); frl(3) = gi(7, k)
+      case (3)
+        pt = [pa, pb, pc]
+        ty(2) = 1
+        dir(:, 2) = [c(l3), s(l3)]
+        frl(1) = owner(pa); frl(3) = owner(pc)
+      case (4)
+        pt = [pb, pb, pb]
+        ty(1) = 1; ty(3) = 1
+        dir(:, 1) = [c(l2), s(l2)]
+        dir(:, 3) = [c(l3), s(l3)]
+        frl(1) = gi(7, k); frl(3) = gi(8, k)
+      case default
+        pt = [pb, pc, pc]
+        ty(1) = 1; ty(2) = 1
+        u = [c(l2), s(l2)]
+        dir(:, 1) = u
+        dir(:, 2) = [c(l3), s(l3)]
+        frl(1) = gi(7, k); frl(3) = owner(pc)
+      end select
+    end subroutine pairs
+
+  end subroutine mech_solve
+
+
+end module mechanism

@@ -1,0 +1,431 @@
+"""sarkp.motion and sarkp.flywheel: the law of motion and the exact flywheel.
+
+Held against closed forms (constant J and M: exact, since the cubic rule integrates a
+constant exactly and the product integration takes the start's 1/sqrt exactly), against
+an independent integration of the differential equation of motion (scipy's solve_ivp at
+tight tolerances, in time from rest and in the angle for the steady state), with the
+fourth order of the cubic rule shown by halving the step, and against DMHVK.
+"""
+
+from __future__ import annotations
+
+import math
+import pickle
+
+import numpy as np
+import pytest
+
+import sarkp
+from sarkp import flywheel, motion
+
+# a machine with a variable inertia and a position-dependent load: a constant driving
+# moment, a harmonic load and a torsion spring about phi = 1 (analytic, with J')
+J_f = lambda p: 2.0 + 0.5 * np.cos(p) + 0.2 * np.sin(2 * p)          # noqa: E731
+dJ_f = lambda p: -0.5 * np.sin(p) + 0.4 * np.cos(2 * p)               # noqa: E731
+M_f = lambda p: 10.0 + 5.0 * np.sin(p) - 3.0 * (p - 1.0)              # noqa: E731
+
+
+def _orders(errors):
+    e = np.asarray(errors)
+    return np.log2(e[:-1] / e[1:])
+
+
+# ---------------------------------------------------------------------------------------
+# closed forms
+# ---------------------------------------------------------------------------------------
+
+def test_from_rest_constant_j_and_m_is_exact():
+    """J w^2/2 = M s: w = sqrt(2 M s/J), t = sqrt(2 J s/M) -- exact on any grid, even a
+    coarse uneven one, since g = sqrt(J s/(2 A)) is constant."""
+    phi = np.array([0.3, 0.31, 0.5, 0.9, 1.7, 2.0, 4.0])
+    J, M = 3.0, 5.0
+    r = motion(phi, J, M, t0=1.25)
+    s = phi - phi[0]
+    assert r.omega[0] == 0.0 and r.t[0] == 1.25
+    np.testing.assert_allclose(r.omega, np.sqrt(2 * M * s / J), rtol=1e-14, atol=0)
+    np.testing.assert_allclose(r.t, 1.25 + np.sqrt(2 * J * s / M), rtol=1e-14, atol=0)
+    assert r.status == sarkp.Status.OK and r.M_constant == 0.0 and r.E0 == 0.0
+
+
+def test_given_start_constant_j_and_m_is_exact():
+    """w^2 = w0^2 + 2 M s/J, t = J (w - w0)/M."""
+    phi = np.linspace(0.0, 5.0, 11)
+    J, M, w0 = 2.5, 4.0, 1.5
+    r = motion(phi, J, M, omega0=w0)
+    w = np.sqrt(w0**2 + 2 * M * phi / J)
+    np.testing.assert_allclose(r.omega, w, rtol=1e-14)
+    np.testing.assert_allclose(r.t, J * (w - w0) / M, rtol=1e-13, atol=1e-15)
+
+
+def test_braking_converges_at_fourth_order():
+    """M < 0 (no singular weight): w^2 = w0^2 - 2 |M| s/J, t = J (w0 - w)/|M|; 1/w is
+    not a cubic, so t carries the cubic rule's O(h^4) error."""
+    J, M, w0, end = 2.0, -3.0, 4.0, 3.0          # w(end) = sqrt(16 - 9) > 0
+    errors = []
+    for n in (21, 41, 81, 161):
+        phi = np.linspace(0.0, end, n)
+        r = motion(phi, J, M, omega0=w0)
+        w = np.sqrt(w0**2 + 2 * M * phi / J)
+        np.testing.assert_allclose(r.omega, w, rtol=1e-14)
+        errors.append(np.abs(r.t - J * (w0 - w) / -M).max())
+    orders = _orders(errors)
+    assert np.all(orders > 3.5) and abs(orders[-1] - 4.0) < 0.2, errors
+
+
+def test_steady_state_closed_form_to_fourth_order():
+    """J constant, M = a sin(phi) + c: J w^2/2 = E0 + a (1 - cos phi), E0 from the mean
+    speed; the cubic rule's error in the work is O(h^4)."""
+    a, c, j, wm = 40.0, -15.0, 12.0, 3.0
+    s = wm * math.sqrt(2.0 * j)                   # sqrt(E0) + sqrt(E0 + 2 a) = s
+    e0 = ((s - 2.0 * a / s) / 2.0) ** 2
+    errors = []
+    for n in (19, 37, 73, 145):
+        phi = np.linspace(0.0, 2 * math.pi, n)
+        r = motion(phi, j, a * np.sin(phi) + c, omega_mean=wm)
+        assert r.M_constant == pytest.approx(-c, rel=1e-13)
+        assert r.omega_mean == pytest.approx(wm, rel=1e-14)
+        exact = np.sqrt(2.0 * (e0 + a * (1.0 - np.cos(phi))) / j)
+        errors.append(np.abs(r.omega - exact).max())
+    assert np.all(np.abs(_orders(errors) - 4.0) < 0.3), errors
+
+
+# ---------------------------------------------------------------------------------------
+# against solve_ivp
+# ---------------------------------------------------------------------------------------
+
+@pytest.fixture(scope="module")
+def from_rest_ivp():
+    """The equation of motion in time, J w' + J' w^2/2 = M, phi' = w, from rest."""
+    from scipy.integrate import solve_ivp
+
+    def rhs(t, y):
+        p, w = y
+        return [w, (M_f(p) - 0.5 * dJ_f(p) * w * w) / J_f(p)]
+
+    sol = solve_ivp(rhs, (0.0, 5.0), [0.0, 0.0], method="DOP853", rtol=1e-13,
+                    atol=1e-14, dense_output=True)
+    assert sol.success
+    return sol.sol
+
+
+def test_from_rest_against_solve_ivp_fourth_order(from_rest_ivp):
+    """Start from rest under a variable inertia and a spring: at the computed times t(phi)
+    the time integration is at phi with speed omega, to the cubic rule's O(h^4)."""
+    errors = []
+    for n in (21, 41, 81, 161, 321):
+        phi = np.linspace(0.0, 3.0, n)
+        r = motion(phi, J_f(phi), M_f(phi))
+        p, w = from_rest_ivp(r.t)
+        errors.append(max(np.abs(p - phi).max(), np.abs(w - r.omega).max()))
+    assert errors[-1] < 1e-9
+    orders = _orders(errors)
+    assert np.all(orders[1:] > 3.5) and abs(orders[-1] - 4.0) < 0.3, orders
+
+
+def test_slow_start_is_as_accurate_as_rest(from_rest_ivp):
+    """A start with a tiny speed (1/omega nearly singular): the same accuracy."""
+    phi = np.linspace(0.0, 3.0, 161)
+    w0 = 1e-9
+    r = motion(phi, J_f(phi), M_f(phi), omega0=w0)
+    rest = motion(phi, J_f(phi), M_f(phi))
+    assert np.abs(r.omega - rest.omega).max() < 1e-8
+    assert np.abs(r.t - rest.t).max() < 1e-8
+    p, _ = from_rest_ivp(rest.t)
+    assert np.abs(p - phi).max() < 1e-8
+
+
+def test_uneven_grid(from_rest_ivp):
+    """Any increasing grid: a graded one, finer near the start."""
+    u = np.linspace(0.0, 1.0, 201)
+    phi = 3.0 * u**1.5
+    r = motion(phi, J_f(phi), M_f(phi))
+    p, w = from_rest_ivp(r.t)
+    assert np.abs(p - phi).max() < 1e-8 and np.abs(w - r.omega).max() < 1e-8
+
+
+def test_steady_state_against_solve_ivp_fourth_order():
+    """The steady motion: integrated over the angle from its own first speed, the
+    equation of motion gives the same omega(phi) (to O(h^4)) and closes the cycle."""
+    from scipy.integrate import solve_ivp
+
+    J = lambda p: 5.5 + np.cos(2 * p)                                    # noqa: E731
+    dJ = lambda p: -2.0 * np.sin(2 * p)                                   # noqa: E731
+    M = lambda p: 25 * np.sin(p) + 10 * np.sin(3 * p) - 8.0               # noqa: E731
+    errors = []
+    for n in (37, 73, 145, 289):
+        phi = np.linspace(0.0, 2 * math.pi, n)
+        r = motion(phi, J(phi), M(phi), omega_mean=3.0, t0=0.5)
+        assert r.M_constant == pytest.approx(8.0, rel=1e-12)
+        assert (r.omega.max() + r.omega.min()) / 2 == pytest.approx(3.0, rel=1e-14)
+        sol = solve_ivp(lambda p, w: (M(p) + 8.0 - 0.5 * dJ(p) * w**2) / (J(p) * w),
+                        (0.0, 2 * math.pi), [r.omega[0]], t_eval=phi, rtol=1e-13,
+                        atol=1e-13, method="DOP853")
+        errors.append(np.abs(sol.y[0] - r.omega).max())
+        # t: the period is the integral of 1/omega over the cycle
+        assert r.t[0] == 0.5
+    assert abs(_orders(errors)[-1] - 4.0) < 0.3, errors
+    assert errors[-1] < 2e-7
+
+
+def test_steady_state_period_against_quad():
+    from scipy.integrate import quad
+
+    a, c, j, wm = 40.0, -15.0, 12.0, 3.0
+    s = wm * math.sqrt(2.0 * j)
+    e0 = ((s - 2.0 * a / s) / 2.0) ** 2
+    period, _ = quad(lambda p: 1.0 / math.sqrt(2.0 * (e0 + a * (1 - math.cos(p))) / j),
+                     0.0, 2 * math.pi, epsabs=0.0, epsrel=1e-13, limit=200)
+    phi = np.linspace(0.0, 2 * math.pi, 721)
+    r = motion(phi, j, a * np.sin(phi) + c, omega_mean=wm)
+    assert r.t[-1] == pytest.approx(period, rel=1e-11)
+
+
+# ---------------------------------------------------------------------------------------
+# the flywheel
+# ---------------------------------------------------------------------------------------
+
+@pytest.mark.parametrize("delta", [0.002, 0.01, 0.05, 0.2, 0.6])
+def test_flywheel_gives_exactly_delta(delta):
+    """A strongly variable inertia: the realized delta, and the delta of a steady motion
+    computed afresh with J + J_flywheel, are delta to 1e-12."""
+    phi = np.linspace(0.0, 2 * math.pi, 181)
+    J = 2.0 + 1.5 * np.cos(phi) ** 2 + 0.5 * np.sin(phi)
+    M = 300 * np.sin(phi) + 120 * np.sin(2 * phi + 0.3) - 40.0
+    fw = flywheel(phi, J, M, delta=delta, omega_mean=3.0)
+    assert fw.delta == pytest.approx(delta, rel=1e-12, abs=0)
+    again = motion(phi, J + fw.J_flywheel, M, omega_mean=3.0)
+    w = again.omega
+    assert (w.max() - w.min()) / 3.0 == pytest.approx(delta, rel=1e-12, abs=0)
+    assert (w.max() + w.min()) / 2.0 == pytest.approx(3.0, rel=1e-14)
+    # Merkalov's approximation neglects J_v: near, not equal (J_v up to 2 beside > 100)
+    assert fw.J_merkalov != fw.J_flywheel
+    assert fw.J_merkalov == pytest.approx(fw.J_flywheel, rel=0.1, abs=2.5)
+
+
+def test_flywheel_constant_inertia_merkalov_is_exact():
+    """J constant: (w_max^2 - w_min^2)/2 = swing/J_total = delta w^2, which is DMHVK's
+    formula: both values agree to rounding."""
+    phi = np.linspace(0.0, 2 * math.pi, 91)
+    M = 300 * np.sin(phi) - 50.0 * np.cos(3 * phi)
+    fw = flywheel(phi, 0.7, M, delta=0.03, omega_mean=5.0)
+    assert fw.J_merkalov == pytest.approx(fw.J_flywheel, rel=1e-12)
+
+
+def test_flywheel_merkalov_is_dmhvk_on_the_exact_work():
+    """J_merkalov is DMHVK with ISC = min J and DEC = A - (J - min J) w^2/2, A the work
+    of M with the constant moment that closes the cycle: against DMHVK on the exact A,
+    the difference is the cubic rule's O(h^4)."""
+    wm, delta = 3.0, 0.04
+    errors, errors1 = [], []
+    for n in (46, 91, 181, 361):
+        phi = np.linspace(0.0, 2 * math.pi, n)
+        J = 3.0 + np.sin(phi) ** 2
+        M = 200 * np.cos(phi) + 90 * np.sin(2 * phi)           # cycle's work 0
+        A = 200 * np.sin(phi) + 45 * (1 - np.cos(2 * phi))
+        imh = sarkp.DMHVK(n, delta, 3.0, wm, A - (J - 3.0) * wm**2 / 2).IMHVK
+        fw = flywheel(phi, J, M, delta=delta, omega_mean=wm)
+        errors.append(abs(fw.J_merkalov - imh))
+        fw1 = flywheel(phi, J, M, delta=delta, omega_mean=wm, J_constant=1.0)
+        imh1 = sarkp.DMHVK(n, delta, 1.0, wm, A - (J - 1.0) * wm**2 / 2).IMHVK
+        errors1.append(abs(fw1.J_merkalov - imh1))
+        assert fw1.J_flywheel == fw.J_flywheel
+    assert abs(_orders(errors)[-1] - 4.0) < 0.2 and errors[-1] < 1e-6 * imh, errors
+    assert abs(_orders(errors1)[-1] - 4.0) < 0.2, errors1
+
+
+def test_flywheel_not_needed_is_negative():
+    """A machine that already fluctuates less than delta: the inertia to take away."""
+    phi = np.linspace(0.0, 2 * math.pi, 73)
+    fw = flywheel(phi, 100.0, 5 * np.sin(phi), delta=0.1, omega_mean=3.0)
+    assert fw.J_flywheel < 0 and fw.delta == pytest.approx(0.1, rel=1e-12)
+
+
+def test_flywheel_when_the_closed_form_misses():
+    """A large delta on a machine whose inertia nearly vanishes at one angle: at DEC's
+    extremes the closed form asks for J_flywheel = -2.74, which would make J + J_flywheel
+    negative there; the bisection over J_flywheel then finds the exact one."""
+    phi = np.linspace(0.0, 2 * math.pi, 73)
+    J = 0.053146296753943396 + \
+        12.20434452565231 * (1 + np.cos(phi + 4.563585180590357)) ** 2
+    M = 48.63049134723755 * np.sin(phi + 1.3065391833085378) + \
+        19.175904355867573 * np.sin(3 * phi)
+    delta = 0.7817535577353678
+    fw = flywheel(phi, J, M, delta=delta, omega_mean=3.0)
+    assert fw.delta == pytest.approx(delta, rel=1e-12, abs=0)
+    again = motion(phi, J + fw.J_flywheel, M, omega_mean=3.0)
+    assert again.delta == pytest.approx(delta, rel=1e-12, abs=0)
+
+
+def test_a_stall_without_flywheel_and_the_flywheel_that_cures_it():
+    phi = np.linspace(0.0, 2 * math.pi, 73)
+    M = 300 * np.sin(phi)
+    with pytest.raises(sarkp.RequirementError, match="stalls"):
+        motion(phi, 0.2, M, omega_mean=3.0)
+    out = motion(phi, 0.2, M, omega_mean=3.0, on_error="nan")
+    assert out.status == sarkp.Status.REQUIREMENT and np.isnan(out.omega).all()
+    fw = flywheel(phi, 0.2, M, delta=0.01, omega_mean=3.0)
+    assert fw.J_flywheel > 0 and fw.delta == pytest.approx(0.01, rel=1e-12)
+
+
+# ---------------------------------------------------------------------------------------
+# stops, results, bad input
+# ---------------------------------------------------------------------------------------
+
+def test_the_crank_stops_inside_the_grid():
+    """J w^2/2 = w0^2 J/2 + M s reaches 0 at s = J w0^2/(2|M|)."""
+    phi = np.linspace(0.0, 3.0, 31)
+    w0 = math.sqrt(3.0 * 1.55)                  # stops at s = 1.55, after phi[15] = 1.5
+    with pytest.raises(sarkp.RequirementError, match=r"between phi\[15\] = 1.5"):
+        motion(phi, 2.0, -3.0, omega0=w0)
+    r = motion(phi, 2.0, -3.0, omega0=w0, on_error="nan")
+    assert r.status == sarkp.Status.REQUIREMENT
+    assert np.isfinite(r.omega[:16]).all() and np.isnan(r.omega[16:]).all()
+    assert np.isfinite(r.t[:16]).all() and np.isnan(r.t[16:]).all()
+
+
+def test_results_pickle_print_short_and_convert():
+    """sarkp.results' base: a named tuple that pickles, prints a few values of each array
+    (not 2001), and converts to a DataFrame (pandas optional)."""
+    phi = np.linspace(0.0, 2 * math.pi, 2001)
+    r = motion(phi, 2.0, 10 * np.sin(phi), omega_mean=4.0)
+    back = pickle.loads(pickle.dumps(r))
+    assert np.array_equal(back.omega, r.omega) and back.delta == r.delta
+    assert isinstance(r, sarkp.results.Result) and r._fields[:3] == ("phi", "omega", "t")
+    p, w, t = r[:3]
+    assert w is r.omega
+    assert len(repr(r)) < 600 and "..." in repr(r)
+    fw = flywheel(phi, 2.0, 10 * np.sin(phi), delta=0.01, omega_mean=4.0)
+    back = pickle.loads(pickle.dumps(fw))
+    assert back.J_flywheel == fw.J_flywheel and len(repr(fw)) < 600
+    p37 = np.linspace(0.0, 2 * math.pi, 37)
+    x = pickle.loads(pickle.dumps(sarkp.DMHVK_EXACT(37, 37.0, 3.0, 1.0, np.sin(p37),
+                                                    np.zeros(37), 0.1)))
+    assert x._fields == ("IMHVK", "IMERK", "DELTA")
+    pd = pytest.importorskip("pandas")
+    frame = r.to_frame()
+    assert isinstance(frame, pd.DataFrame) and len(frame) == 2001
+    assert np.array_equal(frame["omega"].to_numpy(), r.omega)
+
+
+_PHI = np.linspace(0.0, 2 * math.pi, 9)
+
+
+@pytest.mark.parametrize("args, kwargs, name", [
+    ((_PHI[::-1], 1.0, 1.0), {}, "phi"),
+    ((np.r_[0.0, 1.0, 1.0, 2.0, 3.0], 1.0, 1.0), {}, "phi"),
+    ((_PHI[:3], 1.0, 1.0), {}, "phi"),
+    ((np.r_[0.0, np.nan, 2, 3, 4], 1.0, 1.0), {}, "phi"),
+    ((_PHI, 0.0, 1.0), {}, "J"),
+    ((_PHI, -np.ones(9), 1.0), {}, "J"),
+    ((_PHI, np.ones(8), 1.0), {}, "J"),
+    ((_PHI, 1.0, np.ones(10)), {}, "M"),
+    ((_PHI, 1.0, np.full(9, np.inf)), {}, "M"),
+    ((_PHI, 1.0, 0.0), {}, "M"),                       # from rest without a moment
+    ((_PHI, 1.0, 1.0), {"omega0": -1.0}, "omega0"),
+    ((_PHI, 1.0, 1.0), {"omega0": math.nan}, "omega0"),
+    ((_PHI, 1.0, 1.0), {"omega_mean": 0.0}, "omega_mean"),
+    ((_PHI, 1.0, 1.0), {"omega_mean": 2.0, "omega0": 1.0}, "omega0"),
+    ((_PHI, 1.0 + _PHI, 1.0), {"omega_mean": 2.0}, "J"),
+    ((_PHI, 1.0, 1.0), {"on_error": "ignore"}, "on_error"),
+])
+def test_motion_bad_input_names_the_argument(args, kwargs, name):
+    with pytest.raises(ValueError, match=rf"\b{name}\b"):
+        motion(*args, **kwargs)
+
+
+@pytest.mark.parametrize("kwargs, name", [
+    ({"delta": 0.0, "omega_mean": 3.0}, "delta"),
+    ({"delta": 1.0, "omega_mean": 3.0}, "delta"),
+    ({"delta": -0.1, "omega_mean": 3.0}, "delta"),
+    ({"delta": 0.1, "omega_mean": -3.0}, "omega_mean"),
+    ({"delta": 0.1, "omega_mean": 3.0, "J_constant": 5.0}, "J_constant"),
+])
+def test_flywheel_bad_input_names_the_argument(kwargs, name):
+    with pytest.raises(ValueError, match=rf"\b{name}\b"):
+        flywheel(_PHI, 2.0, np.sin(_PHI), **kwargs)
+
+
+def test_wrong_types_are_type_errors():
+    with pytest.raises(TypeError, match="omega0"):
+        motion(_PHI, 1.0, 1.0, omega0="1")
+    with pytest.raises(TypeError, match="phi"):
+        motion("0123", 1.0, 1.0)
+    with pytest.raises(TypeError, match="delta"):
+        flywheel(_PHI, 1.0, np.sin(_PHI), delta=None, omega_mean=1.0)
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_from_rest_against_the_exact_work_and_quad(seed):
+    """Random trigonometric loads that keep the crank turning, from rest: omega within the
+    cubic rule's error bound of sqrt(2 A/J), A the exact work; t(phi) against scipy's quad
+    of t = integral of sqrt(J/(2 A)) ds, taken as 2 g(u^2) du with u = sqrt(s) and
+    g = sqrt(J s/(2 A)) smooth, converging at fourth order."""
+    from scipy.integrate import quad
+
+    rng = np.random.default_rng(seed)
+    a = rng.uniform(-1.0, 1.0, 3)
+    b = rng.uniform(-1.0, 1.0, 3)
+    k = np.arange(1, 4)
+    m_min = rng.uniform(0.5, 3.0)
+    m0 = m_min + np.abs(a).sum() + np.abs(b).sum()           # M >= m_min > 0
+    j0, j1 = rng.uniform(1.0, 3.0), rng.uniform(0.0, 0.9)
+
+    def M(p):
+        p = np.asarray(p)[..., None]
+        return m0 + (a * np.sin(k * p) + b * np.cos(k * p)).sum(-1)
+
+    def A(s):               # the exact work from 0
+        s = np.asarray(s)[..., None]
+        work = (a * (1 - np.cos(k * s)) / k + b * np.sin(k * s) / k).sum(-1)
+        return m0 * s[..., 0] + work
+
+    def J(p):
+        return j0 * (1 + j1 * np.sin(p) ** 2)
+
+    def g(s):
+        return math.sqrt(J(s) * s / (2 * A(s))) if s > 0 else math.sqrt(J(0.0) / (2 * m0))
+
+    end = rng.uniform(2.0, 8.0)
+    checks = (0.3, 0.5, 1.0)          # fractions of the range (nearer the start the error
+    #                                   changes sign before it settles to its h^4 rate)
+    # t = integral of g(s) s^(-1/2) ds = integral of 2 g(u^2) du, u = sqrt(s): smooth
+    exact = [quad(lambda u: 2.0 * g(u * u), 0.0, math.sqrt(f * end), epsabs=0,
+                  epsrel=2e-14, limit=200)[0] for f in checks]
+    errors = []
+    for n in (401, 801, 1601):
+        phi = np.linspace(0.0, end, n)
+        h = phi[1]
+        r = motion(phi, J(phi), M(phi))
+        # the cubic rule's error in A is at most (19/720) h^4 max|M''''| per unit of
+        # angle (19/720: the one-sided end formula; 11/720 inside), A >= m_min s, and
+        # omega's relative error is half A's
+        bound = 0.5 * (19 / 720) * h**4 * (k**4 * (np.abs(a) + np.abs(b))).sum() / m_min
+        rel = np.abs(r.omega[1:] / np.sqrt(2 * A(phi[1:]) / J(phi[1:])) - 1)
+        assert rel.max() <= bound + 1e-15
+        idx = [round(f * (n - 1)) for f in checks]
+        errors.append(max(abs(r.t[i] / t - 1) for i, t in zip(idx, exact)))
+    orders = _orders(errors)
+    assert errors[-1] < 1e-8 and np.all(orders > 3.5), errors
+
+
+def test_booleans_are_type_errors():
+    with pytest.raises(TypeError, match="J"):
+        motion(_PHI, True, 1.0)
+    with pytest.raises(TypeError, match="M"):
+        motion(_PHI, 1.0, np.ones(9, dtype=bool))
+
+
+def test_steady_motion_is_dzkndv_up_to_the_trapezoid_error():
+    """The same machine through DZKNDV (corrected: the energy equation with trapezoids)
+    and motion(omega_mean=...) (the cubic rule): they differ by the trapezoid rule's
+    O(h^2), a quarter on halving the step."""
+    isc, W = 4.0, 3.0
+    gaps = []
+    for n in (73, 145, 289):
+        phi = np.linspace(0.0, 2 * math.pi, n)
+        M = 25 * np.sin(phi) + 10 * np.sin(3 * phi) - 8.0
+        jv = 1.5 + np.cos(2 * phi)
+        d = sarkp.DZKNDV(n, float(n), W, isc, M, jv)
+        r = motion(phi, isc + jv, M, omega_mean=W)
+        gaps.append(np.abs(d.WPR - r.omega).max())
+    assert np.all(np.abs(_orders(gaps) - 2.0) < 0.05), gaps
