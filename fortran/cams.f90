@@ -76,6 +76,20 @@ contains
   ! non-positive length, or a non-positive RO (the book's rule gives no cam).
   subroutine dklchk(n, prm, vlst, akslrt, ald, beta, w1, rscntr, rzmr, index, ier)
     !sarkp common: ro, excst, etao
+    !: N : integer 1..2147483646 -- Number of points; must equal the length of the tables.
+    !: PRM : table(N) real -- Displacement of the follower (m), or the rocker's angle (rad)
+    !:     for INDEX = 2.
+    !: VLST : table(N) real -- Velocity of the follower (m/s), or the rocker's angular
+    !:     velocity (rad/s).
+    !: AKSLRT : table(N) real -- Acceleration of the follower; not used, as printed.
+    !: ALD : real -- Allowed pressure angle (rad), 0 < ALD < pi/2 (V.5: 0.523).
+    !: BETA : real -- Angle "from the non-jamming condition" (rad): 0 for a central
+    !:     mechanism (V.5: 0.35). Used for INDEX = 1 only.
+    !: W1 : real -- Angular velocity of the cam (1/s), > 0.
+    !: RSCNTR, RZMR : real = 0.0 -- Centre distance O1-O2 and rocker length (m); INDEX = 2
+    !:     only (default 0).
+    !: INDEX : integer 1..2 = 1 -- 1 translating follower (default), 2 oscillating follower
+    !:     (rocker).
     integer, intent(in) :: n
     real(dp), intent(in) :: prm(n), vlst(n), akslrt(n)
     real(dp), intent(in) :: ald, beta, w1, rscntr, rzmr
@@ -136,6 +150,18 @@ contains
   ! exactly (a point of zero curvature has no finite radius).
   subroutine dprflp(n, ro, excntr, w, fi, a, v, s, ald, xa, ya, r1, delta, alfa, rok, &
                     alfmax, nover, ier)
+    !: N : integer 1..2147483646 -- Number of points; must equal the length of the tables.
+    !: RO : length -- The follower's axial distance at S = 0 (m), > 0: DKLCHK's RO.
+    !: EXCNTR : real -- Offset e of the follower's axis (m), any sign: DKLCHK's EXCST.
+    !: W : real -- Angular velocity of the cam (1/s), > 0.
+    !: FI : table(N) real -- Cam angles (rad), in any order and spacing: every point is
+    !:     computed on its own (only the tables' integration, e.g. by DINTGR, needs a
+    !:     uniform step).
+    !: A, V, S : table(N) real -- Acceleration (m/s^2), velocity (m/s) and displacement (m)
+    !:     of the follower.
+    !: ALD : real = 0.5235987755982988 -- sarkp extension: the allowed pressure angle (rad)
+    !:     for ``NOVER``; default pi/6 (30 degrees, the usual limit for a translating
+    !:     follower).
     integer, intent(in) :: n
     real(dp), intent(in) :: ro, excntr, w, ald
     real(dp), intent(in) :: fi(n), a(n), v(n), s(n)
@@ -197,6 +223,16 @@ contains
   ! <= 0 at some point.
   subroutine dprfpl(n, gamma, w, fi, a, v, s, xa, ya, r1, delta, rok, rksh, rokmin, &
                     nconc, ier)
+    !: N : integer 1..2147483646 -- Number of points; must equal the length of the tables.
+    !: GAMMA : real -- Design angle (rad), 0 < GAMMA < pi/2. GAMMA = pi/4 makes ROK = 0 at
+    !:     the point of the smallest acceleration (Fig. 36); a larger GAMMA gives a smaller
+    !:     cam whose profile is concave there (program X uses pi/3, Fig. 89).
+    !: W : real -- Angular velocity of the cam (1/s), > 0.
+    !: FI : table(N) real -- Cam angles (rad), in any order and spacing: every point is
+    !:     computed on its own (only the tables' integration, e.g. by DINTGR, needs a
+    !:     uniform step).
+    !: A, V, S : table(N) real -- Acceleration (m/s^2), velocity (m/s) and displacement (m)
+    !:     of the follower.
     integer, intent(in) :: n
     real(dp), intent(in) :: gamma, w
     real(dp), intent(in) :: fi(n), a(n), v(n), s(n)
@@ -263,6 +299,19 @@ contains
   ! degrees) or C2 = 0 (curvature radius infinite).
   subroutine dprflk(n, w1, etao, fi, ro, l, r, e2, w2, psi, ald, xa, ya, r1, delta, &
                     rkrzvn, alfa, alfmax, nover, ier)
+    !: N : integer 1..2147483646 -- Number of points; must equal the length of the tables.
+    !: W1 : real -- Angular velocity of the cam (1/s), > 0.
+    !: ETAO : real -- Initial angle of the rocker (rad): DKLCHK's ETAO for INDEX = 2.
+    !: FI : table(N) real -- Cam angles (rad), in any order and spacing: every point is
+    !:     computed on its own (only the tables' integration, e.g. by DINTGR, needs a
+    !:     uniform step).
+    !: RO : real -- Radius of the cam; not used, as printed.
+    !: L : length -- Centre distance O1-O2 (m), > 0.
+    !: R : length -- Rocker length (m), > 0.
+    !: E2, W2, PSI : table(N) real -- Angular acceleration (rad/s^2), angular velocity
+    !:     (rad/s) and angle (rad) of the rocker.
+    !: ALD : real = 0.7853981633974483 -- sarkp extension: the allowed pressure angle (rad)
+    !:     for ``NOVER``; default pi/4 (45 degrees, the usual limit for a rocker).
     integer, intent(in) :: n
     real(dp), intent(in) :: w1, etao, ro, l, r, ald
     real(dp), intent(in) :: fi(n), e2(n), w2(n), psi(n)

@@ -160,6 +160,19 @@ contains
   ! The book sets PI = 3.14159 locally (L5955): prmtr's PI does the same as printed.
   ! ERRATA: E-DZKNDV-1 (comment), E-DZKNDV-2 (as-printed keeps the linear WPR).
   subroutine dzkndv(m, zm, w1, isc, mpr, ispr, aaa, as, asum, ev, dec, wpr, epr, ier)
+    !sarkp kept: 4 => as, asum, ev, dec
+    !: M : integer 2..2147483646 -- Number of points (>= 2), covering exactly one cycle phi
+    !:     = 0 .. 2*pi, both ends included; equals ``len(MPR)``.
+    !: ZM : real -- M again, as a real (the book passes both); must equal M.
+    !: W1 : real > 0 -- Mean angular velocity omega_sr = (omega_max + omega_min)/2 of the
+    !:     reduction link (rad/s, > 0; the book's definition, L6044).
+    !: ISC : real > 0 -- Constant part J_c of the reduced moment of inertia (kg*m^2, > 0).
+    !: MPR : table(M) real -- Reduced moment of the forces at the M points (N*m), positive
+    !:     where it does positive work on the reduction link (in the book's program X the
+    !:     moment of the group reactions on the crank, M1 of Fig. 94).
+    !: ISPR : table(M) real >= 0 -- Variable part J_v(phi) of the reduced moment of inertia
+    !:     (kg*m^2, >= 0).
+    !: AAA : flag -- The book's print flag; unused.
     integer, intent(in) :: m
     real(dp), intent(in) :: zm, w1, isc, mpr(m), ispr(m), aaa
     real(dp), intent(out) :: as(m), asum(m), ev(m), dec(m), wpr(m), epr(m)
@@ -218,6 +231,18 @@ contains
   ! The printed C1 + ABS(C2) is the swing C1 - C2 whenever C1 >= 0 >= C2, which DEC(1) = 0
   ! guarantees for DZKNDV's DEC; C1 - C2 is used for any DEC (E-DMHVK-3).
   subroutine dmhvk(n, delta, isc, w1, dec, aaa, imhvk)
+    !: N : integer 1..2147483646 -- Number of values in DEC; equals ``len(DEC)``.
+    !: DELTA : real -- Coefficient of speed fluctuation, in (0, 1).
+    !: ISC : real > 0 -- Constant part J_c of the reduced moment of inertia (kg*m^2, > 0).
+    !: W1 : real > 0 -- Mean angular velocity of the reduction link (rad/s, > 0).
+    !: DEC : table(N) real -- The change of the kinetic energy of the constant-inertia links
+    !:     over the cycle, DZKNDV's ``DEC`` (J). An input: the listing's comment puts it
+    !:     under RESULT (ERRATA E-DMHVK-2).
+    !: AAA : flag -- The print flag, unused. The listing has 6 arguments, without AAA; the
+    !:     only call in the book (program X, L7631) passes 7, with AAA before IMHVK as every
+    !:     routine of the library has it, and its printed result IMH = 4507.27 (L7203) shows
+    !:     that call ran: the flag is kept (ERRATA E-DMHVK-1). ``DMHVK(N, DELTA, ISC, W1,
+    !:     DEC)`` works too.
     integer, intent(in) :: n
     real(dp), intent(in) :: delta, isc, w1, dec(n), aaa
     real(dp), intent(out) :: imhvk

@@ -256,6 +256,21 @@ contains
   ! No admissible set: st_requirement (the book prints its message 10, L3789).
   subroutine dzbpl(ks, p, q, l2, l3, z1min, z1max, shema, zkrn, zkrw, dz, ier)
     !sarkp common: z1 => zub_z1, z2 => zub_z2, z3 => zub_z3, z4 => zub_z4
+    !: KS : integer 1..100 -- Number of satellite blocks k (1..100).
+    !: P, Q : integer -1000..1000; integer 1..1000 -- The ratio i_1h = P/Q in lowest terms
+    !:     (P != 0 may be negative, Q >= 1).
+    !: L2, L3 : integer 1..1000 -- z2 : z3 = L2 : L3, coprime (L2 != L3 for schemes 2 and
+    !:     3).
+    !: Z1MIN, Z1MAX : integer 1..10000 -- The range of z1 (undercut, jamming, size).
+    !: SHEMA : integer 1..3 -- 1, 2 or 3 (see above).
+    !: ZKRN, ZKRW, DZ : integer 1..10000 = 20; integer 1..10000 = 85; integer 1..10000 = 8 -- The
+    !:     book's COMMON /ZUB/ inputs, here arguments (sarkp extension), defaults the book's
+    !:     (VI.2, L3815-3817): the least tooth number of an external wheel (20; the classic
+    !:     undercut limit z >= 17 can be asked with 17) and of an internal wheel (85), and
+    !:     the least tooth difference of an internal pair (8). Each limit applies where the
+    !:     book applies it: scheme 1, z2, z3 >= ZKRN, z4 >= ZKRW, z4 - z3 >= DZ; scheme 2,
+    !:     z2, z3, z4 >= ZKRN; scheme 3, z1, z4 >= ZKRW, z2, z3 >= ZKRN, z1 - z2, z4 - z3 >=
+    !:     DZ.
     integer, intent(in) :: ks, p, q, l2, l3, z1min, z1max, shema, zkrn, zkrw, dz
     integer, intent(out) :: ier
     logical :: found
@@ -404,6 +419,14 @@ contains
   ! AW = 0 with SDVIG not 1, 2, 3: the computed GO TO falls through to SDVIG = 1 as printed;
   ! corrected mode refuses it (st_requirement).
   subroutine dkrkt(m, z1, z2, aw, sdvig, aaa, x1, x2, alfaw, ier)
+    !: M : length -- Module (mm), > 0.
+    !: Z1, Z2 : integer 8..10000 -- Tooth numbers of pinion and wheel (whole numbers, 8 to
+    !:     10000).
+    !: AW : real >= 0 -- Required centre distance (mm), or 0 to choose the shifts by SDVIG.
+    !: SDVIG : integer 0..3 -- 0, 1, 2 or 3 (used only when AW = 0, where it must be 1, 2 or
+    !:     3).
+    !: AAA : flag -- 0 prints the book's report (FORMATs 25, 52, 55); anything else is
+    !:     silent.
     real(dp), intent(in) :: m, z1, z2, aw, aaa
     integer, intent(in) :: sdvig
     real(dp), intent(out) :: x1, x2, alfaw
@@ -495,6 +518,10 @@ contains
   ! TCHNST are not needed.
   ! INVX < 0 (no angle of [0, pi/2)) is refused by the Python layer.
   real(dp) function duginv(invx, xnach, tchnst)
+    !: INVX : real -- The involute, >= 0.
+    !: XNACH : real -- Start of the book's iteration (every call of the book passes PI/18).
+    !: TCHNST : length -- The book's tolerance on the step, > 0 (its comment: 0.00001 gives
+    !:     one second of arc).
     real(dp), intent(in) :: invx, xnach, tchnst
     if (printed_mode /= 0) then
       if (tchnst > 0.0_dp) then
@@ -524,6 +551,11 @@ contains
   ! Table 22's, with no shortening: DGMTZK does not know the mating gear; DGMZPC's DA1, DA2
   ! are the mesh's).  A diameter beyond double precision is st_range.
   subroutine dgmtzk(m, z, beta, x, aaa, d, s, db, sb, da, sa, df, xur, ier)
+    !: M : length -- Normal module (mm), > 0.
+    !: Z : integer 8..10000 -- Number of teeth (a whole number, 8 to 10000).
+    !: BETA : real -- Helix angle (rad), |BETA| < pi/2; 0 for a spur gear.
+    !: X : real -- Profile-shift coefficient.
+    !: AAA : flag -- 0 prints the book's report (FORMATs 1-7, L4281-4306).
     real(dp), intent(in) :: m, z, beta, x, aaa
     real(dp), intent(out) :: d, s, db, sb, da, sa, df, xur
     integer, intent(out) :: ier
@@ -620,6 +652,12 @@ contains
     !sarkp common: xy => zpc_xy, xur => zpc_xur, e => zpc_e
     !sarkp common: da1 => zpc_da1, da2 => zpc_da2, alfaa1 => zpc_alfaa1
     !sarkp common: alfaa2 => zpc_alfaa2, sa1 => zpc_sa1, sa2 => zpc_sa2
+    !: M : length -- Normal module (mm), > 0.
+    !: Z1, Z2 : integer 8..10000 -- Tooth numbers (whole numbers, 8 to 10000).
+    !: BETA : real -- Helix angle (rad), |BETA| < pi/2.
+    !: X1, X2 : real -- Shift coefficients.
+    !: BW : real >= 0 -- Face width (mm), >= 0.
+    !: AAA : flag -- 0 prints the book's report (FORMAT 1, L4445-4452).
     real(dp), intent(in) :: m, z1, z2, beta, x1, x2, bw, aaa
     integer, intent(out) :: ier
     real(dp) :: alfa, alfat, invalw, alfaw, aw, xy, xur, da1, da2, db1, db2, ala1, ala2, &
@@ -727,6 +765,15 @@ contains
     !sarkp common: xy => zvn_xy, xur => zvn_xur, da1 => zvn_da1, da2 => zvn_da2
     !sarkp common: df1 => zvn_df1, df2 => zvn_df2, h1 => zvn_h1, h2 => zvn_h2
     !sarkp common: sa1 => zvn_sa1, sa2 => zvn_sa2, ealfa => zvn_ealfa
+    !: M : length -- Module (mm), > 0.
+    !: Z1 : integer 8..10000 -- Teeth of the pinion (external teeth).
+    !: Z2 : integer 9..10000 -- Teeth of the wheel (internal teeth), > Z1.
+    !: X1, X2 : real -- Shift coefficients of pinion and wheel (for the wheel positive away
+    !:     from its axis: its teeth get thinner).
+    !: ZO2, DO, XO, DAO : integer 8..10000; length; real; length -- The shaper that cuts the
+    !:     wheel: teeth (< Z2), reference diameter (> 0, unused, as in the book), shift
+    !:     coefficient, tip diameter (> 0).
+    !: AAA : flag -- 0 prints the book's report (FORMATs 1, 2, L4604-4630).
     real(dp), intent(in) :: m, z1, z2, x1, x2, zo2, do, xo, dao, aaa
     integer, intent(out) :: ier
     real(dp) :: alfa, a, xd, invalw, alfaw, aw, d1, d2, u, dw1, dw2, xy, xur, invo2, alfao2, &
@@ -844,6 +891,12 @@ contains
     !sarkp common: g => chrvc_g, gw => chrvc_gw, h1 => chrvc_h1, ha1 => chrvc_ha1
     !sarkp common: da1 => chrvc_da1, da2 => chrvc_da2, dam2 => chrvc_dam2, b1 => chrvc_b1
     !sarkp common: b2 => chrvc_b2, r => chrvc_r
+    !: M : length -- Axial module (mm), > 0.
+    !: Q : length -- Diameter factor q of the worm, > 0.
+    !: Z1 : integer 1..100 -- Number of starts of the worm (whole).
+    !: Z2 : integer 1..10000 -- Teeth of the worm wheel (whole).
+    !: AW : length -- Centre distance (mm), > M Z2/2.
+    !: AAA : flag -- 0 prints the book's report (FORMAT 1, L4795-4822).
     real(dp), intent(in) :: m, q, z1, z2, aw, aaa
     integer, intent(out) :: ier
     real(dp) :: x, dw1, da2

@@ -954,11 +954,6 @@ def _py_join(items, sep, indent, width=88):
 def main(argv):
     source, out, py, *only = argv
     module, procs, variables, text = generate(Path(source), only)
-    if not procs:
-        # a chapter not yet written as argument lines: the drivers of the declarations
-        # in Python (library.book_routine), until it is converted
-        import gen_drivers_legacy
-        text = gen_drivers_legacy.generate(Path(source), only)
     Path(out).write_text(text, encoding="utf-8")
     Path(py).write_text(wrappers(module, procs, variables, Path(source).name),
                         encoding="utf-8")

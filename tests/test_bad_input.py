@@ -1,5 +1,6 @@
 """Bad input raises ValueError naming the argument; never a NaN, never a crash."""
 
+import fractions
 import math
 import warnings
 
@@ -141,3 +142,63 @@ def test_valid_numpy_scalars_draw_no_runtime_warning():
         warnings.simplefilter("error")
         r = sarkp.DVKT(np.float64(1e308), 0.0, 1e308, 1.0)
     assert (r.RZ, r.FI) == (1.0, math.pi / 2)
+
+
+def test_integer_inputs_are_screened_before_the_loop():
+    # DZBPL checked its integers after the Fortran loop: Z1MAX = 2**31 - 1 spun for 14-23 s
+    # before a ValueError; the driver now rejects it before the loop starts
+    with pytest.raises(ValueError, match=r"^DZBPL: Z1MAX = 2147483647 is not one of the "
+                                         r"integers 1\.\.10000$"):
+        sarkp.DZBPL(1, 1, 1, 1, 1, 8, 2**31 - 1, 1)
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda: sarkp.DGMTZK(4.0, 10001.0, 0.0, 0.0), r"DGMTZK: Z = 10001 .* 8\.\.10000"),
+    (lambda: sarkp.DZBPL(101, 1, 1, 1, 1, 8, 20, 1), r"DZBPL: KS = 101 .* 1\.\.100"),
+    (lambda: sarkp.DCHRVC(8.0, 10.0, 101, 39.0, 200.0), r"DCHRVC: Z1 = 101 .* 1\.\.100"),
+], ids=["DGMTZK-Z", "DZBPL-KS", "DCHRVC-Z1"])
+def test_integer_messages_give_upper_bounds(call, message):
+    with pytest.raises(ValueError, match=message):
+        call()
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda: sarkp.DZBPL(2, 2**31, 1, 1, 1, 13, 35, 1),
+     r"DZBPL: P = 2147483648 is not one of the integers -1000\.\.1000"),
+    (lambda: sarkp.DCHRVC(8.0, 10.0, 2, 10**400, 200.0), r"DCHRVC: Z2 = .* too large"),
+    (lambda: sarkp.DKRKT(4.0, 13.0, 34.0, 0.0, 10**400), r"DKRKT: SDVIG = .* too large"),
+], ids=["DZBPL-P", "DCHRVC-Z2", "DKRKT-SDVIG"])
+def test_integers_beyond_a_fortran_integer_are_value_errors(call, message):
+    # these were OverflowError from f2py's conversion to a Fortran integer
+    with pytest.raises(ValueError, match=message):
+        call()
+
+
+def test_nan_in_a_fortran_integer_input_of_a_sweep_is_missing():
+    # a NaN tooth number or shift system was cast to an integer: finite results with
+    # status OK, and "invalid value encountered in cast"
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        z = sarkp.DZBPL(1, 5, 1, 1, 2, 10, 300, [1, math.nan], on_error="nan")
+        k = sarkp.DKRKT(4.0, 13.0, 34.0, 100.0, [math.nan, 0], on_error="nan")
+    assert z.status.tolist() == [sarkp.Status.OK, sarkp.Status.MISSING]
+    assert z.Z1[0] == sarkp.DZBPL(1, 5, 1, 1, 2, 10, 300, 1).Z1 and math.isnan(z.Z1[1])
+    assert k.status.tolist() == [sarkp.Status.MISSING, sarkp.Status.OK]
+    assert math.isnan(k.X1[0]) and k.X1[1] == sarkp.DKRKT(4.0, 13.0, 34.0, 100.0, 0).X1
+
+
+def test_messages_name_routine_and_argument():
+    with pytest.raises(ValueError, match=r"^DZKNDV: ISC is not a regular array"):
+        sarkp.DZKNDV(3, 3.0, 10.0, [[1.0], [2.0, 3.0]], [0, 0, 0.0], [0, 0, 0.0])
+    with pytest.raises(ValueError, match=r"^DZBPL: KS = nan is not a finite number$"):
+        sarkp.DZBPL(math.nan, fractions.Fraction(1, 3), 1, 1, 1, 13, 35, 1)
+    with pytest.raises(ValueError, match=r"^DZBPL: P = 0\.333.* is not one of the integers"):
+        sarkp.DZBPL(1, fractions.Fraction(1, 3), 1, 1, 1, 13, 35, 1)
+
+
+def test_dugl6_with_numpy_scalars_draws_no_runtime_warning():
+    # the fast path's sum(args) overflowed for NumPy scalars (1 + 1e308 + 1e308)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        value = sarkp.DUGL6(np.float64(1.0), 1e308, 1e308, 0.0, 0.0)
+    assert math.isfinite(value)

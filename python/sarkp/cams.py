@@ -26,7 +26,8 @@ import math
 
 import numpy as np
 
-from .library import ST_REQUIREMENT, ST_SINGULAR, Check, book_routine
+from . import _wrap_cams as _w
+from .library import ST_REQUIREMENT, ST_SINGULAR, Check, describe
 from .results import result_type
 
 __all__ = ["DKLCHK", "DPRFLP", "DPRFPL", "DPRFLK", "motion_law", "LAW_FACTORS",
@@ -49,13 +50,8 @@ def _positive(name, what):
 
 # ---- V.1 DKLCHK ------------------------------------------------------------------------
 
-DKLCHK = book_routine(
-    "DKLCHK", listing="V.1", lines="L3053-3100", chapter="cams",
-    inputs=("N", "PRM", "VLST", "AKSLRT", "ALD", "BETA", "W1", "RSCNTR", "RZMR", "INDEX"),
-    outputs=("RO", "EXCST", "ETAO"),
-    tables={"PRM": "N", "VLST": "N", "AKSLRT": "N"},
-    integers={"INDEX": (1, 2)},
-    defaults={"RSCNTR": 0.0, "RZMR": 0.0, "INDEX": 1},
+DKLCHK = describe(
+    _w.DKLCHK, listing="V.1", lines="L3053-3100",
     checks=(
         _open_angle("ALD"),
         _positive("W1", "the angular velocity of the cam"),
@@ -85,28 +81,6 @@ At the first maximum of the follower's velocity, ``VLST[L]``, the transfer funct
   ``RO = (IFI/tan(ALD) - S) sin(ALD)/sin(ALD + BETA)``, ``EXCST = RO sin(BETA)``;
 * ``INDEX = 2`` (rocker): ``ETAO = IFI/tan(ALD) - S``,
   ``RO = sqrt(RSCNTR**2 + RZMR**2 - 2 RSCNTR RZMR cos(ETAO))`` (the book's rule).
-
-Parameters
-----------
-N : int
-    Number of points; must equal the length of the tables.
-PRM : array_like, shape (N,)
-    Displacement of the follower (m), or the rocker's angle (rad) for INDEX = 2.
-VLST : array_like, shape (N,)
-    Velocity of the follower (m/s), or the rocker's angular velocity (rad/s).
-AKSLRT : array_like, shape (N,)
-    Acceleration of the follower; not used, as printed.
-ALD : float
-    Allowed pressure angle (rad), 0 < ALD < pi/2 (V.5: 0.523).
-BETA : float
-    Angle "from the non-jamming condition" (rad): 0 for a central mechanism
-    (V.5: 0.35).  Used for INDEX = 1 only.
-W1 : float
-    Angular velocity of the cam (1/s), > 0.
-RSCNTR, RZMR : float, optional
-    Centre distance O1-O2 and rocker length (m); INDEX = 2 only (default 0).
-INDEX : {1, 2}, optional
-    1 translating follower (default), 2 oscillating follower (rocker).
 
 Returns
 -------
@@ -141,17 +115,12 @@ and its rise stays within ALD (Fig. 35: at most 0.52027 rad).
 
 # ---- V.2 DPRFLP ------------------------------------------------------------------------
 
-DPRFLP = book_routine(
-    "DPRFLP", listing="V.2", lines="L3149-3189", chapter="cams",
-    inputs=("N", "RO", "EXCNTR", "W", "FI", "A", "V", "S", "ALD"),
-    outputs=("XA", "YA", "R1", "DELTA", "ALFA", "ROK", "ALFMAX", "NOVER"),
-    tables={"FI": "N", "A": "N", "V": "N", "S": "N"},
-    lengths=("RO",),
-    defaults={"ALD": math.pi / 6.0},
+DPRFLP = describe(
+    _w.DPRFLP, listing="V.2", lines="L3149-3189",
     checks=(
         _positive("W", "the angular velocity of the cam"),
         _open_angle("ALD"),
-        Check(lambda RO, S, **_: bool(np.any(RO + np.asarray(S) <= 0.0)), ST_REQUIREMENT,
+        Check(lambda RO, S, **_: bool((np.asarray(S) <= -RO).any()), ST_REQUIREMENT,
               "RO + S <= 0 at some point: the follower would pass the cam centre and the "
               "pressure angle reach 90 degrees (RO is smaller than the motion needs)"),
     ),
@@ -171,25 +140,6 @@ centre; its tip is at C from the foot of that distance):
   profile's normal at the tip and the follower's axis;
 * ``ROK = 1/OMEGA``, ``OMEGA = (C cos(ALFA) + s' sin(ALFA) cos(ALFA)**2
   - s'' cos(ALFA)**3)/C**2``, the exact curvature of this profile.
-
-Parameters
-----------
-N : int
-    Number of points; must equal the length of the tables.
-RO : float
-    The follower's axial distance at S = 0 (m), > 0: DKLCHK's RO.
-EXCNTR : float
-    Offset e of the follower's axis (m), any sign: DKLCHK's EXCST.
-W : float
-    Angular velocity of the cam (1/s), > 0.
-FI : array_like, shape (N,)
-    Cam angles (rad), in any order and spacing: every point is computed on its own
-    (only the tables' integration, e.g. by DINTGR, needs a uniform step).
-A, V, S : array_like, shape (N,)
-    Acceleration (m/s^2), velocity (m/s) and displacement (m) of the follower.
-ALD : float, optional
-    sarkp extension: the allowed pressure angle (rad) for ``NOVER``; default pi/6 (30
-    degrees, the usual limit for a translating follower).
 
 Returns
 -------
@@ -227,11 +177,8 @@ leaves only the digits of ``pi/2 - ALFA`` that ALFA holds: ``DPRFLP(1, 1e-14, 0.
 
 # ---- V.3 DPRFPL ------------------------------------------------------------------------
 
-DPRFPL = book_routine(
-    "DPRFPL", listing="V.3", lines="L3213-3257", chapter="cams",
-    inputs=("N", "GAMMA", "W", "FI", "A", "V", "S"),
-    outputs=("XA", "YA", "R1", "DELTA", "ROK", "RKSH", "ROKMIN", "NCONC"),
-    tables={"FI": "N", "A": "N", "V": "N", "S": "N"},
+DPRFPL = describe(
+    _w.DPRFPL, listing="V.3", lines="L3213-3257",
     checks=(
         _positive("W", "the angular velocity of the cam"),
         _open_angle("GAMMA"),
@@ -253,22 +200,6 @@ smallest radius that keeps the profile convex over the whole cycle is
 * ``R1 = sqrt(C**2 + s'**2)``, ``DELTA = atan(XA/YA)``, ``ROK = C + s''``.
 
 The pressure angle of a flat face perpendicular to its axis is 0 everywhere.
-
-Parameters
-----------
-N : int
-    Number of points; must equal the length of the tables.
-GAMMA : float
-    Design angle (rad), 0 < GAMMA < pi/2.  GAMMA = pi/4 makes ROK = 0 at the point of
-    the smallest acceleration (Fig. 36); a larger GAMMA gives a smaller cam whose
-    profile is concave there (program X uses pi/3, Fig. 89).
-W : float
-    Angular velocity of the cam (1/s), > 0.
-FI : array_like, shape (N,)
-    Cam angles (rad), in any order and spacing: every point is computed on its own
-    (only the tables' integration, e.g. by DINTGR, needs a uniform step).
-A, V, S : array_like, shape (N,)
-    Acceleration (m/s^2), velocity (m/s) and displacement (m) of the follower.
 
 Returns
 -------
@@ -305,13 +236,8 @@ def _sin_psi_zero(PSI, ETAO, **_):
     return bool(np.any(np.sin(np.asarray(PSI) + ETAO) == 0.0))
 
 
-DPRFLK = book_routine(
-    "DPRFLK", listing="V.4", lines="L3270-3320", chapter="cams",
-    inputs=("N", "W1", "ETAO", "FI", "RO", "L", "R", "E2", "W2", "PSI", "ALD"),
-    outputs=("XA", "YA", "R1", "DELTA", "RKRZVN", "ALFA", "ALFMAX", "NOVER"),
-    tables={"FI": "N", "E2": "N", "W2": "N", "PSI": "N"},
-    lengths=("L", "R"),
-    defaults={"ALD": math.pi / 4.0},
+DPRFLK = describe(
+    _w.DPRFLK, listing="V.4", lines="L3270-3320",
     checks=(
         _positive("W1", "the angular velocity of the cam"),
         _open_angle("ALD"),
@@ -338,30 +264,6 @@ is its angle from the line O2-O1.  With ``psi' = W2/W1`` and ``psi'' = E2/W1**2`
   the profile's normal and the velocity of the rocker's tip;
 * ``RKRZVN = C1/C2`` with ``C1 = (L**2 + R**2 (1+psi')**2 - 2 L R (1+psi') cos(psi))**1.5``
   and ``C2 = L**2 + R**2 (1+psi')**3 - L R (cos(psi) (1+psi') (2+psi') + psi'' sin(psi))``.
-
-Parameters
-----------
-N : int
-    Number of points; must equal the length of the tables.
-W1 : float
-    Angular velocity of the cam (1/s), > 0.
-ETAO : float
-    Initial angle of the rocker (rad): DKLCHK's ETAO for INDEX = 2.
-FI : array_like, shape (N,)
-    Cam angles (rad), in any order and spacing: every point is computed on its own
-    (only the tables' integration, e.g. by DINTGR, needs a uniform step).
-RO : float
-    Radius of the cam; not used, as printed.
-L : float
-    Centre distance O1-O2 (m), > 0.
-R : float
-    Rocker length (m), > 0.
-E2, W2, PSI : array_like, shape (N,)
-    Angular acceleration (rad/s^2), angular velocity (rad/s) and angle (rad) of the
-    rocker.
-ALD : float, optional
-    sarkp extension: the allowed pressure angle (rad) for ``NOVER``; default pi/4 (45
-    degrees, the usual limit for a rocker).
 
 Returns
 -------

@@ -24,7 +24,8 @@ import math
 import numpy as np
 
 from .errors import RangeError, RequirementError, Status
-from .library import ST_REQUIREMENT, Check, as_real_array, book_routine
+from . import _wrap_dynamics as _w
+from .library import ST_REQUIREMENT, Check, as_real_array, describe
 from .modes import get_mode
 from .results import result_type
 
@@ -32,16 +33,11 @@ __all__ = ["DZKNDV", "DMHVK", "DMHVK_EXACT", "motion", "flywheel", "Motion", "Fl
 
 _COUNT = range(2, 2**31 - 1)
 
-DZKNDV = book_routine(
-    "DZKNDV", listing="VIII.1", lines="L5935-5990", chapter="dynamics",
-    inputs=("M", "ZM", "W1", "ISC", "MPR", "ISPR", "AAA"),
-    outputs=("AS", "ASUM", "EV", "DEC", "WPR", "EPR"),
-    tables={"MPR": "M", "ISPR": "M"}, integers={"M": _COUNT},
-    nonnegative=("W1", "ISC", "ISPR"), nonzero=("W1", "ISC"),
+DZKNDV = describe(
+    _w.DZKNDV, listing="VIII.1", lines="L5935-5990",
     checks=(Check(lambda M, ZM, **_: ZM != M, ST_REQUIREMENT,
                   "ZM must equal M: the book passes the number of points twice, as an "
                   "integer and as a real (the step is 2*pi/(ZM - 1))"),),
-    kept={ST_REQUIREMENT: ("AS", "ASUM", "EV", "DEC")},
     messages={ST_REQUIREMENT: "the kinetic energy would go negative: no steady motion "
                               "with the mean speed W1 has real speeds (the machine would "
                               "stall). Size a flywheel from DEC (DEC does not depend on "
@@ -53,27 +49,6 @@ DZKNDV = book_routine(
     Listing VIII.1 (L5939-5990), block diagram Fig. 70, eqs. (8.13)-(8.17), operator
     function (8.18).  The book's call is ``CALL DZKNDV(M, ZM, W1, ISC, MPR, ISPR, AAA, AS,
     ASUM, EV, DEC, WPR, EPR)``.
-
-    Parameters
-    ----------
-    M : int
-        Number of points (>= 2), covering exactly one cycle phi = 0 .. 2*pi, both ends
-        included; equals ``len(MPR)``.
-    ZM : float
-        M again, as a real (the book passes both); must equal M.
-    W1 : float
-        Mean angular velocity omega_sr = (omega_max + omega_min)/2 of the reduction link
-        (rad/s, > 0; the book's definition, L6044).
-    ISC : float
-        Constant part J_c of the reduced moment of inertia (kg*m^2, > 0).
-    MPR : array_like, shape (M,)
-        Reduced moment of the forces at the M points (N*m), positive where it does
-        positive work on the reduction link (in the book's program X the moment of the
-        group reactions on the crank, M1 of Fig. 94).
-    ISPR : array_like, shape (M,)
-        Variable part J_v(phi) of the reduced moment of inertia (kg*m^2, >= 0).
-    AAA : float, optional
-        The book's print flag; unused.
 
     Returns
     -------
@@ -125,11 +100,8 @@ DZKNDV = book_routine(
     The printed DINTGR writes a line to unit 3 on every call; nothing is printed here.
     """)
 
-DMHVK = book_routine(
-    "DMHVK", listing="VIII.2", lines="L6052-6082", chapter="dynamics",
-    inputs=("N", "DELTA", "ISC", "W1", "DEC", "AAA"), outputs=("IMHVK",),
-    tables={"DEC": "N"}, integers={"N": range(1, 2**31 - 1)},
-    nonnegative=("ISC", "W1"), nonzero=("ISC", "W1"),
+DMHVK = describe(
+    _w.DMHVK, listing="VIII.2", lines="L6052-6082",
     checks=(Check(lambda DELTA, **_: not 0.0 < DELTA < 1.0, ST_REQUIREMENT,
                   "DELTA, the coefficient of speed fluctuation (omega_max - omega_min)/"
                   "omega_sr, must lie in (0, 1)"),),
@@ -139,27 +111,6 @@ DMHVK = book_routine(
     (DELTA*W1**2) - ISC``, the flywheel that keeps the coefficient of speed fluctuation
     (omega_max - omega_min)/W1 at DELTA, neglecting the variable part J_v of the reduced
     inertia (J_A = J_B = J_c, L6034).
-
-    Parameters
-    ----------
-    N : int
-        Number of values in DEC; equals ``len(DEC)``.
-    DELTA : float
-        Coefficient of speed fluctuation, in (0, 1).
-    ISC : float
-        Constant part J_c of the reduced moment of inertia (kg*m^2, > 0).
-    W1 : float
-        Mean angular velocity of the reduction link (rad/s, > 0).
-    DEC : array_like, shape (N,)
-        The change of the kinetic energy of the constant-inertia links over the cycle,
-        DZKNDV's ``DEC`` (J).  An input: the listing's comment puts it under RESULT
-        (ERRATA E-DMHVK-2).
-    AAA : float, optional
-        The print flag, unused.  The listing has 6 arguments, without AAA; the only call
-        in the book (program X, L7631) passes 7, with AAA before IMHVK as every routine of
-        the library has it, and its printed result IMH = 4507.27 (L7203) shows that call
-        ran: the flag is kept (ERRATA E-DMHVK-1).  ``DMHVK(N, DELTA, ISC, W1, DEC)`` works
-        too.
 
     Returns
     -------

@@ -35,7 +35,8 @@ from __future__ import annotations
 
 import numpy as np
 
-from .library import as_real_array, book_routine
+from . import _wrap_forces as _w
+from .library import as_real_array, describe
 
 __all__ = ["DNMAF1", "DNMAF2", "DNMAF3", "DNMAF4", "DNMAF5",
            "DNMA1", "DNMA2", "DNMA3", "DNMA4", "DNMA5", "DUGL6", "balancing_moment"]
@@ -80,12 +81,8 @@ _MODES = """    Corrected and as-printed modes differ only by PI (3.14159 as pri
     figure depends on the errors corrected in this routine."""
 
 
-DNMAF1 = book_routine(
-    "DNMAF1", listing="VII.2", lines="L5055-5087", chapter="forces",
-    inputs=("XA", "YA", "XB", "YB", "XC", "YC", "XS2", "YS2", "F2", "G2", "XS3", "YS3", "F3",
-            "G3", "T2", "T3", "AAA"),
-    outputs=("F21", "G21", "F23", "G23", "F34", "G34"),
-    nonnegative=("F2", "F3"),
+DNMAF1 = describe(
+    _w.DNMAF1, listing="VII.2", lines="L5055-5087",
     messages={3: _NEAR, 2: "A, B and C are collinear (the dyad is stretched or folded) or two of "
                  "them coincide: the reactions have no finite value"},
     doc=f"""Reactions in a group of the first kind (RRR), projection method.
@@ -97,13 +94,6 @@ DNMAF1 = book_routine(
     Listing VII.2 (L5059-5087), Table 28, Fig. 53.  F12 is split into its component normal
     to AB (link 2's moments about B) and along AB (the group's moments about C); then
     F23 = F12 + F2 and F34 = F23 + F3.
-
-    Parameters
-    ----------
-    XA, YA, XB, YB, XC, YC : float or array_like
-        Centres of the revolutes A (link 2 on link 1), B (links 2, 3) and C (link 3 on
-        link 4), m.
-{_LOADS_F}
 
     Returns
     -------
@@ -119,12 +109,8 @@ DNMAF1 = book_routine(
 {_MODES}
     """)
 
-DNMAF2 = book_routine(
-    "DNMAF2", listing="VII.1", lines="L4988-5020", chapter="forces",
-    inputs=("XA", "YA", "XB", "YB", "FIM", "XS2", "YS2", "F2", "G2", "XS3", "YS3", "F3",
-            "G3", "T2", "T3", "AAA"),
-    outputs=("F21", "G21", "F23", "G23", "F34", "G34", "H34"),
-    nonnegative=("F2", "F3"),
+DNMAF2 = describe(
+    _w.DNMAF2, listing="VII.1", lines="L4988-5020",
     messages={3: _NEAR, 2: "AB is perpendicular to the guide, or A = B: the reactions have no "
                  "finite value"},
     doc=f"""Reactions in a group of the second kind (RRP), projection method.
@@ -136,14 +122,6 @@ DNMAF2 = book_routine(
     Listing VII.1 (L4992-5020), Table 27, Fig. 52, eqs. (7.3)-(7.10).  The group is
     projected on the guide m (the guide's reaction has no component along it), link 2's
     moments about B give F12's component normal to m.
-
-    Parameters
-    ----------
-    XA, YA, XB, YB : float or array_like
-        Centres of the revolutes A (link 2 on link 1) and B (links 2, 3), m.
-    FIM : float or array_like
-        Direction of the guide m of the prismatic pair C (slider 3 on link 4), rad.
-{_LOADS_F}
 
     Returns
     -------
@@ -161,12 +139,8 @@ DNMAF2 = book_routine(
 {_MODES}
     """)
 
-DNMAF3 = book_routine(
-    "DNMAF3", listing="VII.4", lines="L5179-5210", chapter="forces",
-    inputs=("XA", "YA", "XC", "YC", "FI3", "XS2", "YS2", "F2", "G2", "XS3", "YS3", "F3",
-            "G3", "T2", "T3", "AAA"),
-    outputs=("F21", "G21", "F23", "G23", "H23", "F34", "G34"),
-    nonnegative=("F2", "F3"),
+DNMAF3 = describe(
+    _w.DNMAF3, listing="VII.4", lines="L5179-5210",
     messages={3: _NEAR, 2: "CA is perpendicular to the guide of link 3, or A = C: the reactions have "
                  "no finite value"},
     doc=f"""Reactions in a group of the third kind (RPR), projection method.
@@ -178,15 +152,6 @@ DNMAF3 = book_routine(
     Listing VII.4 (L5181-5210), Table 30, Fig. 55.  Link 2 (a slider pivoted at A)
     slides along link 3, which is pivoted at C.  Link 2 projected on the guide gives F12's
     component along it, the group's moments about C the normal one.
-
-    Parameters
-    ----------
-    XA, YA, XC, YC : float or array_like
-        Centres of the revolutes A (link 2 on link 1) and C (link 3 on link 4), m.
-    FI3 : float or array_like
-        Direction of the guide on link 3 along which link 2 slides, rad (printed ``F/3``
-        and ``F13``: ERRATA E-DNMAF3-1).
-{_LOADS_F}
 
     Returns
     -------
@@ -200,12 +165,8 @@ DNMAF3 = book_routine(
 {_MODES}
     """)
 
-DNMAF4 = book_routine(
-    "DNMAF4", listing="VII.3", lines="L5116-5149", chapter="forces",
-    inputs=("FIM", "FIN", "XB", "YB", "XS2", "YS2", "F2", "G2", "XS3", "YS3", "F3", "G3",
-            "T2", "T3", "AAA"),
-    outputs=("F21", "G21", "H21", "F23", "G23", "F34", "G34", "H34"),
-    nonnegative=("F2", "F3"),
+DNMAF4 = describe(
+    _w.DNMAF4, listing="VII.3", lines="L5116-5149",
     messages={3: _NEAR, 2: "the guides FIM and FIN are parallel: the reactions have no finite "
                  "value"},
     doc=f"""Reactions in a group of the fourth kind (PRP), projection method.
@@ -216,15 +177,6 @@ DNMAF4 = book_routine(
 
     Listing VII.3 (L5118-5149), Table 29, Fig. 54.  The group projected on the guide n
     gives F12 (normal to m); then F23 = F12 + F2 and F34 = F23 + F3.
-
-    Parameters
-    ----------
-    FIM, FIN : float or array_like
-        Directions of the guides of the prismatic pairs A (link 2 on link 1) and C
-        (link 3 on link 4), rad.
-    XB, YB : float or array_like
-        Centre of the revolute B joining links 2 and 3, m.
-{_LOADS_F}
 
     Returns
     -------
@@ -243,12 +195,8 @@ DNMAF4 = book_routine(
 {_MODES}
     """)
 
-DNMAF5 = book_routine(
-    "DNMAF5", listing="VII.5", lines="L5233-5268", chapter="forces",
-    inputs=("XA", "YA", "FIM", "TT3", "XS2", "YS2", "F2", "G2", "XS3", "YS3", "F3", "G3",
-            "T2", "T3", "AAA"),
-    outputs=("F21", "G21", "F32", "G32", "H32", "F34", "G34", "H34"),
-    nonnegative=("F2", "F3"),
+DNMAF5 = describe(
+    _w.DNMAF5, listing="VII.5", lines="L5233-5268",
     messages={3: _NEAR, 2: "the inner guide is parallel to the outer one (TT3 = 0 or pi): the "
                  "reactions have no finite value"},
     doc=f"""Reactions in a group of the fifth kind (RPP), projection method.
@@ -259,17 +207,6 @@ DNMAF5 = book_routine(
 
     Listing VII.5 (L5235-5268), Table 31, Fig. 56.  Link 3 projected on the inner guide
     gives F43; then F32 = F43 + F3 and F21 = F32 + F2.
-
-    Parameters
-    ----------
-    XA, YA : float or array_like
-        Centre of the revolute A (link 2 on link 1), m.
-    FIM : float or array_like
-        Direction of the guide of pair C (link 3 slides on link 4), rad.
-    TT3 : float or array_like
-        Direction of the inner guide (pair B, link 2 slides in link 3) relative to FIM;
-        its absolute direction is FIM + TT3.
-{_LOADS_F}
 
     Returns
     -------
@@ -285,11 +222,8 @@ DNMAF5 = book_routine(
 {_MODES}
     """)
 
-DNMA1 = book_routine(
-    "DNMA1", listing="VII.6", lines="L5272-5318", chapter="forces",
-    inputs=("L2", "FI2", "L3", "FI3", "BS2", "BS3", "M2", "Q2", "G2", "M3", "Q3", "G3"),
-    outputs=("RA", "GA", "RB", "GB", "RC", "GC"),
-    lengths=("L2", "L3"), nonnegative=("Q2", "Q3"),
+DNMA1 = describe(
+    _w.DNMA1, listing="VII.6", lines="L5272-5318",
     messages={3: _NEAR, 2: "links 2 and 3 are aligned (FI2 parallel to FI3): the reactions have no "
                  "finite value"},
     doc=f"""Reactions in a group of the first kind (RRR), vector method.
@@ -301,18 +235,6 @@ DNMA1 = book_routine(
     Listing VII.6 (L5274-5318).  Each link's moments about B give the reaction's
     component normal to it, the group's force balance (a 2x2 GELG system) the components
     along the links.
-
-    Parameters
-    ----------
-    L2, FI2 : float or array_like
-        Length AB (m, > 0) and direction A->B (rad), as DPRM1 returns FI2.
-    L3, FI3 : float or array_like
-        Length CB and direction C->B, as DPRM1 returns FI3.
-    BS2, BS3 : float or array_like
-        Signed distances from B to the reduction points: **S2 = B + BS2 e(FI2)** and
-        **S3 = B + BS3 e(FI3)**, i.e. measured from B away from A (from C); a point
-        between A and B has a negative BS2 (ERRATA E-DNMA1-3).
-{_LOADS_Q}
 
     Returns
     -------
@@ -330,12 +252,8 @@ DNMA1 = book_routine(
 {_MODES}
     """)
 
-DNMA2 = book_routine(
-    "DNMA2", listing="VII.7", lines="L5320-5368", chapter="forces",
-    inputs=("L2", "FI2", "L3", "ETA", "FIO", "BS2", "BS3", "M2", "Q2", "G2", "M3", "Q3",
-            "G3"),
-    outputs=("RA", "GA", "RB", "GB", "RC", "HC", "GC"),
-    lengths=("L2",), nonnegative=("Q2", "Q3"),
+DNMA2 = describe(
+    _w.DNMA2, listing="VII.7", lines="L5320-5368",
     messages={3: _NEAR, 2: "AB is perpendicular to the guide: the reactions have no finite value"},
     doc=f"""Reactions in a group of the second kind (RRP), vector method.
 
@@ -344,22 +262,6 @@ DNMA2 = book_routine(
     group on the chain (DNMAF*'s F21 = -RA).
 
     Listing VII.7 (L5322-5368).
-
-    Parameters
-    ----------
-    L2, FI2 : float or array_like
-        Length AB (m, > 0) and direction A->B (rad).
-    L3 : float or array_like
-        Length of link 3; not used by the listing (kept in the book's argument list).
-    ETA : float or array_like
-        Direction of the line from B to S3 relative to the guide, rad.
-    FIO : float or array_like
-        Direction of the guide of pair C (printed ``F10`` in the header, ``FIO`` in the
-        body: ERRATA E-DNMA2-1), rad.
-    BS2, BS3 : float or array_like
-        Signed distances: **S2 = B + BS2 e(FI2)**, **S3 = B + BS3 e(FIO + ETA)**
-        (ERRATA E-DNMA2-3).
-{_LOADS_Q}
 
     Returns
     -------
@@ -374,12 +276,8 @@ DNMA2 = book_routine(
 {_MODES}
     """)
 
-DNMA3 = book_routine(
-    "DNMA3", listing="VII.8", lines="L5372-5413", chapter="forces",
-    inputs=("L2", "ETA2", "FI3", "CS2", "FICS2", "CS3", "FICS3", "AC", "FIAC", "M2", "Q2",
-            "G2", "M3", "Q3", "G3"),
-    outputs=("RA", "GA", "RB", "HB", "GB", "RC", "GC"),
-    lengths=("AC",), nonnegative=("CS2", "CS3", "Q2", "Q3"),
+DNMA3 = describe(
+    _w.DNMA3, listing="VII.8", lines="L5372-5413",
     messages={3: _NEAR, 2: "AC is perpendicular to the guide of link 3: the reactions have no finite "
                  "value"},
     doc=f"""Reactions in a group of the third kind (RPR), vector method.
@@ -391,21 +289,6 @@ DNMA3 = book_routine(
     Listing VII.8 (L5376-5413; no comment block is printed).  The group's moments about C
     give RA's component normal to AC, link 2's force balance (a 2x2 GELG system) its
     component along AC and RB.
-
-    Parameters
-    ----------
-    L2, ETA2 : float or array_like
-        Not used by the listing (kept in the book's argument list).
-    FI3 : float or array_like
-        Direction of the guide on link 3, rad.
-    CS2, FICS2, CS3, FICS3 : float or array_like
-        Lengths (m, >= 0) and directions of the vectors C->S2 and C->S3.
-    AC, FIAC : float or array_like
-        Length of AC (m, > 0) and its direction, which must be **A->C** (ERRATA
-        E-DNMA3-4): the printed ``DUGL3(FIAC, -PID2, RAT)`` acts as
-        ``DUGL3(FIAC, +PID2, RAT)`` because Fortran's SIGN keeps only the magnitude of its
-        first argument.
-{_LOADS_Q}
 
     Returns
     -------
@@ -422,12 +305,8 @@ DNMA3 = book_routine(
 {_MODES}
     """)
 
-DNMA4 = book_routine(
-    "DNMA4", listing="VII.9", lines="L5415-5460", chapter="forces",
-    inputs=("FIM", "ETA2", "FIN", "ETA3", "BS2", "BS3", "M2", "Q2", "G2", "M3", "Q3",
-            "G3"),
-    outputs=("RA", "HA", "GA", "RB", "GB", "RC", "HC", "GC"),
-    nonnegative=("Q2", "Q3"),
+DNMA4 = describe(
+    _w.DNMA4, listing="VII.9", lines="L5415-5460",
     messages={3: _NEAR, 2: "the guides FIM and FIN are parallel: the reactions have no finite "
                  "value"},
     doc=f"""Reactions in a group of the fourth kind (PRP), vector method.
@@ -437,17 +316,6 @@ DNMA4 = book_routine(
     group on the chain (DNMAF*'s F21 = -RA).
 
     The listing has no heading (L5415-5460); Table 33 numbers it VII.9.
-
-    Parameters
-    ----------
-    FIM, FIN : float or array_like
-        Directions of the guides of pairs A (link 2 on link 1) and C (link 3 on link 4).
-    ETA2, ETA3 : float or array_like
-        Directions of the lines B->S2, B->S3 relative to FIM and FIN.
-    BS2, BS3 : float or array_like
-        Signed distances: **S2 = B + BS2 e(FIM + ETA2)**, **S3 = B + BS3 e(FIN + ETA3)**
-        (ERRATA E-DNMA4-2).
-{_LOADS_Q}
 
     Returns
     -------
@@ -464,12 +332,8 @@ DNMA4 = book_routine(
 {_MODES}
     """)
 
-DNMA5 = book_routine(
-    "DNMA5", listing="VII.10", lines="L5464-5513", chapter="forces",
-    inputs=("ETA3", "FIM", "AS2", "AS3", "FIAS2", "FIAS3", "M2", "Q2", "G2", "M3", "Q3",
-            "G3"),
-    outputs=("RA", "GA", "RB", "HB", "GB", "RC", "HC", "GC"),
-    nonnegative=("AS2", "AS3", "Q2", "Q3"),
+DNMA5 = describe(
+    _w.DNMA5, listing="VII.10", lines="L5464-5513",
     messages={3: _NEAR, 2: "the inner guide is parallel to the outer one (ETA3 = 0 or pi): the "
                  "reactions have no finite value"},
     doc=f"""Reactions in a group of the fifth kind (RPP), vector method.
@@ -480,18 +344,6 @@ DNMA5 = book_routine(
 
     Printed under the heading "VII.9" (L5464); Table 33 numbers it VII.10 (ERRATA
     E-DNMA5-1).
-
-    Parameters
-    ----------
-    ETA3 : float or array_like
-        Direction of the inner guide (link 2 slides in link 3) relative to FIM.
-    FIM : float or array_like
-        Direction of the guide of link 3 on link 4.
-    AS2, AS3, FIAS2, FIAS3 : float or array_like
-        Lengths (m, >= 0) and directions of the segments joining A and the reduction
-        points; the directions run **from S to A**: S2 = A - AS2 e(FIAS2),
-        S3 = A - AS3 e(FIAS3) (ERRATA E-DNMA5-3).
-{_LOADS_Q}
 
     Returns
     -------
@@ -508,10 +360,8 @@ DNMA5 = book_routine(
 {_MODES}
     """)
 
-DUGL6 = book_routine(
-    "DUGL6", listing="(not printed)", lines="L5311, L5312, L5359, L5401",
-    chapter="forces", function=True,
-    inputs=("RN", "GN", "RT", "GT", "FI"), outputs=("DUGL6",),
+DUGL6 = describe(
+    _w.DUGL6, listing="(not printed)", lines="L5311, L5312, L5359, L5401",
     doc="""Direction of the sum of two vectors (sarkp's extension: DUGL6 is not printed).
 
     DNMA1 (L5311-5312), DNMA2 (L5359) and DNMA3 (L5401) call ``DUGL6(RAN, GAN, RAT, GAT,
@@ -521,15 +371,6 @@ DUGL6 = book_routine(
     the vector sum -- what DSMVKT gives the DNMAF routines for the same sum.  The proof is
     statics: with it every link of DNMA1-DNMA3 balances to rounding
     (tests/test_forces.py).
-
-    Parameters
-    ----------
-    RN, GN : float or array_like
-        Modulus and direction of the first (normal) component.
-    RT, GT : float or array_like
-        Modulus and direction of the second (tangential) component.
-    FI : float or array_like
-        The link's direction, passed by the book's calls; not needed.
 
     Returns
     -------

@@ -19,7 +19,8 @@ import math
 import numpy as np
 
 from .errors import RequirementError
-from .library import ST_REQUIREMENT, Check, book_routine
+from . import _wrap_gears as _w
+from .library import ST_REQUIREMENT, Check, describe
 from .results import result_type
 from .modes import book_pi, get_mode
 from .report import fortran_write
@@ -105,16 +106,8 @@ def dzbpl_report(KS, SHEMA, result=None) -> str:
     return fortran_write(_DZBPL_FORMAT, [int(SHEMA), z1, z2, z3, z4, int(KS)])
 
 
-DZBPL = book_routine(
-    "DZBPL", listing="VI.1", lines="L3720-3798", chapter="gears",
-    inputs=("KS", "P", "Q", "L2", "L3", "Z1MIN", "Z1MAX", "SHEMA", "ZKRN", "ZKRW", "DZ"),
-    outputs=("Z1", "Z2", "Z3", "Z4"),
-    integers={"KS": range(1, 101), "P": range(-1000, 1001), "Q": range(1, 1001),
-              "L2": range(1, 1001), "L3": range(1, 1001), "Z1MIN": range(1, 10001),
-              "Z1MAX": range(1, 10001), "SHEMA": (1, 2, 3), "ZKRN": range(1, 10001),
-              "ZKRW": range(1, 10001), "DZ": range(1, 10001)},
-    defaults={"ZKRN": 20, "ZKRW": 85, "DZ": 8},
-    example=(2, 4, 1, 1, 1, 13, 35, 1, 20, 85, 8),
+DZBPL = describe(
+    _w.DZBPL, listing="VI.1", lines="L3720-3798",
     checks=(
         Check(lambda P, **_: P == 0, ST_REQUIREMENT,
               "P = 0: the ratio i_1h = P/Q of the train must not be 0"),
@@ -128,6 +121,7 @@ DZBPL = book_routine(
               "no admissible tooth numbers: no z1 in [Z1MIN, Z1MAX] meets the ratio, "
               "coaxiality, assembly and neighbourhood conditions within ZKRN, ZKRW, DZ "
               "(the book prints 'ПРИ ЗАДАННЫХ УСЛОВИЯХ ПОДБОР ЧИСЕЛ ЗУБЬЕВ НЕВОЗМОЖЕН')"},
+    example=(2, 4, 1, 1, 1, 13, 35, 1, 20, 85, 8),
     doc="""Tooth numbers of a multi-satellite planetary train (listing VI.1, L3720-3798;
     Table 21, L3707-3714; text L3636-3806).
 
@@ -139,27 +133,6 @@ DZBPL = book_routine(
     Schemes: 1 = (a), (b): 1-2 external, 3-4 internal mesh, z1 + z2 = z4 - z3;
     2 = (v): both external, z1 + z2 = z4 + z3; 3 = (g): both internal (1 and 4 have
     internal teeth), z1 - z2 = z4 - z3.
-
-    Parameters
-    ----------
-    KS : int
-        Number of satellite blocks k (1..100).
-    P, Q : int
-        The ratio i_1h = P/Q in lowest terms (P != 0 may be negative, Q >= 1).
-    L2, L3 : int
-        z2 : z3 = L2 : L3, coprime (L2 != L3 for schemes 2 and 3).
-    Z1MIN, Z1MAX : int
-        The range of z1 (undercut, jamming, size).
-    SHEMA : int
-        1, 2 or 3 (see above).
-    ZKRN, ZKRW, DZ : int, optional
-        The book's COMMON /ZUB/ inputs, here arguments (sarkp extension), defaults the
-        book's (VI.2, L3815-3817): the least tooth number of an external wheel (20; the
-        classic undercut limit z >= 17 can be asked with 17) and of an internal wheel
-        (85), and the least tooth difference of an internal pair (8).  Each limit applies
-        where the book applies it: scheme 1, z2, z3 >= ZKRN, z4 >= ZKRW, z4 - z3 >= DZ;
-        scheme 2, z2, z3, z4 >= ZKRN; scheme 3, z1, z4 >= ZKRW, z2, z3 >= ZKRN,
-        z1 - z2, z4 - z3 >= DZ.
 
     Returns
     -------
@@ -247,13 +220,8 @@ def dkrkt_report(inputs, outputs=None, message=None) -> str:
     return "\n".join(out)
 
 
-DKRKT = book_routine(
-    "DKRKT", listing="VI.3", lines="L4019-4137", chapter="gears",
-    inputs=("M", "Z1", "Z2", "AW", "SDVIG", "AAA"),
-    outputs=("X1", "X2", "ALFAW"),
-    lengths=("M",), nonnegative=("AW",),
-    integers={"Z1": TEETH, "Z2": TEETH, "SDVIG": (0, 1, 2, 3)},
-    example=(4.0, 13.0, 34.0, 100.0, 0, 1.0),
+DKRKT = describe(
+    _w.DKRKT, listing="VI.3", lines="L4019-4137",
     checks=(
         Check(lambda AW, SDVIG, **_: (AW == 0.0) & (SDVIG == 0),
               ST_REQUIREMENT, "AW = 0 asks for a system of shifts: SDVIG must be 1, 2 or 3 "
@@ -277,6 +245,7 @@ DKRKT = book_routine(
         ST_NO_MESH: "AW is not above r_b1 + r_b2 = m (z1 + z2) cos(alpha)/2: no involute "
                     "mesh has this centre distance"},
     report=lambda i, o: dkrkt_report(i, o),
+    example=(4.0, 13.0, 34.0, 100.0, 0, 1.0),
     doc="""Profile-shift coefficients of a pair of spur gears and their operating pressure
     angle (listing VI.3, L4019-4137; (6.12)-(6.23), L3946-4009).
 
@@ -287,19 +256,6 @@ DKRKT = book_routine(
     1 avoids undercut (x = 1 - 0.5 z sin^2(alpha) below 17 teeth, else 0); 2 raises the
     contact strength (6.21); 3 equalizes the specific sliding (6.22)-(6.23); alpha_w then
     follows from inv alpha_w = inv alpha + 2 (x1 + x2) tan(alpha)/(z1 + z2) by DUGINV.
-
-    Parameters
-    ----------
-    M : float
-        Module (mm), > 0.
-    Z1, Z2 : float
-        Tooth numbers of pinion and wheel (whole numbers, 8 to 10000).
-    AW : float
-        Required centre distance (mm), or 0 to choose the shifts by SDVIG.
-    SDVIG : int
-        0, 1, 2 or 3 (used only when AW = 0, where it must be 1, 2 or 3).
-    AAA : float, optional
-        0 prints the book's report (FORMATs 25, 52, 55); anything else is silent.
 
     Returns
     -------
@@ -410,10 +366,8 @@ DKRKT = _explained(DKRKT)
 
 # ---- VI.4 DUGINV -----------------------------------------------------------------------
 
-DUGINV = book_routine(
-    "DUGINV", listing="VI.4", lines="L4153-4164, L4201-4217", chapter="gears",
-    inputs=("INVX", "XNACH", "TCHNST"), outputs=("DUGINV",), function=True,
-    lengths=("TCHNST",),
+DUGINV = describe(
+    _w.DUGINV, listing="VI.4", lines="L4153-4164, L4201-4217",
     checks=(Check(lambda INVX, **_: INVX < 0.0, ST_REQUIREMENT,
                   "INVX < 0: the involute tan x - x is never negative for 0 <= x < pi/2, "
                   "no angle has this involute"),),
@@ -421,16 +375,6 @@ DUGINV = book_routine(
     L4153-4164, L4201-4217; (6.24)-(6.25)).
 
     ``X = DUGINV(INVX, XNACH, TCHNST)``, a FUNCTION as in the book.
-
-    Parameters
-    ----------
-    INVX : float or array_like
-        The involute, >= 0.
-    XNACH : float or array_like
-        Start of the book's iteration (every call of the book passes PI/18).
-    TCHNST : float or array_like
-        The book's tolerance on the step, > 0 (its comment: 0.00001 gives one second of
-        arc).
 
     Returns
     -------
@@ -484,32 +428,17 @@ def _dgmtzk_report(i, o):
                       fortran_write(f6, [da, sa]), fortran_write(f7, [df])])
 
 
-DGMTZK = book_routine(
-    "DGMTZK", listing="VI.5", lines="L4245-4308", chapter="gears",
-    inputs=("M", "Z", "BETA", "X", "AAA"),
-    outputs=("D", "S", "DB", "SB", "DA", "SA", "DF", "XUR"),
-    lengths=("M",), integers={"Z": TEETH}, example=(4.0, 20.0, 0.1745, 0.0, 1.0),
+DGMTZK = describe(
+    _w.DGMTZK, listing="VI.5", lines="L4245-4308",
     checks=(_helix_ok(), _undercut("X", "Z", "BETA")),
     messages={ST_UNDERCUT: "undercut: X is below x_min of (6.15)/(6.17)",
               ST_POINTED: _POINTED, ST_INSIDE_BASE: _INSIDE_BASE},
     report=_dgmtzk_report,
+    example=(4.0, 20.0, 0.1745, 0.0, 1.0),
     doc="""Dimensions of one external involute gear (listing VI.5, L4245-4308; Table 22,
     L4230-4241).
 
     ``CALL DGMTZK(M, Z, BETA, X, AAA, D, S, DB, SB, DA, SA, DF)``.
-
-    Parameters
-    ----------
-    M : float or array_like
-        Normal module (mm), > 0.
-    Z : float or array_like
-        Number of teeth (a whole number, 8 to 10000).
-    BETA : float or array_like
-        Helix angle (rad), |BETA| < pi/2; 0 for a spur gear.
-    X : float or array_like
-        Profile-shift coefficient.
-    AAA : float, optional
-        0 prints the book's report (FORMATs 1-7, L4281-4306).
 
     Returns
     -------
@@ -566,13 +495,8 @@ def _involute_negative(xs_of, z_sum_of, beta=None):
     return bad
 
 
-DGMZPC = book_routine(
-    "DGMZPC", listing="VI.6", lines="L4410-4454", chapter="gears",
-    inputs=("M", "Z1", "Z2", "BETA", "X1", "X2", "BW", "AAA"),
-    outputs=("A", "XS", "ALFAW", "AW", "XY", "XUR", "E",
-             "DA1", "DA2", "ALFAA1", "ALFAA2", "SA1", "SA2"),
-    lengths=("M",), nonnegative=("BW",), integers={"Z1": TEETH, "Z2": TEETH},
-    example=(5.0, 11.0, 26.0, 0.0, 0.5, 0.5, 30.0, 1.0),
+DGMZPC = describe(
+    _w.DGMZPC, listing="VI.6", lines="L4410-4454",
     checks=(
         _helix_ok(), _undercut("X1", "Z1", "BETA"), _undercut("X2", "Z2", "BETA"),
         Check(_involute_negative(lambda k: k["X1"] + k["X2"], lambda k: k["Z1"] + k["Z2"],
@@ -585,26 +509,12 @@ DGMZPC = book_routine(
               ST_INSIDE_BASE: _INSIDE_BASE,
               ST_NO_MESH: "no mesh: inv alpha_w < 0 (X1 + X2 too negative)"},
     report=lambda i, o: fortran_write(_DGMZPC_FORMAT, [float(v) for v in o[:7]]),
+    example=(5.0, 11.0, 26.0, 0.0, 0.5, 0.5, 30.0, 1.0),
     doc="""Geometry of an external involute mesh (listing VI.6, L4410-4454; Table 23,
     L4398-4408).
 
     ``CALL DGMZPC(M, Z1, Z2, BETA, X1, X2, BW, AAA)``; the results are the book's
     COMMON /ZPC/ A, XS, ALFAW, AW, XY, XUR, E.
-
-    Parameters
-    ----------
-    M : float or array_like
-        Normal module (mm), > 0.
-    Z1, Z2 : float or array_like
-        Tooth numbers (whole numbers, 8 to 10000).
-    BETA : float or array_like
-        Helix angle (rad), |BETA| < pi/2.
-    X1, X2 : float or array_like
-        Shift coefficients.
-    BW : float or array_like
-        Face width (mm), >= 0.
-    AAA : float, optional
-        0 prints the book's report (FORMAT 1, L4445-4452).
 
     Returns
     -------
@@ -676,13 +586,8 @@ def _internal_involute_negative(shift_of, z_diff_of):
     return bad
 
 
-DGMZVN = book_routine(
-    "DGMZVN", listing="VI.7", lines="L4512-4631", chapter="gears",
-    inputs=("M", "Z1", "Z2", "X1", "X2", "ZO2", "DO", "XO", "DAO", "AAA"),
-    outputs=_ZVN,
-    lengths=("M", "DO", "DAO"),
-    integers={"Z1": TEETH, "Z2": range(TEETH.start + 1, TEETH.stop), "ZO2": TEETH},
-    example=(3.0, 16.0, 51.0, 0.25, 0.25, 25.0, 75.0, 0.17, 83.8, 1.0),
+DGMZVN = describe(
+    _w.DGMZVN, listing="VI.7", lines="L4512-4631",
     checks=(
         Check(lambda Z1, Z2, **_: Z2 <= Z1, ST_REQUIREMENT,
               "Z2, the wheel with internal teeth, must have more teeth than the pinion Z1"),
@@ -702,28 +607,12 @@ DGMZVN = book_routine(
               ST_POINTED: _POINTED + " (SA1 or SA2 <= 0)", ST_INSIDE_BASE: _INSIDE_BASE,
               ST_NO_MESH: "no mesh: inv alpha_w < 0 or inv alpha_w02 < 0"},
     report=_dgmzvn_report,
+    example=(3.0, 16.0, 51.0, 0.25, 0.25, 25.0, 75.0, 0.17, 83.8, 1.0),
     doc="""Geometry of an internal involute mesh whose wheel is cut by a shaper (listing
     VI.7, L4512-4631; Tables 24-25, L4489-4510, L4637-4646).  Spur gears.
 
     ``CALL DGMZVN(M, Z1, Z2, X1, X2, ZO2, DO, XO, DAO, AAA)``; the results are the
     book's COMMON /ZVN/.
-
-    Parameters
-    ----------
-    M : float or array_like
-        Module (mm), > 0.
-    Z1 : float or array_like
-        Teeth of the pinion (external teeth).
-    Z2 : float or array_like
-        Teeth of the wheel (internal teeth), > Z1.
-    X1, X2 : float or array_like
-        Shift coefficients of pinion and wheel (for the wheel positive away from its
-        axis: its teeth get thinner).
-    ZO2, DO, XO, DAO : float or array_like
-        The shaper that cuts the wheel: teeth (< Z2), reference diameter (> 0, unused, as
-        in the book), shift coefficient, tip diameter (> 0).
-    AAA : float, optional
-        0 prints the book's report (FORMATs 1, 2, L4604-4630).
 
     Returns
     -------
@@ -770,13 +659,8 @@ _DCHRVC_FORMAT = (
     "ЧЕРВЯЧНОГО КОЛЕСА - B2 = ',F7.3/' РАДИУС ВЫЕМКИ ПОВЕРХНОСТИ ВЕРШИН'/' ЗУБЬЕВ "
     "ЧЕРВЯЧНОГО КОЛЕСА - R = ',F7.3//)")
 
-DCHRVC = book_routine(
-    "DCHRVC", listing="VI.8", lines="L4737-4824", chapter="gears",
-    inputs=("M", "Q", "Z1", "Z2", "AW", "AAA"),
-    outputs=_CHRVC,
-    lengths=("M", "Q", "AW"),
-    integers={"Z1": range(1, 101), "Z2": range(1, 10001)},
-    example=(8.0, 10.0, 2.0, 39.0, 200.0, 1.0),
+DCHRVC = describe(
+    _w.DCHRVC, listing="VI.8", lines="L4737-4824",
     checks=(
         Check(lambda M, Z2, AW, **_: 2.0 * AW <= M * Z2,
               ST_REQUIREMENT, "AW <= M Z2/2: the worm's operating diameter DW1 = 2 AW - "
@@ -785,25 +669,11 @@ DCHRVC = book_routine(
     messages={ST_NO_MESH: "the worm's operating diameter DW1 = (q + 2x) m or the wheel's "
                           "tip diameter DA2 = m (z2 + 2 + 2x) would not be positive"},
     report=lambda i, o: fortran_write(_DCHRVC_FORMAT, [float(v) for v in o[:14]]),
+    example=(8.0, 10.0, 2.0, 39.0, 200.0, 1.0),
     doc="""Geometry of a cylindrical worm gear pair (listing VI.8, L4737-4824; Table 26,
     L4687-4703).
 
     ``CALL DCHRVC(M, Q, Z1, Z2, AW, AAA)``; the results are the book's COMMON /CHRVC/.
-
-    Parameters
-    ----------
-    M : float or array_like
-        Axial module (mm), > 0.
-    Q : float or array_like
-        Diameter factor q of the worm, > 0.
-    Z1 : float or array_like
-        Number of starts of the worm (whole).
-    Z2 : float or array_like
-        Teeth of the worm wheel (whole).
-    AW : float or array_like
-        Centre distance (mm), > M Z2/2.
-    AAA : float, optional
-        0 prints the book's report (FORMAT 1, L4795-4822).
 
     Returns
     -------

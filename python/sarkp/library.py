@@ -743,6 +743,3 @@ def declared_routines():
     return {n: getattr(sarkp, n) for n in sarkp.__all__
             if hasattr(getattr(sarkp, n, None), "spec")}
 
-
-# the chapters not yet written as argument lines (see _legacy.py)
-from ._legacy import book_routine, f2py_signature  # noqa: E402,F401
