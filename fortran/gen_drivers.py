@@ -840,8 +840,8 @@ def wrappers(module, procs, variables, source_name):
          "from typing import TYPE_CHECKING, Any, NamedTuple",
          "",
          "from . import _sarkp",
-         "from .library import (ArrayLike, Output, Out, OnError, Routine, Rule, _F, _I,",
-         "                      _mode, _new)",
+         "from .library import (ArrayLike, Output, Out, OnError, Routine, Rule, _A, _D, _F,",
+         "                      _I, _mode, _new)",
          "from .results import result_type",
          "",
          f"_drv = _sarkp.drv_{module}",
@@ -931,9 +931,53 @@ def _wrapper(module, p, variables):
         w.append(f"    return _{name}((" + _py_join(books, ",", " " * 8, 60) + ",), on_error, out)"
                  "  # type: ignore[no-any-return]")
     else:
+        w += _table_fast_path(p, name, cls, books)
         w.append(f"    return _{name}._call_tables((" + _py_join(books, ",", " " * 8, 60)
                  + ",), on_error)  # type: ignore[no-any-return]")
     return w
+
+
+def _table_fast_path(p, name, cls, books):
+    """The common case of a routine with counted tables: Python ints for the counts
+    (in their range), floats for the numbers, float64 arrays of the right shape for the
+    one-dimensional tables it only reads: the checks, one driver call and the result.
+    Anything else (and any failure) takes the general path."""
+    tables = [a for a in p.inputs if p.rules[a].table]
+    if any(len(p.rules[a].table) != 1 or p.args[a].intent != "in" or p.rules[a].destroyed
+           for a in tables):
+        return []
+    cond = []
+    reals = [p.rules[a].book for a in p.inputs if not p.rules[a].table
+             and a not in p.counts and p.rules[a].kind not in (K_INTEGER, K_BRANCH)]
+    if reals:
+        cond.append(" is ".join(["_F"] + [f"type({b})" for b in reals]))
+    for a in p.inputs:
+        r = p.rules[a]
+        if a in p.counts:
+            cond.append(f"type({r.book}) is _I and {r.lo} <= {r.book} <= {r.hi}")
+        elif r.table:
+            dim = r.table[0]
+            size = p.rules[dim].book if dim in p.rules else dim
+            cond.append(f"type({r.book}) is _A and {r.book}.dtype is _D and "
+                        f"{r.book}.shape == ({size},)")
+        elif r.kind in (K_INTEGER, K_BRANCH):
+            cond.append(f"(type({r.book}) is _F or type({r.book}) is _I)")
+    cond += ["on_error == 'raise'", f"_{name}.report is None"]
+    ints = any(p.rules[a].kind in (K_INTEGER, K_BRANCH) and a not in p.counts
+               for a in p.inputs)
+    named = ", ".join(f"{b}={b}" for b in books)
+    call = f"_drv.{p.name}_1(_mode(), " + _py_join(books + ["_k.status if _k else 0"], ",",
+                                                    " " * 12, 60) + ")"
+    w = ["    if (" + _py_join(" and ".join(cond).split(" "), "", "            ") + "):",
+         f"        _k = _{name}._skip(dict(" + _py_join(named.split(" "), "", " " * 12, 60)
+         + "), False) if _" + name + ".checks else None"]
+    if ints:                                        # a huge int: f2py's OverflowError
+        return w + ["        try:", f"            _o = {call}", "        except OverflowError:",
+                    "            pass", "        else:",
+                    "            if _o[-3] == 0 and _o[-2] == 0:",
+                    f"                return _new({cls}, _o[:-3])"]
+    return w + [f"        _o = {call}", "        if _o[-3] == 0 and _o[-2] == 0:",
+                f"            return _new({cls}, _o[:-3])"]
 
 
 def _py_join(items, sep, indent, width=88):

@@ -117,6 +117,7 @@ _SCALARS = frozenset({float, int, bool, np.float64, np.float32, np.int64, np.int
 _PACKAGE_DIR = os.path.dirname(os.path.abspath(__file__))
 # for the generated wrappers' common case
 _F, _I, _new, _mode = float, int, tuple.__new__, MODE_CODE.get
+_A, _D = np.ndarray, np.dtype(np.float64)
 
 # the screen kinds of gen_drivers.py
 K_REAL, K_POSITIVE, K_NONNEGATIVE, K_NONZERO, K_BRANCH, K_INTEGER = range(6)
