@@ -840,7 +840,7 @@ def wrappers(module, procs, variables, source_name):
          "from typing import TYPE_CHECKING, Any, NamedTuple",
          "",
          "from . import _sarkp",
-         "from .library import (ArrayLike, Output, Out, OnError, Routine, Rule, _A, _D, _F,",
+         "from .library import (ArrayLike, Output, Out, OnError, Routine, Rule, _A, _D, _F,  # noqa: F401",
          "                      _I, _mode, _new)",
          "from .results import result_type",
          "",
