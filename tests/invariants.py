@@ -592,7 +592,8 @@ def chk_dprm1(args, out, bound):
         else math.inf
     return worst(abs(np.hypot(*(B - A)) - rz2) / (L * t), abs(np.hypot(*(B - C)) - rz3) /
                  (L * t), angdiff(out.FI2, math.atan2(*(B - A)[::-1])) / t * min(rz2, rz3) /
-                 rz2, side_ok)
+                 rz2, angdiff(out.FI3, math.atan2(*(B - C)[::-1])) / t * min(rz2, rz3) /
+                 rz3, side_ok)
 
 
 def not_parallel(rng, fi):
@@ -673,6 +674,22 @@ def chk_dknma1(args, out, bound):
         else math.inf
     v = [abs(np.hypot(*(B - A)) - rz2) / (L * t), abs(np.hypot(*(B - C)) - rz3) / (L * t),
          side_ok]
+    # the link directions, and the relative motions of B about A and about C: velocity
+    # W x r, normal acceleration W^2 r, tangential E x r (r = A->B, C->B)
+    r2, r3 = B - A, B - C
+    s = min(rz2, rz3)
+    v += [angdiff(out.FI2, math.atan2(*r2[::-1])) * s / rz2 / t,
+          angdiff(out.FI3, math.atan2(*r3[::-1])) * s / rz3 / t]
+    Vr = max(abs(out.W2) * rz2, abs(out.W3) * rz3, 1e-300)
+    v += [rel(polar(out.VBA, out.ALBA) - out.W2 * kx(r2), Vr) / t,
+          rel(polar(out.VBC, out.ALBC) - out.W3 * kx(r3), Vr) / t]
+    if an != 1.0:
+        Ar = max(out.W2**2 * rz2 + abs(out.E2) * rz2, out.W3**2 * rz3 + abs(out.E3) * rz3,
+                 1e-300)
+        v += [abs(out.ABAN - out.W2**2 * rz2) / (Ar * t),
+              abs(out.ABCN - out.W3**2 * rz3) / (Ar * t),
+              rel(polar(out.ABAT, out.BBAT) - out.E2 * kx(r2), Ar) / t,
+              rel(polar(out.ABCT, out.BBCT) - out.E3 * kx(r3), Ar) / t]
     V = max(va, vc, out.VB, 1e-300)
     h = 1e-4 * timescale([rz2, rz3], [va, vc])
     v.append(fd_vs(lambda s: (lambda o: None if o is None else
