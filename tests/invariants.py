@@ -319,7 +319,9 @@ def chk_dsntzr(args, out, bound):
         c = vec(lo[k], 0.0) + vec(l3, fi3[k])
         viol.append(abs(np.linalg.norm(c - b) - out.L2) /
                     (max(out.L1, out.L2, l3, lo[k]) * tol(1e-10)))
-    return worst(*viol)
+    # the transmission angle's extremes over the turn (a four-bar: LO the same 3 times)
+    mu = fourbar_mu(0.0, 0.0, lo[0], 0.0, out.L1, out.L2, l3)
+    return worst(*viol, chk_turn(mu, out))
 
 
 def circle_points(p, r1, q, r2):
@@ -1617,18 +1619,27 @@ def chk_dgmzpc(args, out, bound):
     y = (aw - a) / m
     dy = xs - y
     eps = 0.0
+    tips = []                          # (DA, ALFAA, SA) of each wheel, tips shortened by dy
     for z, x in ((z1, x1), (z2, x2)):
         d = m * z / math.cos(beta)
-        eps += z * math.tan(math.acos(d * math.cos(at) / (d + 2 * (1 + x - dy) * m)))
+        da = d + 2 * (1 + x - dy) * m
+        aa = math.acos(d * math.cos(at) / da)
+        st = m * (PI / 2 + 2 * x * math.tan(ALPHA)) / math.cos(beta)     # transverse
+        tips.append((da, aa, da * (st / d + inv(at) - inv(aa))))
+        eps += z * math.tan(aa)
     eps = (eps - (z1 + z2) * math.tan(out.ALFAW)) / (2 * PI) + \
         bw * abs(math.sin(beta)) / (PI * m)
+    got = ((out.DA1, out.ALFAA1, out.SA1), (out.DA2, out.ALFAA2, out.SA2))
+    tip_v = [abs(g - w) / (1e-9 * (1 + abs(w))) for gs, ws in zip(got, tips)
+             for g, w in zip(gs, ws)]
     # ALFAW through the involute equation (its root, to roundings of tan), the rest
     # from it; E to 1e-9 (the tip angles' arccos near their base circles)
     return worst(abs(inv(out.ALFAW) - inv_w) / (16 * U * (1 + inv_w) /
                                                 math.cos(out.ALFAW) ** 2),
                  abs(out.A - a) / (1e-13 * a), abs(out.XS - xs) / (1e-13 * (1 + abs(xs))),
                  abs(out.AW - aw) / (1e-12 * a), abs(out.XY - y) / (1e-9 * (1 + abs(y))),
-                 abs(out.XUR - dy) / (1e-9 * (1 + abs(dy))), abs(out.E - eps) / (1e-9 * eps))
+                 abs(out.XUR - dy) / (1e-9 * (1 + abs(dy))), abs(out.E - eps) / (1e-9 * eps),
+                 *tip_v)
 
 
 def gen_dkrkt(rng):
