@@ -841,6 +841,20 @@ def chk_dknma2(args, out, bound):
     v = [abs(np.hypot(*(B - A)) - rz2) / (L * t),
          abs((B - K) @ n - rz3 * math.sin(eta)) / (L * t),
          0.0 if ahead >= -t * L * 4 else math.inf]
+    # B about A: the direction of AB, the relative velocity W2 x r and v_B = v_A + W2 x r;
+    # the normal and tangential accelerations and a_B = a_A - W2^2 r + E2 x r
+    r2 = B - A
+    t2 = tol(bound, np.abs(np.r_[A, K]).max() + abs(fim) * np.hypot(*(A - K)), rz2)
+    Vr = max(abs(out.W2) * rz2, va, 1e-300)
+    v += [angdiff(out.FI2, math.atan2(*r2[::-1])) / t2,
+          rel(polar(out.VBA, out.ALBA) - out.W2 * kx(r2), Vr) / t2,
+          rel(polar(out.VB, out.ALB) - polar(va, ala) - out.W2 * kx(r2), Vr) / t2]
+    if an != 1.0:
+        Ar = max(out.W2**2 * rz2 + abs(out.E2) * rz2 + aa, 1e-300)
+        v += [abs(out.ABAN - out.W2**2 * rz2) / (Ar * t2),
+              rel(polar(out.ABAT, out.BBAT) - out.E2 * kx(r2), Ar) / t2,
+              rel(polar(out.AB, out.BB) - polar(aa, ba) + out.W2**2 * r2
+                  - out.E2 * kx(r2), Ar) / t2]
     h = 1e-4 * timescale([rz2], [va])
     V = max(va, out.VB, 1e-300)
     v.append(fd_vs(lambda s: (lambda o: None if o is None else
