@@ -990,6 +990,27 @@ def chk_dknma3(args, out, bound):
     # the velocity of A3 (link 3's point at A) = v_C + W3 k x CA
     v.append(rel(polar(out.VA3, out.ALA3) - polar(vc, alc) - out.W3 * kx(A - C),
                  V + W * L) / t)
+    # CB and the axis; A3 relative to C (W3 x CA) and to A (along the axis, v_A3 - v_A)
+    rca = A - C
+    vrel = polar(out.VA3, out.ALA3) - polar(va, ala)
+    v += [abs(out.RZBC - np.hypot(*(B - C))) / (max(L, rz2) * t),
+          abs(math.sin(out.FI3 - math.atan2(*(B - C)[::-1]))) * np.hypot(*(B - C)) /
+          (max(L, rz2) * t),
+          rel(polar(out.VAC, out.ALAC) - out.W3 * kx(rca), V + W * L) / t,
+          rel(polar(out.VAR, out.ALAR) - vrel, V + W * L) / t,
+          abs(cross(polar(out.VAR, out.ALAR), e(out.FI3))) / ((V + W * L) * t)]
+    if an != 1.0:
+        # in link 3's frame: a_A3 = a_C - W3^2 CA + E3 x CA, the Coriolis term 2 W3 x
+        # (v_A3 - v_A), the relative acceleration a_A3 - a_A - Coriolis (along the axis)
+        a3 = polar(ac, bc) - out.W3**2 * rca + out.E3 * kx(rca)
+        cor = 2 * out.W3 * kx(vrel)
+        Ar = aa + ac + (out.W3**2 + abs(out.E3)) * L + 2 * abs(out.W3) * np.hypot(*vrel) + \
+            1e-300
+        v += [abs(out.AACN - out.W3**2 * L) / (Ar * t),
+              rel(polar(out.AACT, out.BACT) - out.E3 * kx(rca), Ar) / t,
+              rel(polar(out.AA3, out.BA3) - a3, Ar) / t,
+              rel(polar(out.AAK, out.BAK) - cor, Ar) / t,
+              rel(polar(out.AAR, out.BAR) - (a3 - polar(aa, ba) - cor), Ar) / t]
     if an != 1.0:
         v.append(fd_vs(lambda s: (lambda o: None if o is None else [o.W3])(
             quiet("DKNMA3", *_dknma3_at(args, s))), h, [out.E3],
