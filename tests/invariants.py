@@ -106,7 +106,10 @@ def angdiff(a, b):
 
 
 def worst(*ratios):
-    return max([0.0] + [float(r) for r in ratios])
+    """The largest violation; a NaN (a check that could not be evaluated) counts as
+    infinite, never as passing."""
+    values = [float(np.max(r)) for r in ratios]
+    return max([0.0] + [math.inf if math.isnan(r) else r for r in values])
 
 
 def tol(bound, coords=0.0, scale=1.0):
@@ -1124,6 +1127,24 @@ def chk_dknma4(args, out, bound):
     t = tol(bound, np.abs(np.r_[A, C]).max(), L)
     v = [abs((B - A) @ kx(e(fim)) - rz2 * math.sin(t2)) / (L * t),
          abs((B - C) @ kx(e(fin)) - rz3 * math.sin(t3)) / (L * t)]
+    # B in the frames of the two turning guides: v_B = W x r + v_rel (v_rel along the
+    # guide), a_B = E x r - W^2 r + 2 W x v_rel + a_rel (a_rel along the guide)
+    rm, rn = B - A, B - C
+    vm, vn, vb = polar(out.VB2R, out.ALB2R), polar(out.VB3R, out.ALB3R), polar(out.VB, out.ALB)
+    Vs = max(out.VB, (abs(wm) + abs(wn)) * L, 1e-300)
+    v += [rel(vb - wm * kx(rm) - vm, Vs) / t, rel(vb - wn * kx(rn) - vn, Vs) / t,
+          abs(cross(vm, e(fim))) / (Vs * t), abs(cross(vn, e(fin))) / (Vs * t)]
+    if an != 1.0:
+        km, kn = 2 * wm * kx(vm), 2 * wn * kx(vn)
+        am, aN = polar(out.AB2R, out.BB2R), polar(out.AB3R, out.BB3R)
+        As = out.AB + (abs(em) + wm**2 + abs(en) + wn**2) * L + \
+            2 * (abs(wm) + abs(wn)) * Vs + 1e-300
+        ab = polar(out.AB, out.BB)
+        v += [rel(polar(out.AB2K, out.BB2K) - km, As) / t,
+              rel(polar(out.AB3K, out.BB3K) - kn, As) / t,
+              rel(ab - (em * kx(rm) - wm**2 * rm + km + am), As) / t,
+              rel(ab - (en * kx(rn) - wn**2 * rn + kn + aN), As) / t,
+              abs(cross(am, e(fim))) / (As * t), abs(cross(aN, e(fin))) / (As * t)]
     h = 1e-4 / max(abs(wm), abs(wn), 1e-300)
     V = max(out.VB, (abs(wm) + abs(wn)) * L)
     v.append(fd_vs(lambda s: (lambda o: None if o is None else
