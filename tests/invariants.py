@@ -626,7 +626,8 @@ def chk_dskor1(args, out, bound):
     vb2 = polar(vc, alc) + out.W3 * kx(r3)
     scale = va + vc + abs(out.W2) * rz2 + abs(out.W3) * rz3
     t = tol(bound, abs(fi2) + abs(fi3) + abs(ala) + abs(alc), 1.0)
-    return worst(rel(vb1 - vb2, scale) / t, rel(polar(out.VB, out.ALB) - vb1, scale) / t,
+    return worst(rel(polar(out.VBC, out.ALBC) - out.W3 * kx(r3), scale) / t,
+                 rel(vb1 - vb2, scale) / t, rel(polar(out.VB, out.ALB) - vb1, scale) / t,
                  abs(out.VBA - abs(out.W2) * rz2) / (scale * t),
                  rel(polar(out.VBA, out.ALBA) - out.W2 * kx(r2), scale) / t)
 
@@ -645,7 +646,9 @@ def chk_duskr1(args, out, bound):
     ab2 = polar(ac, bc) + out.E3 * kx(r3) - w3**2 * r3
     scale = aa + ac + w2**2 * rz2 + w3**2 * rz3 + abs(out.E2) * rz2 + abs(out.E3) * rz3
     t = tol(bound, abs(fi2) + abs(fi3) + abs(ba) + abs(bc), 1.0)
-    return worst(rel(ab1 - ab2, scale) / t, rel(polar(out.AB, out.BB) - ab1, scale) / t)
+    return worst(rel(polar(out.ABAT, out.BBAT) - out.E2 * kx(r2), scale) / t,
+                 rel(polar(out.ABCT, out.BBCT) - out.E3 * kx(r3), scale) / t,
+                 rel(ab1 - ab2, scale) / t, rel(polar(out.AB, out.BB) - ab1, scale) / t)
 
 
 def gen_dknma1(rng):
@@ -772,7 +775,8 @@ def chk_dprm2(args, out, bound):
     t = tol(bound, np.abs(np.r_[A, K]).max() + abs(fim) * np.hypot(*(A - K)), L)
     foot = A - so * n
     ahead = (B - foot) @ e(fim)
-    return worst(abs(np.hypot(*(B - A)) - rz2) / (L * t), abs((B - K) @ n - off) / (L * t),
+    return worst(angdiff(out.FI2, math.atan2(*(B - A)[::-1])) * rz2 / (L * t),
+                 abs(np.hypot(*(B - A)) - rz2) / (L * t), abs((B - K) @ n - off) / (L * t),
                  0.0 if ahead >= -t * L * 4 else math.inf)
 
 
@@ -788,7 +792,8 @@ def chk_dskor2(args, out, bound):
     vb2 = polar(vbm, albm) + polar(out.VBBM, out.ALBBM)
     scale = va + vbm + abs(out.W2) * rz2 + out.VBBM
     t = tol(bound, abs(fi2) + abs(fim) + abs(ala) + abs(albm), 1.0)
-    return worst(rel(vb1 - vb2, scale) / t, rel(polar(out.VB, out.ALB) - vb1, scale) / t,
+    return worst(rel(polar(out.VBA, out.ALBA) - out.W2 * kx(r2), scale) / t,
+                 rel(vb1 - vb2, scale) / t, rel(polar(out.VB, out.ALB) - vb1, scale) / t,
                  unit_dir_ok(out.ALBBM, fim) / t if out.VBBM > t * scale else 0.0)
 
 
@@ -805,7 +810,8 @@ def chk_duskr2(args, out, bound):
     ab2 = polar(abm, bvm) + polar(abk, bvk) + polar(out.ABVM, out.BVBM)
     scale = aa + abm + abk + w2**2 * rz2 + abs(out.E2) * rz2 + out.ABVM
     t = tol(bound, abs(fi2) + abs(fim) + abs(ba) + abs(bvm) + abs(bvk), 1.0)
-    return worst(rel(ab1 - ab2, scale) / t, rel(polar(out.AB, out.BB) - ab1, scale) / t,
+    return worst(rel(polar(out.ABAT, out.VBAT) - out.E2 * kx(r2), scale) / t,
+                 rel(ab1 - ab2, scale) / t, rel(polar(out.AB, out.BB) - ab1, scale) / t,
                  unit_dir_ok(out.BVBM, fim) / t if out.ABVM > t * scale else 0.0)
 
 
@@ -924,7 +930,8 @@ def chk_dskor3(args, out, bound):
     L = np.hypot(*r)
     scale = va + vc + abs(out.W3) * L + out.VA3A
     t = tol(bound, np.abs(np.r_[A, C]).max() / L + abs(fi3) + abs(ala) + abs(alc), 1.0)
-    return worst(rel(va3_1 - va3_2, scale) / t, rel(polar(out.VA3, out.ALA3) - va3_2, scale) / t,
+    return worst(rel(polar(out.VA3C, out.ALA3C) - out.W3 * kx(r), scale) / t,
+                 rel(va3_1 - va3_2, scale) / t, rel(polar(out.VA3, out.ALA3) - va3_2, scale) / t,
                  unit_dir_ok(out.ALA3A, fi3) / t if out.VA3A > t * scale else 0.0)
 
 
@@ -941,7 +948,8 @@ def chk_duskr3(args, out, bound):
     a2 = polar(aa, ba) + polar(aak, bak) + polar(out.AA3AR, out.BA3AR)
     scale = aa + ac + aak + w3**2 * rzac + abs(out.E3) * rzac + out.AA3AR
     t = tol(bound, abs(fi3) + abs(fica) + abs(ba) + abs(bc) + abs(bak), 1.0)
-    return worst(rel(a1 - a2, scale) / t, rel(polar(out.AA3, out.BA3) - a1, scale) / t,
+    return worst(rel(polar(out.AA3CT, out.BA3CT) - out.E3 * kx(r), scale) / t,
+                 rel(a1 - a2, scale) / t, rel(polar(out.AA3, out.BA3) - a1, scale) / t,
                  unit_dir_ok(out.BA3AR, fi3) / t if out.AA3AR > t * scale else 0.0)
 
 
