@@ -1,6 +1,7 @@
 """The book's programs on sarkp.Mechanism: program X's six-bar (x_mechanism), IV.15's
 and VII.10's mechanism of Fig. 29/57 (kinds 1-5), against their group-by-group corrected
-paths (the chapter 4 and 7 routines called one group at a time), to 1e-13 relative."""
+paths (the chapter 4 and 7 routines called one group at a time), to 1e-13 relative;
+IV.15's corrected compute() is the Mechanism path, read as the book's variables."""
 
 import math
 
@@ -66,7 +67,7 @@ def polar(t, v, a):
 @pytest.fixture(scope="module")
 def iv15():
     with sarkp.mode("corrected"):
-        t = prog_iv_15.compute()
+        t = prog_iv_15.compute_by_groups()
         r = prog_iv_15.mechanism().solve(t["FI"], omega=-prog_iv_15.CARD["W1"],
                                           need="accelerations")
     return t, r
@@ -144,3 +145,64 @@ def test_program_x_flywheel_from_the_mechanism(x_paths):
     r = m.solve(prog_x.crank_angles(), omega=1.0, need="forces", gravity=prog_x.G)
     assert close(r.reduced_inertia, ipr + fo["IS1"])
     assert close(r.reduced_moment, fo["M1"])
+
+
+# -- IV.15's corrected compute(): one Mechanism solve, the book's variables ---------------
+
+#: (modulus, direction) pairs of IV.15's velocities and accelerations
+IV15_VECTORS = (
+    ("VBA", "ALBA"), ("VBF", "ALBF"), ("VB", "ALB"), ("VC", "ALC"), ("VDC", "ALDC"),
+    ("VDE", "ALDE"), ("VD", "ALD"), ("VGH", "ALGH"), ("VGL", "ALGL"), ("VG", "ALG"),
+    ("VNM", "ALNM"), ("VNO1", "ALNO1"), ("VN", "ALN"), ("VPM", "ALPM"), ("VPN", "ALPN"),
+    ("VP", "ALP"), ("ABAT", "BBAT"), ("ABFT", "BBFT"), ("AB", "BB"), ("AC", "BC"),
+    ("ADCT", "BDCT"), ("ADE", "BDE"), ("AD", "BD"), ("AGH", "BGH"), ("AGL", "BGL"),
+    ("AG", "BG"), ("ANM", "BNM"), ("ANO1T", "BNO1T"), ("AN", "BN"), ("APR", "BPR"),
+    ("APS", "BPS"), ("AP", "BP"))
+
+
+@pytest.mark.parametrize("card", [{}, {"ROA": 0.2, "RCD": 0.7, "ROM": 0.35}])
+@pytest.mark.parametrize("sweep", ["book", "fine"])
+def test_iv15_compute_from_the_mechanism_agrees_with_the_groups(card, sweep):
+    """Every variable of corrected compute() (the Mechanism) against the book's call
+    sequence (compute_by_groups): numbers to 1e-13 of their column's scale, link angles
+    in the routines' ranges (DPRM1's FI2, FI3 up to 3 pi, DUGOL's FIO1P, FV), each
+    (modulus, direction) pair as a vector to 1e-13 of its largest modulus and its
+    direction on the routine's branch (DUGL3: FI +- pi/2, DUGL4: FIM or FIM - pi, DUGL5:
+    (-pi/2, 3 pi/2)) wherever the vector is not zero to rounding."""
+    fi = (prog_iv_15.crank_angles() if sweep == "book"
+          else np.linspace(0.0, -2.0 * math.pi, 1441) - 1e-3)
+    t = prog_iv_15.compute(card, angles=fi)
+    g = prog_iv_15.compute_by_groups(card, angles=fi)
+    assert t.keys() == g.keys()
+    directions = {d for _, d in IV15_VECTORS}
+    for name in t:
+        if name in directions:
+            continue
+        scale = max(np.max(np.abs(g[name])), 1e-300)
+        err = np.max(np.abs(t[name] - g[name]))
+        assert err <= TOL * scale, (name, err, scale)
+    for mod, ang in IV15_VECTORS:
+        scale = np.max(g[mod])
+        assert close(polar(t, mod, ang), polar(g, mod, ang), scale), mod
+        seen = g[mod] > 1e-9 * scale                      # a direction to compare
+        diff = np.abs(t[ang] - g[ang])[seen]
+        # DUGL5 gives -pi/2 for x = 0 exactly, the Mechanism's x is a rounding's -0
+        ends = np.isclose(g[ang][seen], -math.pi / 2, rtol=0, atol=1e-12) & \
+            np.isclose(t[ang][seen], 1.5 * math.pi, rtol=0, atol=1e-12)
+        assert np.all((diff <= 1e-9) | ends), (ang, diff.max())
+
+
+def test_iv15_compute_is_one_solve(monkeypatch):
+    from sarkp.mechanism import Mechanism
+    calls = []
+    solve = Mechanism.solve
+
+    def counted(self, *args, **kwargs):
+        calls.append(args[0])
+        return solve(self, *args, **kwargs)
+    monkeypatch.setattr(Mechanism, "solve", counted)
+    t = prog_iv_15.compute()
+    assert len(calls) == 1 and np.array_equal(calls[0], t["FI"])
+    with sarkp.as_printed():
+        prog_iv_15.compute()                       # the book's call sequence: no solve
+    assert len(calls) == 1
