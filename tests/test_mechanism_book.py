@@ -206,3 +206,44 @@ def test_iv15_compute_is_one_solve(monkeypatch):
     with sarkp.as_printed():
         prog_iv_15.compute()                       # the book's call sequence: no solve
     assert len(calls) == 1
+
+
+# -- r.animate(path) as MP4 (program X's six-bar) ------------------------------------------
+
+def _x_sweep(n=6):
+    with sarkp.mode("corrected"):
+        links = prog_x.synthesis()
+        return x_mechanism.mechanism(links).solve(np.linspace(0, 2 * math.pi, n),
+                                                  need="positions")
+
+
+def test_animate_writes_an_mp4(tmp_path):
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    from matplotlib import animation
+    if not animation.FFMpegWriter.isAvailable():
+        pytest.skip("ffmpeg is not installed (Debian: apt-get install ffmpeg)")
+    import shutil
+    import subprocess
+    out = _x_sweep(6).animate(tmp_path / "six.mp4", fps=5)
+    with open(out, "rb") as f:
+        head = f.read(12)
+    assert head[4:8] == b"ftyp"                    # an ISO base media (MP4) file
+    ffprobe = shutil.which("ffprobe")
+    if ffprobe:
+        frames = subprocess.run(
+            [ffprobe, "-v", "error", "-count_frames", "-select_streams", "v:0",
+             "-show_entries", "stream=nb_read_frames,codec_type", "-of", "csv=p=0", out],
+            capture_output=True, text=True, check=True).stdout.split(",")
+        assert frames[0] == "video" and int(frames[1]) == 6
+
+
+def test_animate_without_ffmpeg_names_it(tmp_path, monkeypatch):
+    pytest.importorskip("matplotlib")
+    import matplotlib
+    monkeypatch.setitem(matplotlib.rcParams, "animation.ffmpeg_path",
+                        str(tmp_path / "no-such-ffmpeg"))
+    r = _x_sweep(3)
+    with pytest.raises(RuntimeError, match="needs ffmpeg.*apt-get install ffmpeg"):
+        r.animate(tmp_path / "six.mp4")
+    assert not (tmp_path / "six.mp4").exists()

@@ -897,6 +897,10 @@ class _MechanismBase(Result):
         through ffmpeg: matplotlib's writers)."""
         import matplotlib.pyplot as plt
         from matplotlib import animation
+        if not str(path).endswith(".gif") and not animation.FFMpegWriter.isAvailable():
+            raise RuntimeError(f"animate: writing {str(path)!r} needs ffmpeg (matplotlib's "
+                               f"FFMpegWriter), which is not installed (Debian: apt-get "
+                               f"install ffmpeg); a .gif path needs only Pillow")
         pts, links, fixed = self._drawing()
         xs = np.concatenate([np.ravel(x) for x, _ in pts.values()])
         ys = np.concatenate([np.ravel(y) for _, y in pts.values()])
