@@ -105,7 +105,7 @@ def test_iv15_velocities_and_accelerations(iv15):
 
 def test_vii10_forces_and_balancing_moment():
     with sarkp.mode("corrected"):
-        t = prog_vii_10.compute()
+        t = prog_vii_10.compute_by_groups()
         m, FI = prog_vii_10.mechanism()
         r = m.solve(FI, omega=-prog_iv_15.CARD["W1"], epsilon=0.0, need="forces")
     # the program's forces are static: no masses in the Mechanism, so no inertia
@@ -247,3 +247,39 @@ def test_animate_without_ffmpeg_names_it(tmp_path, monkeypatch):
     with pytest.raises(RuntimeError, match="needs ffmpeg.*apt-get install ffmpeg"):
         r.animate(tmp_path / "six.mp4")
     assert not (tmp_path / "six.mp4").exists()
+
+
+# -- VII.10's corrected compute(): the force solve of the loaded Mechanism ----------------
+
+VII10_INERTIA = {"M2": 5.1, "J2": 0.09, "M3": 8.0, "J3": 0.25, "M4": 6.0, "J4": 0.17,
+                 "M5": 4.0, "M7": 10.2, "M9": 7.5, "J9": 0.12, "M11": 3.0}
+
+
+@pytest.mark.parametrize("inertia", [None, VII10_INERTIA])
+@pytest.mark.parametrize("card", [{}, {"ROA": 0.2, "RCD": 0.7, "ROM": 0.35, "FS2": 700.0}])
+def test_vii10_compute_from_the_mechanism_agrees_with_the_groups(card, inertia):
+    """Every force variable of corrected compute() (a Mechanism force solve) against the
+    book's call sequence (compute_by_groups: DNMAF1-5 one group at a time): moduli,
+    arms H, moments and MY to 1e-13 of their column's scale, each reaction as a vector
+    to 1e-13 of its largest modulus and its direction on the routine's branch (DSMVKT's
+    DUGL5, DUGL5 - pi, DUGL3(FIM, PI/2, F) - PI) wherever the force is not zero; the two
+    ends of DUGL5's range (-pi/2, 3 pi/2) name the same direction of a vertical force."""
+    fi = np.concatenate([prog_iv_15.crank_angles(),
+                         np.linspace(0.0, -2.0 * math.pi, 361) - 1e-3])
+    t = prog_vii_10.compute(card, angles=fi, inertia=inertia)
+    g = prog_vii_10.compute_by_groups(card, angles=fi, inertia=inertia)
+    assert t.keys() == g.keys()
+    forces = [k for k in prog_vii_10.COLUMNS if k[0] == "F" and k != "FI"] + ["F3", "F9"]
+    for name in forces + [k for k in prog_vii_10.COLUMNS if k[0] == "H"] + \
+            ["TM3", "TM9", "MY", "TMR", "FC1", "FC2", "FC3"]:
+        scale = max(np.max(np.abs(g[name])), 1e-300)
+        assert np.max(np.abs(t[name] - g[name])) <= TOL * scale, name
+    for f in forces:
+        ang = "G" + f[1:]
+        scale = np.max(g[f])
+        assert close(polar(t, f, ang), polar(g, f, ang), scale), f
+        seen = g[f] > 1e-9 * scale
+        a, b = t[ang][seen], g[ang][seen]
+        ends = np.isclose(np.minimum(a, b), -math.pi / 2, rtol=0, atol=1e-12) & \
+            np.isclose(np.abs(a - b), 2 * math.pi, rtol=0, atol=1e-12)
+        assert np.all((np.abs(a - b) <= 1e-9) | ends), (ang, np.abs(a - b).max())

@@ -35,7 +35,11 @@ As-printed mode gives the program as the book ran it: PI = 3.14159 (L2489), the 
 angle accumulated by ``FI = FI - DFI`` in the ES EVM's REAL*4 arithmetic, and the
 library routines' own as-printed switches -- notably DUSKR1's ``ABCT = ABS(Y(1))``
 (ERRATA E-DUSKR1-1), which changes E3 and with it every acceleration of groups 2 and 5
-(AC, BC, E4, AD, BD, AGH, BGH, AG, BG).  Corrected mode: exact pi, FI = -k*2*pi/24.
+(AC, BC, E4, AD, BD, AGH, BGH, AG, BG).  Corrected mode: exact pi, FI = -k*2*pi/24,
+and the mechanism described once as a :class:`sarkp.Mechanism` (:func:`mechanism`) and
+solved in one call (:func:`from_mechanism`); its joints and links are read as the book's
+variables, each direction in the range its routine gives (DUGOL, DUGL3-5), and agree with
+the book's call sequence (:func:`compute_by_groups`) to 1e-13 (tests/test_mechanism_book.py).
 
 Two columns that are not in the book are computed for the tests: ``SGL`` and ``SGH``,
 the positions of the kind-5 group from ``DPRM5`` (an extension of sarkp): H = (SGL, SGH),
