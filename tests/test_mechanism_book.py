@@ -283,3 +283,18 @@ def test_vii10_compute_from_the_mechanism_agrees_with_the_groups(card, inertia):
         ends = np.isclose(np.minimum(a, b), -math.pi / 2, rtol=0, atol=1e-12) & \
             np.isclose(np.abs(a - b), 2 * math.pi, rtol=0, atol=1e-12)
         assert np.all((np.abs(a - b) <= 1e-9) | ends), (ang, np.abs(a - b).max())
+
+
+def test_link_angles_stay_defined_where_the_mechanism_assembles():
+    """on_error="nan": r.angle is NaN where the mechanism does not assemble and the link's
+    direction where it does (np.unwrap over the sweep once spread one NaN to every later
+    position)."""
+    fi = -np.linspace(0.0, 4.0 * math.pi, 97)
+    r = prog_iv_15.mechanism({"RCD": 0.1}).solve(fi, omega=-2.0, on_error="nan")
+    bad = r.status != 0
+    assert bad.any() and not bad.all()
+    for p, q in (("F", "B"), ("O1", "N"), ("A", "B")):
+        a = r.angle(p, q)
+        assert np.isnan(a[bad]).all() and np.isfinite(a[~bad]).all()
+        d = r.position(q) - r.position(p)
+        assert same_angle(a[~bad], np.arctan2(d[~bad, 1], d[~bad, 0]))

@@ -784,7 +784,10 @@ class _MechanismBase(Result):
             return np.array(self.phi, dtype=float)
         d = self.directions[..., link.index - 1, :]
         shape = d.shape[:-1]
-        th = np.unwrap(np.arctan2(d[..., 1], d[..., 0]).reshape(-1)).reshape(shape)
+        th = np.arctan2(d[..., 1], d[..., 0]).reshape(-1)
+        ok = ~np.isnan(th)                  # on_error="nan": unwrap across the failed positions
+        th[ok] = np.unwrap(th[ok])
+        th = th.reshape(shape)
         if Q is None or link.name == (P, Q) or not self.mechanism._rigid_name(link, P, Q):
             return th
         r = self.position(Q) - self.position(P)
