@@ -334,11 +334,12 @@ def test_dgmzpc_external_mesh(m, z1, z2, beta, dx1, dx2, bw):
 
 
 @SETTINGS
-@given(modules, st.integers(10, 120), st.integers(10, 120), st.floats(1e-6, 1.0),
-       st.floats(1e-6, 1.0))
+@given(modules, st.integers(12, 120), st.integers(12, 120), st.floats(1e-6, 0.5),
+       st.floats(1e-6, 0.5))
 def test_dgmtzk_tip_is_the_mesh_tip_without_shortening(m, z1, z2, dx1, dx2):
-    """DGMTZK's DA has no tip shortening (XUR = 0 says so): it is DGMZPC's DA1 + 2 dy m."""
-    x1, x2 = float(x_min(z1) + dx1), float(x_min(z2) + dx2)
+    """DGMTZK's DA has no tip shortening (XUR = 0 says so): it is DGMZPC's DA1 + 2 dy m.
+    (Shifts from max(x_min, 0) up by at most 0.5: gears neither undercut nor pointed.)"""
+    x1, x2 = (float(max(x_min(z), 0) + dx) for z, dx in ((z1, dx1), (z2, dx2)))
     try:
         mesh = DGMZPC(m, z1, z2, 0.0, x1, x2, 0.0)
         gear = DGMTZK(m, z1, 0.0, x1)
