@@ -83,7 +83,7 @@ def per_position():
 class DNMA1Loop:
     """dnma1.c (the same statics, written by hand) compiled with cc -O3 -march=native into
     a temporary directory, called through ctypes; the outputs allocated per call, as
-    sarkp does."""
+    sarkp does.  ``loop`` takes every input per position, ``const`` the loads once."""
 
     FLAGS = ["-O3", "-march=native", "-shared", "-fPIC"]
 
@@ -98,21 +98,31 @@ class DNMA1Loop:
         self.cmd = " ".join(["cc", *self.FLAGS, "dnma1.c", "-lm"])
         self._lib = ctypes.CDLL(str(lib))
         arr = np.ctypeslib.ndpointer(np.float64, flags="C_CONTIGUOUS")
-        self._lib.dnma1_loop.argtypes = [ctypes.c_long] + [arr] * 4 + [ctypes.c_double] * 8 \
-            + [arr]
-        self._lib.dnma1_loop.restype = ctypes.c_long
+        self._lib.dnma1_loop.argtypes = [ctypes.c_long] + [arr] * 12 + [arr]
+        self._lib.dnma1_const.argtypes = [ctypes.c_long] + [arr] * 4 + \
+            [ctypes.c_double] * 8 + [arr]
+        self._lib.dnma1_loop.restype = self._lib.dnma1_const.restype = ctypes.c_long
 
-    def __call__(self, l2, fi2, l3, fi3, bs2, bs3, m2, q2, g2, m3, q3, g3):
-        n = fi2.size
+    def loop(self, *args):
+        n = args[1].size
         out = np.empty((6, n))
-        self._lib.dnma1_loop(n, l2, fi2, l3, fi3, bs2, bs3, m2, q2, g2, m3, q3, g3, out)
+        self._lib.dnma1_loop(n, *args, out)
+        return out
+
+    def const(self, *args):
+        n = args[1].size
+        out = np.empty((6, n))
+        self._lib.dnma1_const(n, *args, out)
         return out
 
 
 def dnma1_head_to_head():
     """sarkp.DNMA1 (corrected mode: the Cartesian path; as-printed: the printed form) on
-    arrays against the hand-written C loop of the same formula, N positions of the
-    crank-rocker above; and their largest difference (the same formula: rounding)."""
+    arrays against the hand-written C loop of the same formula over N positions of the
+    crank-rocker above, (a) with loads that vary with the position (inertia loads: every
+    input an array) and (b) with constant loads (G2, G3 passed once: C hoists their sines
+    and cosines, sarkp's Fortran takes them per position).  Also the largest difference
+    between the two (the same formula: rounding)."""
     phi = np.linspace(0.0, 2 * np.pi, N, endpoint=False)
     roa, rab, rcb, xc = 0.1, 0.35, 0.3, 0.4
     xa, ya = roa * np.cos(phi), roa * np.sin(phi)
@@ -120,20 +130,24 @@ def dnma1_head_to_head():
     l2 = np.full(N, rab)
     l3 = np.hypot(xb - xc, yb)
     fcb = np.arctan2(yb, xb - xc)
-    args = (l2, fi2, l3, fcb, -0.5 * rab, -0.5 * rcb, 0.0, 50.0, -np.pi / 2, 5.0, 80.0,
-            -np.pi / 2)
-    loop = DNMA1Loop()
-    t_c = best(lambda: loop(*args))
-    t_s = best(lambda: sarkp.DNMA1(*args))
-    with sarkp.as_printed():
-        t_p = best(lambda: sarkp.DNMA1(*args))
-    r, c = sarkp.DNMA1(*args), loop(*args)
-    diff = max(np.abs(r.RA - c[0]).max() / r.RA.max(), np.abs(r.RC - c[4]).max() / r.RC.max(),
-               np.abs(np.cos(r.GA) - np.cos(c[1])).max())
-    return [("hand-written C loop (dnma1.c)", N, t_c / N * 1e9),
-            ("sarkp.DNMA1, corrected mode", N, t_s / N * 1e9),
-            ("sarkp.DNMA1, as-printed mode (the printed form)", N, t_p / N * 1e9)], diff, \
-        loop.cmd
+    loads = (-0.5 * rab, -0.5 * rcb, 0.0, 50.0, -np.pi / 2, 5.0, 80.0, -np.pi / 2)
+    varying = tuple(np.full(N, v) + 0.01 * np.sin(phi) for v in loads)
+    c = DNMA1Loop()
+    rows, diff = [], 0.0
+    for case, args, cfun in (("varying loads", (l2, fi2, l3, fcb) + varying, c.loop),
+                             ("constant loads", (l2, fi2, l3, fcb) + loads, c.const)):
+        t_c = best(lambda: cfun(*args))
+        t_s = best(lambda: sarkp.DNMA1(*args))
+        with sarkp.as_printed():
+            t_p = best(lambda: sarkp.DNMA1(*args))
+        r, o = sarkp.DNMA1(*args), cfun(*args)
+        diff = max(diff, np.abs(r.RA - o[0]).max() / r.RA.max(),
+                   np.abs(r.RC - o[4]).max() / r.RC.max(),
+                   np.abs(np.cos(r.GA) - np.cos(o[1])).max())
+        rows += [(f"{case}: hand-written C loop (dnma1.c)", N, t_c / N * 1e9),
+                 (f"{case}: sarkp.DNMA1, corrected mode", N, t_s / N * 1e9),
+                 (f"{case}: sarkp.DNMA1, as-printed (printed form)", N, t_p / N * 1e9)]
+    return rows, diff, c.cmd
 
 
 def closed_form(phi, a, j, w1):
@@ -170,8 +184,9 @@ def main():
     print()
     print(f"DNMA1 head to head ({cmd}); largest relative difference {diff:.1e}")
     for name, n, ns in h2h:
-        print(f"{name:48s} {n:8d} {ns:12.0f}")
-    print(f"ratio sarkp (corrected) / C loop: {h2h[1][2] / h2h[0][2]:.2f}")
+        print(f"{name:56s} {n:8d} {ns:12.0f}")
+    print(f"ratio sarkp (corrected) / C loop: varying loads {h2h[1][2] / h2h[0][2]:.2f}, "
+          f"constant loads {h2h[4][2] / h2h[3][2]:.2f}")
     pos += h2h
     dz = dzkndv_error()
     print()

@@ -22,6 +22,10 @@
 !     |ALFA| (ALFMAX) and the number of points where |ALFA| > ALD (NOVER);
 !   * DPRFPL returns the smallest radius of curvature (ROKMIN) and the number of points
 !     where it is negative (NCONC): a flat-faced follower cannot follow a concave profile;
+!   * DPRFLP takes cos(ALFA), sin(ALFA) from ALFA's tangent (exact near 90 degrees,
+!     where COS(ATAN(t)) keeps only the digits of pi/2 - ALFA that ALFA holds);
+!   * the Python layer adds motion laws, roller followers and exact sizing
+!     (python/sarkp/cams.py, after the book's routines);
 !   * a trailing IER (prmtr status): st_requirement where the book would divide by zero
 !     or produce a profile that does not exist, st_singular for a point where the
 !     pressure angle or the curvature radius is infinite.  On failure every output is 0.
@@ -158,6 +162,7 @@ contains
       alfa(k) = atan((dsdfi - excntr)/c)
       ! cos and sin of ALFA from its tangent (dsdfi - e)/C, not COS(ATAN(...)): near 90
       ! degrees COS(ALFA) would keep only the digits of pi/2 - ALFA that ALFA holds
+      ! (E-DPRFLP-5, numerical)
       h = hypot(c, dsdfi - excntr)
       ca = c/h
       sa = (dsdfi - excntr)/h

@@ -35,20 +35,24 @@ contains
   ! E0 such that omega_1 + omega_2 = 2 W (omega_i = sqrt(2 (E0 + a_i)/j_i)) in closed
   ! form: with omega_1 = W + d, omega_2 = W - d, j_1 omega_1**2 - j_2 omega_2**2 =
   ! 2 (a_1 - a_2) is (j1 - j2) d**2 + 2 W (j1 + j2) d + (j1 - j2) W**2 - 2 (a1 - a2) = 0,
-  ! whose root that stays finite as j1 -> j2 is taken.  ok = .false.: no root with
-  ! |d| <= W (both speeds real and >= 0).
+  ! divided by j1 + j2 (so that the discriminant does not overflow), whose root that
+  ! stays finite as j1 -> j2 is taken.  ok = .false.: no root with |d| <= W (both speeds
+  ! real and >= 0).
   pure subroutine pair_energy(a1, j1, a2, j2, w, e0, ok)
     real(dp), intent(in) :: a1, j1, a2, j2, w
     real(dp), intent(out) :: e0
     logical, intent(out) :: ok
-    real(dp) :: qa, qc, disc, d
+    real(dp) :: p1, p2, qa, da, qc, disc, d
     e0 = 0.0_dp
-    qa = j1 - j2
-    qc = qa*w*w - 2.0_dp*(a1 - a2)
-    disc = 16.0_dp*w*w*j1*j2 + 8.0_dp*qa*(a1 - a2)
+    p1 = j1/(j1 + j2)
+    p2 = j2/(j1 + j2)
+    qa = p1 - p2
+    da = (a1 - a2)/(j1 + j2)
+    qc = qa*w*w - 2.0_dp*da
+    disc = 16.0_dp*w*w*p1*p2 + 8.0_dp*qa*da
     ok = disc >= 0.0_dp
     if (.not. ok) return
-    d = -2.0_dp*qc/(2.0_dp*w*(j1 + j2) + sqrt(disc))
+    d = -2.0_dp*qc/(2.0_dp*w + sqrt(disc))
     ok = abs(d) <= w
     e0 = 0.5_dp*((0.5_dp*j1*(w + d)**2 - a1) + (0.5_dp*j2*(w - d)**2 - a2))
   end subroutine pair_energy
@@ -90,7 +94,8 @@ contains
         ok = .false.                                 ! even the least E0 gives more than W1
         return
       end if
-      if (e0 > lo .and. wpr(k1) >= wmax .and. wpr(k2) <= wmin) return
+      if (e0 > lo .and. wpr(k1) >= wmax .and. wpr(k2) <= wmin .and. &
+          abs(0.5_dp*(wmax + wmin) - w1) <= 1e-12_dp*w1) return
       k1 = maxloc(wpr, 1)
       k2 = minloc(wpr, 1)
     end do
@@ -205,7 +210,8 @@ contains
   ! (omega_max - omega_min)/W1 at DELTA, neglecting the variable part J_v (J_A = J_B = J_c,
   ! L6034).  DEC is an input (the comment lists it under RESULT: E-DMHVK-2).  A negative
   ! IMHVK means that no flywheel is needed.  With DEC from DZKNDV, DZKNDV rerun with ISC +
-  ! IMHVK gives exactly DELTA: as printed for any ISPR, corrected for ISPR = 0.
+  ! IMHVK gives exactly DELTA: as printed for any ISPR, corrected for ISPR = 0 (otherwise
+  ! Merkalov's approximation, E-T8-3; the Python layer's DMHVK_EXACT is the exact one).
   ! The listing has 6 arguments; the only call in the book (L7631), whose printed result
   ! IMH = 4507.27 (L7203) shows that it ran, passes AAA before IMHVK, as every routine of
   ! the library does: the print flag is kept (E-DMHVK-1).

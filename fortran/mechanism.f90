@@ -9,14 +9,15 @@
 !                 computed once per position from the points that define it;
 !   steps gi(:, k), gr(:, k), k = 1..ns, in order (gi(1, k) = the kind):
 !     0 crank   gi = 0, A, O, 1                       gr = r
-!     1 RRR     gi = 1, B, A, C, L2, L3, 0, 0         gr = l2, l3, branch
+!     1 RRR     gi = 1, B, A, C, L2, L3, 0, 0         gr = l2, l3, branch, 1/l2, 1/l3
 !     2 RRP     gi = 2, B, A, K, L2, L3, LM           gr = l2, branch, cos, sin (guide angle
-!               on LM), offset
+!               on LM), offset, angle, 1/l2
 !     3 RPR     gi = 3, B, A, C, L2, L3               gr = h, branch
 !     4 PRP     gi = 4, B, A, C, L2, L3, LM, LN       gr = cos, sin (guide M), cos, sin (guide
 !               N), offset M, offset N
 !     5 RPP     gi = 5, K, A, C, L2, L3, LM           gr = cos, sin (guide M), cos, sin (slot T2)
 !     6 point   gi = 6, D, P, Q, L                    gr = dist, cos, sin of the angle from P->Q
+!               (Q = P: from the link's own direction)
 !   Branch +1: the new joint on the left of A->C (kinds 1, 3), ahead along the guide of the
 !   foot of the perpendicular from A (kind 2); kinds 4, 5 have one position.
 !
@@ -38,12 +39,11 @@
 ! M_red = sum (F . v' + M w') over the external loads (no inertia).
 module mechanism
   use prmtr, only: dp, st_ok, st_assembly, st_singular, st_range, st_digits, norm2d
-  use numerics, only: uround, system2, factor2, solve2f, solve2e, tri_apex, apex_vectors, &
+  use numerics, only: uround, system2, cramer_set, cramer, solve2e, tri_apex, apex_vectors, &
                       unscale, angle_sensitivity, policy, failed
   implicit none
   private
   public :: mech_solve
-  real(dp), parameter :: twopi = 6.283185307179586476925287_dp
 
 contains
 
@@ -54,12 +54,12 @@ contains
   subroutine mech_solve(need, n, np, nl, ns, gi, gr, phi, omega, epsil, inc_w, inc_e, &
                         nm, mlink, mpoint, mval, gravity, &
                         nf, fpoint, flink, nfv, fval, nt, tlink, ntv, tval, &
-                        nsp, spp, spl, spv, npair, powner, lbase, x0, &
+                        nsp, spp, spl, spv, npair, powner, lbase, x0, nop, outp, nol, outl, &
                         nv, na, nr, pos, vel, acc, th, om, ep, react, mbal, jred, mred, &
                         status, fgroup)
     !f2py threadsafe
     integer, intent(in) :: need, n, np, nl, ns, nm, nf, nfv, nt, ntv, nsp, npair, nv, na, nr
-    integer, intent(in) :: inc_w, inc_e
+    integer, intent(in) :: inc_w, inc_e, nop, nol, outp(nop), outl(nol)
     integer, intent(in) :: gi(8, ns)
     real(dp), intent(in) :: gr(8, ns), phi(n), omega(*), epsil(*)
     integer, intent(in) :: powner(np), lbase(0:nl)
@@ -72,24 +72,21 @@ contains
     real(dp), intent(in) :: tval(nt, ntv)
     integer, intent(in) :: spp(2, nsp), spl(2, nsp)
     real(dp), intent(in) :: spv(2, nsp)
-    real(dp), intent(inout) :: pos(2, np, n), vel(2, np, nv), acc(2, np, na)
-    real(dp), intent(inout) :: th(0:nl, n), om(0:nl, nv), ep(0:nl, na)
+    real(dp), intent(inout) :: pos(2, nop, n), vel(2, nop, nv), acc(2, nop, na)
+    real(dp), intent(inout) :: th(2, nol, n), om(nol, nv), ep(nol, na)
     real(dp), intent(inout) :: react(3, npair, nr), mbal(nr), jred(nv), mred(nr)
     integer, intent(inout) :: status(n), fgroup(n)
     ! work arrays of one position (allocated once per call, none per group)
-    real(dp), allocatable :: x(:, :), v(:, :), a(:, :), c(:), s(:), w(:), e(:), prev(:)
+    real(dp), allocatable :: x(:, :), v(:, :), a(:, :), c(:), s(:), w(:), e(:)
     real(dp), allocatable :: fl(:, :), ml(:), aa(:, :), ee(:)
-    logical, allocatable :: seen(:)
     integer, allocatable :: gslot(:)
-    integer :: i, k, kind, st, worst, jf, jt, fg, g, pos_index
+    integer :: i, k, kind, st, worst, jf, jt, fg, g
     real(dp) :: est, maxest, wi, ei
 
-    allocate(x(2, np), v(2, np), a(2, np), c(0:nl), s(0:nl), w(0:nl), e(0:nl), prev(0:nl))
-    allocate(fl(2, 0:nl), ml(0:nl), aa(2, np), ee(0:nl), seen(0:nl))
+    allocate(x(2, np), v(2, np), a(2, np), c(0:nl), s(0:nl), w(0:nl), e(0:nl))
+    allocate(fl(2, 0:nl), ml(0:nl), aa(2, np), ee(0:nl))
     x = x0; v = 0.0_dp; a = 0.0_dp
-    c = 1.0_dp; s = 0.0_dp; w = 0.0_dp; e = 0.0_dp; prev = 0.0_dp
-    seen = .false.
-    seen(0) = .true.
+    c = 1.0_dp; s = 0.0_dp; w = 0.0_dp; e = 0.0_dp
     ! the reaction slots of the groups: 1 the crank's O, then three per group in order
     allocate(gslot(ns))
     g = 0
@@ -105,8 +102,6 @@ contains
       worst = st_ok
       fg = 0
       maxest = 0.0_dp
-      th(0, i) = 0.0_dp
-      pos_index = i
       do k = 1, ns
         kind = gi(1, k)
         call step(k, kind, i, st, est)
@@ -129,8 +124,9 @@ contains
         fgroup(i) = fg
         cycle
       end if
-      do k = 1, np
-        if (.not. (abs(x(1, k)) <= huge(1.0_dp) .and. abs(x(2, k)) <= huge(1.0_dp))) then
+      do k = 1, nop
+        if (.not. (abs(x(1, outp(k))) <= huge(1.0_dp) .and. &
+                   abs(x(2, outp(k))) <= huge(1.0_dp))) then
           worst = st_range
           fg = 0
         end if
@@ -138,41 +134,52 @@ contains
       status(i) = worst
       fgroup(i) = fg
       if (worst == st_range) cycle
-      pos(:, :, i) = x
+      ! the outputs: the moving points and links only (the caller knows the frame's)
+      do k = 1, nop
+        pos(:, k, i) = x(:, outp(k))
+      end do
+      do k = 1, nol
+        th(1, k, i) = c(outl(k))
+        th(2, k, i) = s(outl(k))
+      end do
       if (need >= 2) then
         wi = omega(1 + (i - 1)*inc_w)
-        vel(:, :, i) = v*wi
-        om(:, i) = w*wi
+        do k = 1, nop
+          vel(:, k, i) = v(:, outp(k))*wi
+        end do
+        do k = 1, nol
+          om(k, i) = w(outl(k))*wi
+        end do
         jred(i) = reduced_inertia()
       end if
       if (need >= 3) then
         ei = epsil(1 + (i - 1)*inc_e)
-        aa = a*wi*wi + v*ei
-        ee = e*wi*wi + w*ei
-        acc(:, :, i) = aa
-        ep(:, i) = ee
+        if (need >= 4) then
+          aa = a*(wi*wi) + v*ei
+          ee = e*(wi*wi) + w*ei
+        end if
+        do k = 1, nop
+          acc(:, k, i) = a(:, outp(k))*(wi*wi) + v(:, outp(k))*ei
+        end do
+        do k = 1, nol
+          ep(k, i) = e(outl(k))*(wi*wi) + w(outl(k))*ei
+        end do
       end if
       if (need >= 4) call forces(i)
     end do
-    deallocate(x, v, a, c, s, w, e, prev, fl, ml, aa, ee, seen, gslot)
+    deallocate(x, v, a, c, s, w, e, fl, ml, aa, ee, gslot)
 
   contains
 
     ! ------------------------------------------------------------------ kinematics
 
-    ! A link's direction (cosine cl, sine sl) set, its angle continued from the previous
-    ! position (continuous across 2 pi), w' and e'' set by the caller.
-    subroutine set_link(l, cl, sl, ang)
+    ! A link's direction (cosine cl, sine sl): the angle itself is not computed here (the
+    ! Python layer takes it, continuous along the sweep, only for the links asked for)
+    subroutine set_link(l, cl, sl)
       integer, intent(in) :: l
-      real(dp), intent(in) :: cl, sl, ang
-      real(dp) :: t
+      real(dp), intent(in) :: cl, sl
       c(l) = cl
       s(l) = sl
-      t = ang
-      if (seen(l)) t = t + twopi*anint((prev(l) - t)/twopi)
-      seen(l) = .true.
-      prev(l) = t
-      th(l, pos_index) = t
     end subroutine set_link
 
     ! velocity analogue of a point X moving with link l, whose point p is known:
@@ -226,7 +233,6 @@ contains
       sp = sin(phi(i))
       x(:, pa) = x(:, po) + r*[cp, sp]
       c(1) = cp; s(1) = sp
-      th(1, i) = phi(i)
       w(1) = 1.0_dp
       e(1) = 0.0_dp
       v(:, pa) = r*[-sp, cp]
@@ -260,14 +266,14 @@ contains
       r2 = [unscale(r2(1), ex), unscale(r2(2), ex)]
       r3 = [unscale(r3(1), ex), unscale(r3(2), ex)]
       x(:, pb) = x(:, pa) + r2
-      call set_link(l2, r2(1)/len2, r2(2)/len2, atan2(r2(2), r2(1)))
-      call set_link(l3, r3(1)/len3, r3(2)/len3, atan2(r3(2), r3(1)))
+      call set_link(l2, r2(1)*gr(4, k), r2(2)*gr(4, k))      ! gr(4:5) = 1/l2, 1/l3
+      call set_link(l3, r3(1)*gr(5, k), r3(2)*gr(5, k))
       est = dang
       if (need < 2) return
       ! v_A + w2 k x r2 = v_C + w3 k x r3
-      call factor2(-r2(2), r3(2), r2(1), -r3(1), f)
-      sb = norm2d(v(1, pa), v(2, pa)) + norm2d(v(1, pc), v(2, pc))
-      call solve2f(f, v(1, pc) - v(1, pa), v(2, pc) - v(2, pa), dang, 4.0_dp*uround*sb, sb, &
+      call cramer_set(-r2(2), r3(2), r2(1), -r3(1), f)
+      sb = abs(v(1, pa)) + abs(v(2, pa)) + abs(v(1, pc)) + abs(v(2, pc))
+      call cramer(f, v(1, pc) - v(1, pa), v(2, pc) - v(2, pa), dang, 4.0_dp*uround*sb, sb, &
                    y1, y2, st, rel)
       if (failed(st)) return
       est = max(est, rel)
@@ -275,7 +281,7 @@ contains
       w(l3) = y2
       v(:, pb) = v(:, pa) + y1*[-r2(2), r2(1)]
       if (need < 3) return
-      call solve2f(f, a(1, pc) - a(1, pa) - y2**2*r3(1) + y1**2*r2(1), &
+      call cramer(f, a(1, pc) - a(1, pa) - y2**2*r3(1) + y1**2*r2(1), &
                    a(2, pc) - a(2, pa) - y2**2*r3(2) + y1**2*r2(2), dang, &
                    4.0_dp*uround*(sb + y1**2*len2 + y2**2*len3), sb, y1, y2, st, rel)
       if (failed(st)) return
@@ -323,17 +329,17 @@ contains
       sl = along + gr(2, k)*root
       x(:, pb) = x(:, pk) + sl*u + off*nn
       r2 = x(:, pb) - x(:, pa)
-      call set_link(l2, r2(1)/len2, r2(2)/len2, atan2(r2(2), r2(1)))
-      call set_link(l3, u(1), u(2), th(lm, pos_index) + gr(6, k))
+      call set_link(l2, r2(1)*gr(7, k), r2(2)*gr(7, k))      ! gr(7) = 1/l2
+      call set_link(l3, u(1), u(2))
       dc = 4.0_dp*uround*(abs(perp) + abs(off) + len2 + abs(wv(1)) + abs(wv(2)))/len2
       est = angle_sensitivity(cq, dc)
       st = st_ok
       if (need < 2) return
       ! v_A + w2 k x r2 = v_G(B) + s' u
       call carried(lm, pk, x(:, pb), vg, ag)
-      call factor2(-r2(2), -u(1), r2(1), -u(2), f)
-      sb = norm2d(v(1, pa), v(2, pa)) + norm2d(vg(1), vg(2))
-      call solve2f(f, vg(1) - v(1, pa), vg(2) - v(2, pa), est + 4.0_dp*uround, &
+      call cramer_set(-r2(2), -u(1), r2(1), -u(2), f)
+      sb = abs(v(1, pa)) + abs(v(2, pa)) + abs(vg(1)) + abs(vg(2))
+      call cramer(f, vg(1) - v(1, pa), vg(2) - v(2, pa), est + 4.0_dp*uround, &
                    4.0_dp*uround*sb, sb, y1, y2, st, rel)
       if (failed(st)) return
       est = max(est, rel)
@@ -342,7 +348,7 @@ contains
       v(:, pb) = v(:, pa) + y1*[-r2(2), r2(1)]
       if (need < 3) return
       ag = ag + 2.0_dp*w(lm)*y2*nn - a(:, pa) + y1**2*r2
-      call solve2f(f, ag(1), ag(2), est + 4.0_dp*uround, &
+      call cramer(f, ag(1), ag(2), est + 4.0_dp*uround, &
                    4.0_dp*uround*(sb + y1**2*len2), sb, y1, y2, st, rel)
       if (failed(st)) return
       est = max(est, rel)
@@ -391,17 +397,17 @@ contains
       end if
       e3 = (x(:, pb) - x(:, pc))/sl
       n3 = [-e3(2), e3(1)]
-      call set_link(l3, e3(1), e3(2), atan2(e3(2), e3(1)))
-      call set_link(l2, e3(1), e3(2), th(l3, pos_index))
+      call set_link(l3, e3(1), e3(2))
+      call set_link(l2, e3(1), e3(2))
       ds = 4.0_dp*uround*(1.0_dp + sq)
       est = angle_sensitivity(sq, ds)
       st = st_ok
       if (need < 2) return
       ! v_A = v_C + w3 k x (A - C) + s' e3
       rac = x(:, pa) - x(:, pc)
-      call factor2(-rac(2), e3(1), rac(1), e3(2), f)
-      sb = norm2d(v(1, pa), v(2, pa)) + norm2d(v(1, pc), v(2, pc))
-      call solve2f(f, v(1, pa) - v(1, pc), v(2, pa) - v(2, pc), est + 4.0_dp*uround, &
+      call cramer_set(-rac(2), e3(1), rac(1), e3(2), f)
+      sb = abs(v(1, pa)) + abs(v(2, pa)) + abs(v(1, pc)) + abs(v(2, pc))
+      call cramer(f, v(1, pa) - v(1, pc), v(2, pa) - v(2, pc), est + 4.0_dp*uround, &
                    4.0_dp*uround*sb, sb, y1, y2, st, rel)
       if (failed(st)) return
       est = max(est, rel)
@@ -410,7 +416,7 @@ contains
       sd = y2
       v(:, pb) = v(:, pc) + y1*sl*n3 + sd*e3
       if (need < 3) return
-      call solve2f(f, a(1, pa) - a(1, pc) + y1**2*rac(1) - 2.0_dp*y1*sd*n3(1), &
+      call cramer(f, a(1, pa) - a(1, pc) + y1**2*rac(1) - 2.0_dp*y1*sd*n3(1), &
                    a(2, pa) - a(2, pc) + y1**2*rac(2) - 2.0_dp*y1*sd*n3(2), &
                    est + 4.0_dp*uround, 4.0_dp*uround*(sb + y1**2*d + abs(y1*sd)), sb, &
                    y1, y2, st, rel)
@@ -444,14 +450,14 @@ contains
                    4.0_dp*uround, 4.0_dp*uround*sb, sb, bx, by, st, est)
       if (failed(st)) return
       x(:, pb) = x(:, pa) + [bx, by]
-      call set_link(l2, um(1), um(2), th(lm, pos_index) + gr(7, k))
-      call set_link(l3, un(1), un(2), th(ln, pos_index) + gr(8, k))
+      call set_link(l2, um(1), um(2))
+      call set_link(l3, un(1), un(2))
       if (need < 2) return
       call carried(lm, pa, x(:, pb), vgm, agm)
       call carried(ln, pc, x(:, pb), vgn, agn)
-      call factor2(um(1), -un(1), um(2), -un(2), f)
-      sb = norm2d(vgm(1), vgm(2)) + norm2d(vgn(1), vgn(2))
-      call solve2f(f, vgn(1) - vgm(1), vgn(2) - vgm(2), est + 4.0_dp*uround, &
+      call cramer_set(um(1), -un(1), um(2), -un(2), f)
+      sb = abs(vgm(1)) + abs(vgm(2)) + abs(vgn(1)) + abs(vgn(2))
+      call cramer(f, vgn(1) - vgm(1), vgn(2) - vgm(2), est + 4.0_dp*uround, &
                    4.0_dp*uround*sb, sb, s2, s3, st, rel)
       if (failed(st)) return
       est = max(est, rel)
@@ -459,7 +465,7 @@ contains
       w(l3) = w(ln)
       v(:, pb) = vgm + s2*um
       if (need < 3) return
-      call solve2f(f, agn(1) + 2.0_dp*w(ln)*s3*nn(1) - agm(1) - 2.0_dp*w(lm)*s2*nm_(1), &
+      call cramer(f, agn(1) + 2.0_dp*w(ln)*s3*nn(1) - agm(1) - 2.0_dp*w(lm)*s2*nm_(1), &
                    agn(2) + 2.0_dp*w(ln)*s3*nn(2) - agm(2) - 2.0_dp*w(lm)*s2*nm_(2), &
                    est + 4.0_dp*uround, 4.0_dp*uround*(sb + abs(w(ln)*s3) + abs(w(lm)*s2)), &
                    sb, y1, y2, st, rel)
@@ -492,14 +498,14 @@ contains
                    4.0_dp*uround*sb, sb, s2, s3, st, est)
       if (failed(st)) return
       x(:, pk) = x(:, pa) + s2*um
-      call set_link(l2, um(1), um(2), th(lm, pos_index) + gr(5, k))
-      call set_link(l3, us(1), us(2), th(l2, pos_index) + gr(6, k))
+      call set_link(l2, um(1), um(2))
+      call set_link(l3, us(1), us(2))
       if (need < 2) return
       call carried(lm, pa, x(:, pc), vgc, agc)
       call carried(lm, pa, x(:, pk), vgk, agk)
-      call factor2(um(1), us(1), um(2), us(2), f)
-      sb = norm2d(v(1, pc), v(2, pc)) + norm2d(vgc(1), vgc(2))
-      call solve2f(f, v(1, pc) - vgc(1), v(2, pc) - vgc(2), est + 4.0_dp*uround, &
+      call cramer_set(um(1), us(1), um(2), us(2), f)
+      sb = abs(v(1, pc)) + abs(v(2, pc)) + abs(vgc(1)) + abs(vgc(2))
+      call cramer(f, v(1, pc) - vgc(1), v(2, pc) - vgc(2), est + 4.0_dp*uround, &
                    4.0_dp*uround*sb, sb, d2, d3, st, rel)
       if (failed(st)) return
       est = max(est, rel)
@@ -507,7 +513,7 @@ contains
       w(l3) = w(lm)
       v(:, pk) = vgk + d2*um
       if (need < 3) return
-      call solve2f(f, a(1, pc) - agc(1) - 2.0_dp*w(lm)*(d2*nm_(1) + d3*ns_(1)), &
+      call cramer(f, a(1, pc) - agc(1) - 2.0_dp*w(lm)*(d2*nm_(1) + d3*ns_(1)), &
                    a(2, pc) - agc(2) - 2.0_dp*w(lm)*(d2*nm_(2) + d3*ns_(2)), &
                    est + 4.0_dp*uround, 4.0_dp*uround*(sb + abs(w(lm))*(abs(d2) + abs(d3))), &
                    sb, y1, y2, st, rel)
@@ -628,64 +634,116 @@ contains
       owner = powner(p)
     end function owner
 
-    ! the six equations of one group (forces and moment of link 2, then of link 3) in the
-    ! reactions of its three pairs: 1 (the outside on link 2), 2 (link 2 on link 3),
-    ! 3 (the outside on link 3); a revolute's unknowns are (fx, fy), a slider's the normal
-    ! force (along the sliding direction turned by +pi/2) and the couple
+    ! One group's reactions (the chapter 7 method): its six equilibrium equations (forces
+    ! and moment of link 2, of link 3) in the reactions of its three pairs -- 1 (the
+    ! outside on link 2), 2 (link 2 on link 3), 3 (the outside on link 3); a revolute's
+    ! unknowns are the force (fx, fy) at its joint, a slider's the normal force N (along its
+    ! sliding direction turned by +pi/2) and the couple C.  Pair 1 drops out of one
+    ! equation of link 2 (a revolute: the moment about its joint; a slider: the forces
+    ! along its direction), pair 3 out of one of link 3: two equations in pair 2's two
+    ! unknowns (numerics' Cramer kernel), then pairs 1 and 3 from the rest.
     subroutine group_forces(k, kind, slot, i)
       integer, intent(in) :: k, kind, slot, i
       integer :: pt(3), ty(3), frl(3), l2, l3, j, st
-      real(dp) :: dir(2, 3), m(6, 6), rhs(6), fx, fy, cpl
+      real(dp) :: dir(2, 3), n2(2), a(2, 2), b(2), z(2), rel, r(2), c2, d(2), f(2), cp
+      real(dp) :: out(3, 3), mp
+      type(system2) :: sys
       l2 = gi(5, k); l3 = gi(6, k)
       call pairs(k, kind, pt, ty, dir, frl)
-      m = 0.0_dp
-      call pair_columns(m, 1, pt(1), ty(1), dir(:, 1), l2, 1, 1.0_dp)
-      call pair_columns(m, 3, pt(2), ty(2), dir(:, 2), l3, 4, 1.0_dp)
-      call pair_columns(m, 3, pt(2), ty(2), dir(:, 2), l2, 1, -1.0_dp)
-      call pair_columns(m, 5, pt(3), ty(3), dir(:, 3), l3, 4, 1.0_dp)
-      rhs = -[fl(1, l2), fl(2, l2), ml(l2), fl(1, l3), fl(2, l3), ml(l3)]
-      call gauss6(m, rhs, st)
+      n2 = [-dir(2, 2), dir(1, 2)]
+      ! pair 2 as unknowns z: R = (z1, z2), C = 0 (revolute) or R = z1 n2, C = z2 (slider)
+      ! row 1: link 2 without pair 1
+      if (ty(1) == 0) then
+        d = x(:, pt(2)) - x(:, pt(1))           ! -(d x R) - C = -M2(about P1)
+        call coefficients(d(2), -d(1), -1.0_dp, ty(2), n2, a(1, :))
+        b(1) = -moment_about(l2, pt(1))
+      else
+        call coefficients(-dir(1, 1), -dir(2, 1), 0.0_dp, ty(2), n2, a(1, :))  ! -R.u1 = -F2.u1
+        b(1) = -(fl(1, l2)*dir(1, 1) + fl(2, l2)*dir(2, 1))
+      end if
+      ! row 2: link 3 without pair 3
+      if (ty(3) == 0) then
+        d = x(:, pt(2)) - x(:, pt(3))           ! d x R + C = -M3(about P3)
+        call coefficients(-d(2), d(1), 1.0_dp, ty(2), n2, a(2, :))
+        b(2) = -moment_about(l3, pt(3))
+      else
+        call coefficients(dir(1, 3), dir(2, 3), 0.0_dp, ty(2), n2, a(2, :))    ! R.u3 = -F3.u3
+        b(2) = -(fl(1, l3)*dir(1, 3) + fl(2, l3)*dir(2, 3))
+      end if
+      call cramer_set(a(1, 1), a(1, 2), a(2, 1), a(2, 2), sys)
+      call cramer(sys, b(1), b(2), 0.0_dp, 0.0_dp, 0.0_dp, z(1), z(2), st, rel)
       if (st /= st_ok) then
         status(i) = st
         fgroup(i) = k
       end if
+      if (ty(2) == 0) then
+        r = z
+        c2 = 0.0_dp
+      else
+        r = z(1)*n2
+        c2 = z(2)
+      end if
+      out(:, 2) = [r(1), r(2), c2]
+      ! pair 1: F2 + f1 - R = 0 (and, a slider, its couple from the moment about P1)
+      f = r - fl(:, l2)
+      if (ty(1) == 0) then
+        out(:, 1) = [f(1), f(2), 0.0_dp]
+      else
+        call normal(f, dir(:, 1), out(:, 1))
+        d = x(:, pt(2)) - x(:, pt(1))
+        mp = moment_about(l2, pt(1))
+        out(3, 1) = -mp + (d(1)*r(2) - d(2)*r(1)) + c2
+      end if
+      ! pair 3: F3 + R + f3 = 0
+      f = -r - fl(:, l3)
+      if (ty(3) == 0) then
+        out(:, 3) = [f(1), f(2), 0.0_dp]
+      else
+        call normal(f, dir(:, 3), out(:, 3))
+        d = x(:, pt(2)) - x(:, pt(3))
+        mp = moment_about(l3, pt(3))
+        out(3, 3) = -mp - (d(1)*r(2) - d(2)*r(1)) - c2
+      end if
       do j = 1, 3
-        if (ty(j) == 0) then
-          fx = rhs(2*j - 1); fy = rhs(2*j); cpl = 0.0_dp
-        else
-          fx = -dir(2, j)*rhs(2*j - 1); fy = dir(1, j)*rhs(2*j - 1); cpl = rhs(2*j)
-        end if
-        react(:, slot + j - 1, i) = [fx, fy, cpl]
+        react(:, slot + j - 1, i) = out(:, j)
         if (j /= 2 .and. frl(j) > 0) then
-          call load(frl(j), pt(j), -fx, -fy)     ! the outside link bears the opposite
-          ml(frl(j)) = ml(frl(j)) - cpl
+          cp = out(3, j)
+          call load(frl(j), pt(j), -out(1, j), -out(2, j))   ! the outside bears the opposite
+          ml(frl(j)) = ml(frl(j)) - cp
         end if
       end do
 
-
     end subroutine group_forces
 
-    ! columns col, col + 1 (one pair's unknowns) in rows r0..r0 + 2 (link l's equations)
-    subroutine pair_columns(m, col, p, t, d, l, r0, sg)
-      real(dp), intent(inout) :: m(6, 6)
-      integer, intent(in) :: col, p, t, l, r0
-      real(dp), intent(in) :: d(2), sg
-      real(dp) :: rx, ry, nx, ny
-      rx = x(1, p) - x(1, base(l))
-      ry = x(2, p) - x(2, base(l))
-      if (t == 0) then
-        m(r0, col) = sg
-        m(r0 + 2, col) = -sg*ry
-        m(r0 + 1, col + 1) = sg
-        m(r0 + 2, col + 1) = sg*rx
+    ! the coefficients of pair 2's unknowns in one equation: (cx, cy) multiply R (a
+    ! revolute's two unknowns; a slider's N through R = N n2) and cc its couple C
+    pure subroutine coefficients(cx, cy, cc, t2, n2, row)
+      real(dp), intent(in) :: cx, cy, cc, n2(2)
+      integer, intent(in) :: t2
+      real(dp), intent(out) :: row(2)
+      if (t2 == 0) then
+        row = [cx, cy]
       else
-        nx = -d(2); ny = d(1)
-        m(r0, col) = sg*nx
-        m(r0 + 1, col) = sg*ny
-        m(r0 + 2, col) = sg*(rx*ny - ry*nx)
-        m(r0 + 2, col + 1) = sg
+        row = [cx*n2(1) + cy*n2(2), cc]
       end if
-    end subroutine pair_columns
+    end subroutine coefficients
+
+    ! a slider's reaction f: its normal part (the guide takes no force along u)
+    pure subroutine normal(f, u, out)
+      real(dp), intent(in) :: f(2), u(2)
+      real(dp), intent(out) :: out(3)
+      real(dp) :: nn
+      nn = -f(1)*u(2) + f(2)*u(1)
+      out = [-nn*u(2), nn*u(1), 0.0_dp]
+    end subroutine normal
+
+    ! the moment of link l's loads about point p (they are gathered about its base)
+    real(dp) function moment_about(l, p)
+      integer, intent(in) :: l, p
+      integer :: b
+      b = base(l)
+      moment_about = ml(l) + (x(1, b) - x(1, p))*fl(2, l) - (x(2, b) - x(2, p))*fl(1, l)
+    end function moment_about
 
     ! the pairs of a group: point, type (0 revolute, 1 slider, with its sliding direction),
     ! the outside link of pairs 1 and 3
@@ -731,36 +789,5 @@ contains
 
   end subroutine mech_solve
 
-  ! Gaussian elimination with partial pivoting of a 6x6 system (a group's equilibrium);
-  ! b is overwritten by the solution.  st_singular when a pivot vanishes against the
-  ! largest entry (a group at a dead centre cannot carry its load).
-  pure subroutine gauss6(m, b, st)
-    real(dp), intent(inout) :: m(6, 6), b(6)
-    integer, intent(out) :: st
-    integer :: j, r, p
-    real(dp) :: amax, t, row(6)
-    amax = maxval(abs(m))
-    st = st_singular
-    if (.not. amax > 0.0_dp) return
-    do j = 1, 6
-      p = j - 1 + maxloc(abs(m(j:6, j)), 1)
-      if (.not. abs(m(p, j)) > 16.0_dp*epsilon(1.0_dp)*amax) return
-      if (p /= j) then
-        row = m(j, :); m(j, :) = m(p, :); m(p, :) = row
-        t = b(j); b(j) = b(p); b(p) = t
-      end if
-      do r = j + 1, 6
-        if (m(r, j) /= 0.0_dp) then
-          t = m(r, j)/m(j, j)
-          m(r, j + 1:6) = m(r, j + 1:6) - t*m(j, j + 1:6)
-          b(r) = b(r) - t*b(j)
-        end if
-      end do
-    end do
-    do j = 6, 1, -1
-      b(j) = (b(j) - dot_product(m(j, j + 1:6), b(j + 1:6)))/m(j, j)
-    end do
-    st = st_ok
-  end subroutine gauss6
 
 end module mechanism

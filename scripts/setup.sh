@@ -34,6 +34,8 @@ python -m pip install -q --upgrade pip >&2
 python -m pip install -q numpy meson meson-python ninja fortranformat matplotlib scipy \
   pytest hypothesis mpmath \
   pandas \
+  pylinkage \
+  dask \
   >&2
 echo "building and installing sarkp" >&2
 python -m pip install -q --no-build-isolation "$here" >&2

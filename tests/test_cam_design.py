@@ -110,7 +110,7 @@ def test_peak_factors_are_the_peaks(law):
     m = motion_law(law, H, RISE, DWELL, RET, W=W, FI=fi)
     cv, ca = LAW_FACTORS[law]
     up, down = m.PHASE == 1, m.PHASE == 3
-    assert m.CV == (cv, cv) and m.CA == (ca, ca)
+    assert (m.CV, m.CA, m.CV_RETURN, m.CA_RETURN) == (cv, ca, cv, ca)
     assert np.abs(m.V[up]).max() == pytest.approx(cv * H * W / RISE, rel=1e-13)
     assert np.abs(m.A[up]).max() == pytest.approx(ca * H * W**2 / RISE**2, rel=1e-13)
     assert np.abs(m.V[down]).max() == pytest.approx(cv * H * W / RET, rel=1e-13)
@@ -132,7 +132,7 @@ def test_peak_factors_against_the_literature():
 
 def test_return_law_and_default_inner_dwell():
     m = motion_law("cycloidal", 0.01, 1.0, 0.5, 2.0, return_law="3-4-5", N=101)
-    assert m.FI[-1] == pytest.approx(2 * PI) and m.CV == (2.0, 1.875)
+    assert m.FI[-1] == pytest.approx(2 * PI) and (m.CV, m.CV_RETURN) == (2.0, 1.875)
     m2 = motion_law("cycloidal", 0.01, 1.0, 0.5, 2.0, 1.0, N=101)
     assert m2.FI[-1] == pytest.approx(4.5)
 
@@ -323,6 +323,25 @@ def test_rocker_centre_distance_is_the_smallest(law, ald, ald_ret):
     assert c.RO == pytest.approx(np.hypot(p.XA, p.YA).min(), rel=1e-12)
     book = sarkp.DKLCHK(n, m.S, m.V, m.A, ald, 0.0, W, c.L, R, 2)
     assert (c.ETAO_BOOK, c.RO_BOOK) == (book.ETAO, book.RO)
+    # the book's rule for a rocker (the translating formula applied to angles) passes the
+    # limit with that centre distance; DPRFLK confirms the figure
+    pb = DPRFLK(n, W, book.ETAO, m.FI, 0.0, c.L, R, m.A, m.V, m.S)
+    assert c.ALFMAX_BOOK == pytest.approx(pb.ALFMAX, rel=1e-13)
+    assert pb.ALFMAX > min(ald, ald_ret)
+    # each phase alone needs no more, and the same brute force finds each
+    assert max(c.L_RISE, c.L_RETURN) <= c.L * (1 + 1e-12)
+    for lone, where, limit in ((c.L_RISE, rise, ald), (c.L_RETURN, ret, ald_ret)):
+        best_lone, tt, qw = math.inf, math.tan(limit), q[where]
+        for eta in np.linspace(-PI, PI, 2001):
+            psi = m.S[where] + eta
+            d1, d2 = np.cos(psi) + tt * np.sin(psi), np.cos(psi) - tt * np.sin(psi)
+            if np.any(d1 <= 0):
+                continue
+            lo = np.max(qw / d1)
+            hi = np.min(np.where(d2 > 0, qw / np.where(d2 > 0, d2, 1), np.inf))
+            if lo <= hi:
+                best_lone = min(best_lone, lo)
+        assert lone * (1 - 1e-9) <= best_lone <= lone * (1 + 1e-3)
 
 
 def test_sizing_bad_input():
@@ -339,7 +358,112 @@ def test_sizing_bad_input():
         base_radius(11, m.FI, m.A, m.V, m.S, W, 0.5, 0.3, BETA=0.4)
 
 
-def test_dprflp_curvature_near_90_degrees():
+def test_dprflp_curvature_near_90_degrees_E_DPRFLP_5():
     # C = 1e-14, s' = 0.05: tan(alpha) = 5e12; the exact radius is C^2 h^3/(...) -> 0.025
     r = sarkp.DPRFLP(1, 1e-14, 0.0, 10.0, [0.7], [3.0], [0.5], [0.0])
     assert r.ROK[0] == pytest.approx(0.025, rel=1e-13)
+
+
+# ---- the README's cam example --------------------------------------------------------------
+
+def test_readme_cam_example_runs_and_its_figures_are_right(tmp_path, monkeypatch, capsys):
+    import pathlib
+    import re
+    pytest.importorskip("matplotlib")
+    text = (pathlib.Path(__file__).resolve().parents[1] / "README.md").read_text("utf-8")
+    section = text[text.index("## Designing a cam"):]
+    code = re.search(r"```python\n(.*?)```", section, re.S).group(1)
+    monkeypatch.chdir(tmp_path)
+    ns = {}
+    exec(compile(code, "README.md", "exec"), ns)
+    out = capsys.readouterr().out
+    assert (tmp_path / "cam_roller.png").stat().st_size > 10000
+    # what it prints, against independent figures: the cycloidal peak 2 h W / beta
+    assert f"peak velocity {2 * 0.030 * 10.0 / math.radians(120):.4f} m/s" in out
+    assert "base radius 36.43 mm; DKLCHK's 34.62 mm reaches 30.97 deg" in out
+    assert "largest pressure angle 30.0000 deg" in out
+    # and the prose's claims about them
+    assert "36.43 mm beside DKLCHK's 34.62 mm" in section and "30.97 degrees" in section
+    cam, size = ns["cam"], ns["size"]
+    # the exact cam: the rise reaches 30 degrees at one point, the return stays within 45
+    law = ns["law"]
+    _touches(cam.ALFA, law.V > 0, math.radians(30))
+    assert np.all(np.abs(cam.ALFA[law.V < 0]) < math.radians(45))
+    # the base circle (the dwell at S = 0) is the pitch curve's smallest convex radius
+    assert cam.ROKMIN == pytest.approx(size.RO, rel=1e-12)
+
+
+def test_extension_results_are_sarkp_results():
+    """The extensions' results pickle and print short like the book routines'."""
+    import pickle
+    m = motion_law("3-4-5", 0.02, RISE, DWELL, RET, W=W, N=50)
+    back = pickle.loads(pickle.dumps(m))
+    assert type(back).__name__ == "MotionLaw" and np.array_equal(back.S, m.S)
+    assert back.CV == m.CV and "..." in repr(m)
+    b = base_radius(50, m.FI, m.A, m.V, m.S, W, 0.5)
+    assert pickle.loads(pickle.dumps(b)) == b
+    pd = pytest.importorskip("pandas")
+    frame = m.to_frame()
+    assert isinstance(frame, pd.DataFrame) and list(frame.columns) == list(m._fields)
+    assert frame.shape == (50, len(m._fields))
+
+
+@pytest.mark.parametrize("call, what", [
+    (lambda: motion_law("cycloidal", "0.01", 1.0, 0.5, 1.0), "H"),
+    (lambda: motion_law("cycloidal", 0.01, 1.0, 0.5, 1.0, dwell2=[1.0]), "dwell2"),
+    (lambda: base_radius(3, [0, 1, 2], [0] * 3, [0, 1, 0], [0, .1, .2], None, 0.5), "W"),
+    (lambda: flat_base_radius(3, [0, 1, 2], [0] * 3, [0, 1, 0], [0, .1, .2], 5.0, "0"),
+     "ROKMIN"),
+    (lambda: rocker_centre_distance(3, [0, 1, 2], [0] * 3, [0, 1, 0], [0, .1, .2], 5.0,
+                                    0.1, 1j), "ALD"),
+    (lambda: roller_translating(3, 0.05, 0.0, 5.0, [0, 1, 2], [0] * 3, [0, 1, 0],
+                                [0, .1, .2], "r"), "RR")])
+def test_extensions_type_errors_name_the_argument(call, what):
+    with pytest.raises(TypeError, match=what):
+        call()
+
+
+def test_motion_law_scalar_angle_gives_floats():
+    m = motion_law("cycloidal", 0.01, 1.0, 0.5, 1.0, W=2.0, FI=0.3)
+    assert all(type(v) in (float, int) for v in m)
+    full = motion_law("cycloidal", 0.01, 1.0, 0.5, 1.0, W=2.0, FI=[0.3])
+    assert (m.S, m.V, m.A, m.PHASE) == (full.S[0], full.V[0], full.A[0], full.PHASE[0])
+
+
+def test_rocker_roller_undercut():
+    H, L, R, ETAO = 0.35, 0.12, 0.09, 0.7
+    fi = np.linspace(0, 2 * PI, 361)
+    m = motion_law("3-4-5", H, RISE, DWELL, RET, W=W, FI=fi)
+    p = roller_rocker(fi.size, W, ETAO, fi, 0.0, L, R, m.A, m.V, m.S, 0.01)
+    big = 1.01 * p.ROKMIN
+    q = roller_rocker(fi.size, W, ETAO, fi, 0.0, L, R, m.A, m.V, m.S, big)
+    assert q.UNDERCUT and not p.UNDERCUT
+    assert np.min(q.RW[q.ROK > 0]) < 0            # the working profile's curvature flips
+    with pytest.raises(RequirementError, match="undercut"):
+        roller_rocker(fi.size, W, ETAO, fi, 0.0, L, R, m.A, m.V, m.S, big,
+                      on_undercut="raise")
+
+
+from hypothesis import given, settings, strategies as st  # noqa: E402
+
+
+@settings(max_examples=40, deadline=None)
+@given(st.sampled_from(LAWS), st.sampled_from(LAWS), st.floats(0.01, 0.1),
+       st.floats(0.8, 2.5), st.floats(0.0, 1.0), st.floats(0.8, 2.5), st.floats(-1.0, 1.0),
+       st.floats(0.3, 0.8), st.floats(0.3, 0.8))
+def test_base_radius_touches_the_limit_once_on_random_cams(law, back, h, rise, dwell, ret,
+                                                            frac, ald, ald_ret):
+    """Random laws, phases, offsets and limits: the exact radius puts the largest pressure
+    angle at its limit at exactly one table point (1e-9) and every other point below.
+    The offset angle stays below both limits by 0.02 rad: at |BETA| = ALD the pressure
+    angle of a dwell, -BETA, is at the limit all along the dwell (and at BETA = the
+    return's limit no radius serves: RequirementError, test_sizing_bad_input)."""
+    beta = frac * (min(ald, ald_ret) - 0.02)
+    n = 541
+    m = motion_law(law, h, rise, dwell, ret, W=W, N=n, return_law=back)
+    b = base_radius(n, m.FI, m.A, m.V, m.S, W, ald, ald_ret, BETA=beta)
+    p = DPRFLP(n, b.RO_AXIAL, b.EXCST, W, m.FI, m.A, m.V, m.S)
+    limit = np.where(m.V > 0, ald, np.where(m.V < 0, ald_ret, min(ald, ald_ret)))
+    over = np.abs(p.ALFA) - limit
+    assert over.max() <= 1e-12
+    assert np.sum(over >= -1e-9) == 1, np.sort(over)[-3:]

@@ -191,3 +191,27 @@ def test_stall_decision_is_the_definition():
             assert np.ptp(e) <= 1e-12 * (np.abs(r.ASUM).max() + (j * r.WPR**2).max())
             assert (r.WPR.max() + r.WPR.min()) / 2 == pytest.approx(W1, rel=1e-13)
     assert 30 < stalls < 270                     # both outcomes well represented
+
+
+def test_huge_and_tiny_scales():
+    """Inertias and moments near the ends of the double range: the closed form's
+    discriminant is scaled (j1 j2 would overflow), and the results are still the energy
+    equation with the book's mean; a flywheel that cannot be represented (J + J_flywheel
+    below J's rounding) is a RangeError, not a wrong delta."""
+    m = 37
+    phi = grid(m)
+    r = DZKNDV(m, float(m), W1, 1e300, 1e300 * np.sin(phi), 1e299 * np.sin(phi) ** 2)
+    j = 1e300 + 1e299 * np.sin(phi) ** 2
+    e = j / 2 * r.WPR**2 - r.ASUM
+    assert np.ptp(e) <= 1e-13 * np.abs(e).max()
+    assert (r.WPR.max() + r.WPR.min()) / 2 == pytest.approx(W1, rel=1e-13)
+    fw = sarkp.flywheel(phi, 1e-300, 1e300 * np.sin(phi), delta=0.1, omega_mean=W1)
+    assert fw.delta == pytest.approx(0.1, rel=1e-12)
+    x = DMHVK_EXACT(m, float(m), W1, 1e-300, 1e300 * np.sin(phi), np.zeros(m), 0.1)
+    assert x.DELTA == pytest.approx(0.1, rel=1e-12)
+    with pytest.raises(sarkp.RangeError, match="lost in the rounding"):
+        sarkp.flywheel(phi, 1e300, 1e-300 * np.sin(phi), delta=0.1, omega_mean=W1)
+    with pytest.raises(sarkp.RangeError, match="underflow"):
+        sarkp.flywheel(phi, 1.0, np.sin(phi), delta=0.1, omega_mean=1e-300)
+    with pytest.raises(sarkp.RangeError, match="not be a finite double"):
+        sarkp.motion(phi, 1e-300, 1e300)

@@ -1,9 +1,12 @@
-"""Fuzz tests of every exported routine of chapters 2-4 (Hypothesis; bounded to well under
-a minute).  Inputs and invariants are in tests/invariants.py: valid inputs over wide
-ranges (link ratios up to 1e6, mechanisms up to 1e6 from the origin, angles of any size)
-must give a result whose invariants hold within what the routine vouched for, or a clear
-error -- never a crash, never a silent NaN; a NaN, an infinity or a string in any input
-must be named in the error.  The long campaign is benchmarks/fuzz.py."""
+"""Fuzz tests of all 62 book routines, chapters 2-8 (Hypothesis; about a minute).
+Inputs and invariants are in tests/invariants.py: valid inputs over wide ranges (link
+ratios up to 1e6, mechanisms up to 1e6 from the origin, angles of any size) must give a
+result whose invariants hold within what the routine vouched for -- an error for an
+input built to be valid is a failure, and so are a crash and a silent NaN; a NaN, an
+infinity or a string in any input must be named in the error.  The inputs are Hypothesis
+draws (tests/strategies.py), so a failure shrinks to a small example.  The example
+budget and the CI policy (derandomized under CI) are those of tests/conftest.py.  The
+long campaign is benchmarks/fuzz.py."""
 
 import math
 import sys
@@ -18,23 +21,23 @@ import sarkp
 
 sys.path.insert(0, str(Path(__file__).resolve().parent))   # --import-mode=importlib
 from invariants import CASES, ROUTINES, call  # noqa: E402
+from strategies import DrawnRandom, inputs  # noqa: E402
 
-FUZZ = settings(max_examples=150, deadline=None, derandomize=True,
-                suppress_health_check=[HealthCheck.too_slow])
-SEEDS = st.integers(0, 2**63 - 1)
+FUZZ = settings(max_examples=100, deadline=None,
+                suppress_health_check=[HealthCheck.too_slow, HealthCheck.data_too_large])
+BAD = settings(FUZZ, max_examples=60)
 
 
 @pytest.mark.parametrize("name", ROUTINES)
 @FUZZ
-@given(seed=SEEDS)
-def test_valid_inputs_give_right_numbers_or_clear_errors(name, seed):
+@given(data=st.data())
+def test_valid_inputs_give_right_numbers(name, data):
     gen, check = CASES[name]
-    args = gen(np.random.default_rng(seed))
+    args = data.draw(inputs(gen), label="args")
     kind, out, bound = call(name, args)
-    assert kind in ("ok", "error"), (name, args, kind, out)
-    if kind == "ok":
-        violation = check(args, out, bound)
-        assert violation <= 1.0, (name, args, out, bound, violation)
+    assert kind == "ok", (name, args, kind, out)
+    violation = check(args, out, bound)
+    assert violation <= 1.0, (name, args, out, bound, violation)
 
 
 def _inputs(name):
@@ -42,11 +45,11 @@ def _inputs(name):
 
 
 @pytest.mark.parametrize("name", ROUTINES)
-@FUZZ
-@given(seed=SEEDS, bad=st.sampled_from([math.nan, math.inf, -math.inf, "x"]))
-def test_bad_inputs_are_named(name, seed, bad):
+@BAD
+@given(data=st.data(), bad=st.sampled_from([math.nan, math.inf, -math.inf, "x"]))
+def test_bad_inputs_are_named(name, data, bad):
     gen, _ = CASES[name]
-    rng = np.random.default_rng(seed)
+    rng = DrawnRandom.of(data.draw)
     args = gen(rng)
     k = int(rng.integers(0, len(args)))
     if isinstance(args[k], (list, np.ndarray)) and not isinstance(bad, str):
@@ -59,3 +62,42 @@ def test_bad_inputs_are_named(name, seed, bad):
         getattr(sarkp, name)(*args)
     names = _inputs(name)
     assert names[k] in str(info.value), (name, names[k], str(info.value))
+
+
+# -- defects the fuzzing found, kept as tests until they are fixed ---------------------------
+
+@pytest.mark.xfail(strict=True, raises=sarkp.SingularError,
+                   reason="DKNMA4 refuses a slider within a rounding of the pivot of a "
+                          "rotating guide; its docstring promises SingularError only for "
+                          "parallel guides (found by test_valid_inputs_give_right_numbers)")
+def test_dknma4_slider_at_the_pivot():
+    """Guide M: the x axis through A = (0.5, 0), turning about A with EM = 6; guide N
+    through C = (0, 0) at 0.05 rad, turning about C.  Both offsets are 0 (ETA3 = pi: a
+    sine of 1.2e-16), so B is at C, which guide N's rotation leaves in place; B moves
+    only along N as M turns: |a_B| = EM |AB| / sin(0.05) (the normal acceleration of
+    M's point under B, carried along N)."""
+    r = sarkp.DKNMA4(0.0, 0.5, 0.0, 0.05, 0.0, 0.0, 1.0, 0.0, 1.0, math.pi, 0.0, 1.0, 6.0,
+                     0.0, 0.0)
+    assert abs(r.XB) < 1e-15 and abs(r.YB) < 1e-15
+    assert r.VB < 1e-15
+    assert r.AB == pytest.approx(6.0 * 0.5 / math.sin(0.05), rel=1e-12)
+
+
+def test_every_book_routine_is_fuzzed():
+    from sarkp.library import declared_routines
+    assert sorted(ROUTINES) == sorted(declared_routines())
+
+
+@settings(max_examples=50, deadline=None)
+@given(data=st.data(), low=st.floats(-1e3, 1e3), width=st.floats(0.0, 1e3),
+       n=st.integers(1, 50))
+def test_drawn_random_keeps_numpy_ranges(data, low, width, n):
+    """The Hypothesis-backed generator keeps numpy's ranges: uniform in [low, high]
+    (numpy: [low, high)), integers in [low, high), choice among the options."""
+    rng = DrawnRandom.of(data.draw)
+    high = low + width
+    u = rng.uniform(low, high, 3)
+    assert u.shape == (3,) and np.all((low <= u) & (u <= high))
+    assert 0 <= rng.integers(n) < n and -n <= rng.integers(-n, n) < n
+    assert rng.choice(["a", "b"]) in ("a", "b") and 0.0 <= rng.random() <= 1.0
+    assert abs(rng.standard_normal()) <= 6.0

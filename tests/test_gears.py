@@ -858,3 +858,24 @@ def test_dkrkt_12_teeth_at_a_given_centre_distance():
     with pytest.raises(RequirementError, match=r"x1 = 0\.2373 is below X1P = 0\.2981.*"
                                                r"x1 = 0\.2981, x2 = 0\.5352"):
         DKRKT(4.0, 12, 34, 95.0, 0)
+
+
+def test_duginv_subnormal_involute_accuracy():
+    """The docstring's figures: below 1e-15 relative for normal INVX, up to 2.8e-14 (and
+    not above 3e-14) for subnormal INVX, where the root is (3 INVX)^(1/3) to 1e-60."""
+    def worst(vs):
+        return max(abs((mp.mpf(DUGINV(float(v), math.pi / 18, 1e-5))
+                        - mp.cbrt(3 * mp.mpf(float(v)))) / mp.cbrt(3 * mp.mpf(float(v))))
+                   for v in vs)
+    assert worst(np.geomspace(2.2250738585072014e-308, 1e-60, 300)) < 1e-15
+    sub = worst(np.geomspace(5e-324, 2.2e-308, 600))
+    assert 1e-15 < sub < 3e-14
+
+
+def test_dkrkt_splits_bad_input():
+    with pytest.raises(ValueError, match="M = -4.0"):
+        sarkp.dkrkt_splits(-4.0, 12, 34, 95.0)
+    with pytest.raises(TypeError, match="AW"):
+        sarkp.dkrkt_splits(4.0, 12, 34, "95")
+    with pytest.raises(ValueError, match="r_b1 \\+ r_b2"):
+        sarkp.dkrkt_splits(4.0, 12, 34, 80.0)

@@ -350,36 +350,33 @@ def test_slider_kinds_virtual_work(kind):
         m.fixed("C", 0.0, -0.25)
         m.rpr("B", "A", "C", 0.02, math.pi / 2)
         m.point("T", "C", "B", 0.4)
-        m.mass("C", "B", mass=2.0, inertia=0.05, centre=0.15)
-        m.mass("A", "B", mass=0.3, inertia=1e-4)
+        m.point("S3", "C", "B", 0.15)
+        centres = [("S3", ("C", "B"), 2.0, 0.05), ("A", ("A", "B"), 0.3, 1e-4)]
         link, pt = ("C", "B"), "T"
         phi = PHI
     elif kind == 4:
         m.fixed("G", 0.0, 0.05)
         m.prp("B", "A", math.pi / 2, "G", 0.0, guide_m=("O", "A"))
-        m.mass("B", "G", mass=1.2, inertia=2e-3)
-        m.mass("B", "A", mass=0.4, inertia=1e-3)
+        centres = [("B", ("B", "G"), 1.2, 2e-3), ("B", ("B", "A"), 0.4, 1e-3)]
         link, pt = ("B", "G"), "B"
         phi = np.linspace(-1.0, 1.0, 21)
     else:
         m.fixed("G", 0.2, -0.3)
         m.rpp("K", "G", 0.0, "A", math.pi / 2)
-        m.mass("K", "G", mass=2.5, inertia=0.1)
-        m.mass("A", "K", mass=0.2, inertia=1e-4)
+        centres = [("K", ("K", "G"), 2.5, 0.1), ("A", ("A", "K"), 0.2, 1e-4)]
         link, pt = ("K", "G"), "K"
         phi = PHI
+    for point, lk, mass, inertia in centres:
+        m.mass(point, lk[1] if lk[0] == point else lk[0], mass=mass, inertia=inertia)
     m.force(pt, -50.0, 20.0)
     m.torque(*link, 3.0)
     w1, e1 = 6.0, -1.0
     r = m.solve(phi, omega=w1, epsilon=e1, need="forces", gravity=G)
-    # virtual work with every mass's centre velocity from the result's own rigid points
     total = 0.0
-    for (li, p, mass, inertia) in m._masses:
-        name = [n for n, i in m._points.items() if i == p][0]
-        v = r.positions[..., p, :] * 0 + r.velocities[..., p, :]
-        a = r.accelerations[..., p, :]
+    for point, lk, mass, inertia in centres:
+        v, a = r.velocity(point), r.acceleration(point)
         total = total + np.sum((-mass * a - mass * np.array([0.0, G])) * v, -1) \
-            - inertia * r.epsilons[..., li] * r.omegas[..., li]
+            - inertia * r.epsilon(*lk) * r.omega(*lk)
     total = total + np.sum(np.array([-50.0, 20.0]) * r.velocity(pt), -1) \
         + 3.0 * r.omega(*link)
     vw = -total / w1
@@ -492,6 +489,35 @@ def test_positions_agree_with_pylinkage():
     names = [c.name for c in linkage.components]
     theirs = pos[:, names.index("B")]
     np.testing.assert_allclose(theirs, ours, rtol=0, atol=1e-12)
+
+
+def test_sixbar_positions_agree_with_pylinkage():
+    """Program X's six-bar: a lever point (pylinkage's FixedDyad) and an RRP group."""
+    pytest.importorskip("pylinkage")
+    from pylinkage.actuators import Crank
+    from pylinkage.components import Ground
+    from pylinkage.dyads import FixedDyad, RRPDyad, RRRDyad
+    from pylinkage.simulation import Linkage
+    n = 72
+    g = COURSE
+    xc, yc = -g["roc"] * math.sin(g["delta"]), g["roc"] * math.cos(g["delta"])
+    phi = 2 * math.pi * np.arange(n) / n
+    r = sixbar(loads=False).solve(phi, need="positions")
+    O, C = Ground(0.0, 0.0, name="O"), Ground(xc, yc, name="C")
+    G1, G2 = Ground(0.0, g["h5"] + yc, name="G1"), Ground(1.0, g["h5"] + yc, name="G2")
+    crank = Crank(anchor=O, radius=g["roa"], angular_velocity=2 * math.pi / n,
+                  initial_angle=-2 * math.pi / n, name="A")
+    B = RRRDyad(crank.output, C, distance1=g["rab"], distance2=g["rcb"],
+                x=r.position("B")[0, 0], y=r.position("B")[0, 1], name="B")
+    D = FixedDyad(C, B, distance=g["rcd"], angle=math.pi, name="D")
+    E = RRPDyad(D, G1, G2, distance=g["rde"], name="E")
+    E.x, E.y = r.position("E")[0]
+    linkage = Linkage([O, C, crank, B, G1, G2, D, E], name="sixbar")
+    pos = np.array([[c for c in step] for step in linkage.step(iterations=n)])
+    names = [c.name for c in linkage.components]
+    for p in "BDE":
+        np.testing.assert_allclose(pos[:, names.index(p)], r.position(p), rtol=0,
+                                   atol=1e-12, err_msg=p)
 
 
 # -- law of motion ----------------------------------------------------------------------------
@@ -615,7 +641,7 @@ def test_bad_solve_input():
     with pytest.raises(TypeError, match="phi"):
         m.solve("a")
     m.force("A", np.ones(5), 0.0)
-    with pytest.raises(ValueError, match="5 values for 37 positions"):
+    with pytest.raises(ValueError, match="force at 'A': fx has 5 values for 37 positions"):
         m.solve(PHI, need="forces")
     with pytest.raises(ValueError, match="no crank"):
         Mechanism().solve(PHI)
@@ -623,3 +649,94 @@ def test_bad_solve_input():
         n = Mechanism()
         n.fixed("O", 0, 0)
         n.rrr("B", "O", "O", 1, 1)
+
+
+def test_bad_description_other_kinds():
+    m = Mechanism()
+    m.fixed("O", 0.0, 0.0)
+    m.fixed("G", 0.0, 0.05)
+    m.crank("A", "O", 0.1)
+    with pytest.raises(ValueError, match="joint 'A' is not a frame point"):
+        m.prp("B", "A", 0.0, "G", 0.5)
+    with pytest.raises(ValueError, match="parallel to the guide"):
+        m.rpp("K", "G", 0.0, "A", 0.0)
+    with pytest.raises(ValueError, match="unknown joint 'Z'"):
+        m.rpr("B", "A", "Z", 0.1)
+    m.prp("B", "A", math.pi / 2, "G", 0.0, guide_m=("O", "A"))
+    with pytest.raises(ValueError, match="does not turn with the link"):
+        m.point("X", "B", "A", 0.1)
+    with pytest.raises(ValueError, match="centre off joint 'B'"):
+        m.mass("B", "A", mass=1.0, centre=0.1)
+    with pytest.raises(ValueError, match="not on link"):
+        m.force("A", 1.0, 0.0, link=("B", "G"))
+    with pytest.raises(ValueError, match="several links"):
+        m.mass("B", mass=1.0)                       # two sliders meet at B: name one
+    r = m.solve(np.linspace(-1.0, 1.0, 5), need="forces")
+    with pytest.raises(ValueError, match="several pairs at 'B' match"):
+        r.reaction("B")
+
+
+def test_omega_per_position_is_each_position_alone():
+    m = fourbar()
+    w = np.linspace(1.0, 5.0, PHI.size)
+    e = np.linspace(-2.0, 2.0, PHI.size)
+    r = m.solve(PHI, omega=w, epsilon=e, need="forces", gravity=G)
+    for i in (0, 7, 20):
+        ri = m.solve(PHI[i], omega=w[i], epsilon=e[i], need="forces", gravity=G)
+        np.testing.assert_array_equal(r.acceleration("B")[i], ri.acceleration("B"))
+        assert r.balancing_moment[i] == ri.balancing_moment
+
+
+def test_nan_positions_with_forces():
+    m = Mechanism()
+    m.fixed("O", 0.0, 0.0)
+    m.fixed("C", 0.5, 0.0)
+    m.crank("A", "O", 0.2)
+    m.rrr("B", "A", "C", 0.2, 0.2)
+    m.mass("A", "B", mass=1.0, centre=0.1)
+    phi = np.linspace(0.0, math.pi, 7)
+    r = m.solve(phi, omega=2.0, need="forces", gravity=G, on_error="nan")
+    bad = r.status != 0
+    assert bad.any() and not bad.all()
+    assert np.all(np.isnan(r.balancing_moment[bad])) and np.all(np.isnan(r.reaction("B")[bad]))
+    assert np.all(np.isfinite(r.balancing_moment[~bad]))
+
+
+def test_guides_on_moving_links_coriolis():
+    """Kinds 2 and 5 with their guides on a turning link: the Coriolis and transport terms
+    against central differences; the slider stays on the turning guide."""
+    m = Mechanism()
+    m.fixed("O", 0.0, 0.0)
+    m.fixed("C", 0.5, 0.1)
+    m.crank("A", "O", 0.15)
+    m.rrr("B", "A", "C", 0.45, 0.3)
+    # a slider E on a guide carried by the rocker C-B (through C, at 0.3 rad from C->B),
+    # pushed by the rod A-E
+    m.rrp("E", "A", "C", 0.3, 0.5, guide=("C", "B"))
+    # a slotted link on a guide through B along A-B, with a block pivoted at the crank pin
+    m.rpp("K", "B", 0.2, "A", 1.2, guide=("A", "B"))
+    phi = np.linspace(0.0, 2 * math.pi, 25)
+    check_derivatives(m, ["E", "K"], phi=phi, links=[("A", "E"), ("K", "B"), ("A", "K")])
+    r = m.solve(phi, need="positions")
+    C, E = np.array([0.5, 0.1]), r.position("E")
+    u = np.stack([np.cos(r.angle("C", "B") + 0.3), np.sin(r.angle("C", "B") + 0.3)], -1)
+    np.testing.assert_allclose(cross(u, E - C), 0.0, atol=1e-15)
+    np.testing.assert_allclose(np.hypot(*(E - r.position("A")).T), 0.5, rtol=1e-15)
+
+
+def test_crank_alone_closed_form():
+    """A crank with its own mass: M_b = J_O epsilon + m g x_S, the pivot's force
+    m (a_S + g) with J_O = J_S + m s**2; J_red = J_O."""
+    m = Mechanism()
+    m.fixed("O", 0.0, 0.0)
+    m.crank("A", "O", 0.2)
+    m.mass("O", "A", mass=2.0, inertia=0.1, centre=0.1)
+    w, e = 2.0, 1.5
+    r = m.solve(PHI, omega=w, epsilon=e, need="forces", gravity=G)
+    J_O = 0.1 + 2.0 * 0.1**2
+    np.testing.assert_allclose(r.balancing_moment, J_O * e + 2.0 * G * 0.1 * np.cos(PHI),
+                               rtol=1e-13, atol=1e-14)
+    aS = 0.1 * np.stack([-w * w * np.cos(PHI) - e * np.sin(PHI),
+                         -w * w * np.sin(PHI) + e * np.cos(PHI)], -1)
+    np.testing.assert_allclose(r.reaction("O"), 2.0 * (aS + [0.0, G]), rtol=1e-13, atol=1e-13)
+    np.testing.assert_allclose(r.reduced_inertia, J_O, rtol=1e-15)

@@ -132,3 +132,15 @@ def test_vii10_forces_and_balancing_moment():
     bad = [name for name, v in named.items()
            if not close(v, polar(t, name, "G" + name[1:]), scale)]
     assert not bad
+
+
+def test_program_x_flywheel_from_the_mechanism(x_paths):
+    links, kin, fo, ipr, ours = x_paths
+    fw = x_mechanism.flywheel(links)
+    assert fw.delta == pytest.approx(prog_x.DELTA_FLYWHEEL["corrected"], rel=1e-9)
+    # its J_red and M_red on the program's 37 angles are the program's IPR + IS1 and M1
+    fs = np.where(ours["W3"] < 0.0, 2000.0, 400.0)
+    m = x_mechanism.mechanism(links, fs, crank_inertia=True)
+    r = m.solve(prog_x.crank_angles(), omega=1.0, need="forces", gravity=prog_x.G)
+    assert close(r.reduced_inertia, ipr + fo["IS1"])
+    assert close(r.reduced_moment, fo["M1"])

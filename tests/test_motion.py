@@ -240,6 +240,22 @@ def test_flywheel_not_needed_is_negative():
     assert fw.J_flywheel < 0 and fw.delta == pytest.approx(0.1, rel=1e-12)
 
 
+def test_flywheel_when_the_closed_form_misses():
+    """A large delta on a machine whose inertia nearly vanishes at one angle: at DEC's
+    extremes the closed form asks for J_flywheel = -2.74, which would make J + J_flywheel
+    negative there; the bisection over J_flywheel then finds the exact one."""
+    phi = np.linspace(0.0, 2 * math.pi, 73)
+    J = 0.053146296753943396 + \
+        12.20434452565231 * (1 + np.cos(phi + 4.563585180590357)) ** 2
+    M = 48.63049134723755 * np.sin(phi + 1.3065391833085378) + \
+        19.175904355867573 * np.sin(3 * phi)
+    delta = 0.7817535577353678
+    fw = flywheel(phi, J, M, delta=delta, omega_mean=3.0)
+    assert fw.delta == pytest.approx(delta, rel=1e-12, abs=0)
+    again = motion(phi, J + fw.J_flywheel, M, omega_mean=3.0)
+    assert again.delta == pytest.approx(delta, rel=1e-12, abs=0)
+
+
 def test_a_stall_without_flywheel_and_the_flywheel_that_cures_it():
     phi = np.linspace(0.0, 2 * math.pi, 73)
     M = 300 * np.sin(phi)
@@ -267,15 +283,28 @@ def test_the_crank_stops_inside_the_grid():
     assert np.isfinite(r.t[:16]).all() and np.isnan(r.t[16:]).all()
 
 
-def test_results_pickle_and_print_short():
+def test_results_pickle_print_short_and_convert():
+    """sarkp.results' base: a named tuple that pickles, prints a few values of each array
+    (not 2001), and converts to a DataFrame (pandas optional)."""
     phi = np.linspace(0.0, 2 * math.pi, 2001)
     r = motion(phi, 2.0, 10 * np.sin(phi), omega_mean=4.0)
     back = pickle.loads(pickle.dumps(r))
     assert np.array_equal(back.omega, r.omega) and back.delta == r.delta
-    assert len(repr(r)) < 200 and "2001 points" in repr(r)
+    assert isinstance(r, sarkp.results.Result) and r._fields[:3] == ("phi", "omega", "t")
+    p, w, t = r[:3]
+    assert w is r.omega
+    assert len(repr(r)) < 600 and "..." in repr(r)
     fw = flywheel(phi, 2.0, 10 * np.sin(phi), delta=0.01, omega_mean=4.0)
     back = pickle.loads(pickle.dumps(fw))
-    assert back.J_flywheel == fw.J_flywheel and len(repr(fw)) < 200
+    assert back.J_flywheel == fw.J_flywheel and len(repr(fw)) < 600
+    p37 = np.linspace(0.0, 2 * math.pi, 37)
+    x = pickle.loads(pickle.dumps(sarkp.DMHVK_EXACT(37, 37.0, 3.0, 1.0, np.sin(p37),
+                                                    np.zeros(37), 0.1)))
+    assert x._fields == ("IMHVK", "IMERK", "DELTA")
+    pd = pytest.importorskip("pandas")
+    frame = r.to_frame()
+    assert isinstance(frame, pd.DataFrame) and len(frame) == 2001
+    assert np.array_equal(frame["omega"].to_numpy(), r.omega)
 
 
 _PHI = np.linspace(0.0, 2 * math.pi, 9)
@@ -323,3 +352,80 @@ def test_wrong_types_are_type_errors():
         motion("0123", 1.0, 1.0)
     with pytest.raises(TypeError, match="delta"):
         flywheel(_PHI, 1.0, np.sin(_PHI), delta=None, omega_mean=1.0)
+
+
+@pytest.mark.parametrize("seed", range(5))
+def test_from_rest_against_the_exact_work_and_quad(seed):
+    """Random trigonometric loads that keep the crank turning, from rest: omega within the
+    cubic rule's error bound of sqrt(2 A/J), A the exact work; t(phi) against scipy's quad
+    of t = integral of sqrt(J/(2 A)) ds, taken as 2 g(u^2) du with u = sqrt(s) and
+    g = sqrt(J s/(2 A)) smooth, converging at fourth order."""
+    from scipy.integrate import quad
+
+    rng = np.random.default_rng(seed)
+    a = rng.uniform(-1.0, 1.0, 3)
+    b = rng.uniform(-1.0, 1.0, 3)
+    k = np.arange(1, 4)
+    m_min = rng.uniform(0.5, 3.0)
+    m0 = m_min + np.abs(a).sum() + np.abs(b).sum()           # M >= m_min > 0
+    j0, j1 = rng.uniform(1.0, 3.0), rng.uniform(0.0, 0.9)
+
+    def M(p):
+        p = np.asarray(p)[..., None]
+        return m0 + (a * np.sin(k * p) + b * np.cos(k * p)).sum(-1)
+
+    def A(s):               # the exact work from 0
+        s = np.asarray(s)[..., None]
+        work = (a * (1 - np.cos(k * s)) / k + b * np.sin(k * s) / k).sum(-1)
+        return m0 * s[..., 0] + work
+
+    def J(p):
+        return j0 * (1 + j1 * np.sin(p) ** 2)
+
+    def g(s):
+        return math.sqrt(J(s) * s / (2 * A(s))) if s > 0 else math.sqrt(J(0.0) / (2 * m0))
+
+    end = rng.uniform(2.0, 8.0)
+    checks = (0.3, 0.5, 1.0)          # fractions of the range (nearer the start the error
+    #                                   changes sign before it settles to its h^4 rate)
+    # t = integral of g(s) s^(-1/2) ds = integral of 2 g(u^2) du, u = sqrt(s): smooth
+    exact = [quad(lambda u: 2.0 * g(u * u), 0.0, math.sqrt(f * end), epsabs=0,
+                  epsrel=2e-14, limit=200)[0] for f in checks]
+    errors = []
+    for n in (401, 801, 1601):
+        phi = np.linspace(0.0, end, n)
+        h = phi[1]
+        r = motion(phi, J(phi), M(phi))
+        # the cubic rule's error in A is at most (19/720) h^4 max|M''''| per unit of
+        # angle (19/720: the one-sided end formula; 11/720 inside), A >= m_min s, and
+        # omega's relative error is half A's
+        bound = 0.5 * (19 / 720) * h**4 * (k**4 * (np.abs(a) + np.abs(b))).sum() / m_min
+        rel = np.abs(r.omega[1:] / np.sqrt(2 * A(phi[1:]) / J(phi[1:])) - 1)
+        assert rel.max() <= bound + 1e-15
+        idx = [round(f * (n - 1)) for f in checks]
+        errors.append(max(abs(r.t[i] / t - 1) for i, t in zip(idx, exact)))
+    orders = _orders(errors)
+    assert errors[-1] < 1e-8 and np.all(orders > 3.5), errors
+
+
+def test_booleans_are_type_errors():
+    with pytest.raises(TypeError, match="J"):
+        motion(_PHI, True, 1.0)
+    with pytest.raises(TypeError, match="M"):
+        motion(_PHI, 1.0, np.ones(9, dtype=bool))
+
+
+def test_steady_motion_is_dzkndv_up_to_the_trapezoid_error():
+    """The same machine through DZKNDV (corrected: the energy equation with trapezoids)
+    and motion(omega_mean=...) (the cubic rule): they differ by the trapezoid rule's
+    O(h^2), a quarter on halving the step."""
+    isc, W = 4.0, 3.0
+    gaps = []
+    for n in (73, 145, 289):
+        phi = np.linspace(0.0, 2 * math.pi, n)
+        M = 25 * np.sin(phi) + 10 * np.sin(3 * phi) - 8.0
+        jv = 1.5 + np.cos(2 * phi)
+        d = sarkp.DZKNDV(n, float(n), W, isc, M, jv)
+        r = motion(phi, isc + jv, M, omega_mean=W)
+        gaps.append(np.abs(d.WPR - r.omega).max())
+    assert np.all(np.abs(_orders(gaps) - 2.0) < 0.05), gaps

@@ -18,6 +18,12 @@ def _flywheel_example():
     return re.search(r"```python\n(.*?)```", section, re.S).group(1)
 
 
+def _printed():
+    text = README.read_text(encoding="utf-8")
+    section = text[text.index("## A flywheel in the default mode"):]
+    return re.search(r"It prints:\n\n```text\n(.*?)```", section, re.S).group(1)
+
+
 def test_flywheel_example_runs_and_is_right(capsys):
     """The README's flywheel example, in the default (corrected) mode: the stall, DEC
     kept, the exact flywheel's delta (DZKNDV rerun and sarkp.flywheel), and the start-up
@@ -28,6 +34,7 @@ def test_flywheel_example_runs_and_is_right(capsys):
     ns = {}
     exec(compile(_flywheel_example(), "README.md", "exec"), ns)
     out = capsys.readouterr().out
+    assert out == _printed()                 # what the README says it prints
     assert out.splitlines()[0] == "REQUIREMENT"
     assert "delta 0.010000" in out.splitlines()[1]
     r, exact, W1 = ns["r"], ns["exact"], ns["W1"]

@@ -156,6 +156,10 @@ def test_result_type_is_reusable_and_cached():
     assert p.norm == 5.0 and repr(p) == "P(X=3.0, Y=4.0)"
     back = pickle.loads(pickle.dumps(p))
     assert type(back) is cls and back.norm == 5.0
+    class Local(cls):                       # not importable: unpickles as its result class
+        __slots__ = ()
+    back = pickle.loads(pickle.dumps(Local(6.0, 8.0)))
+    assert type(back) is cls and back.norm == 10.0
     with pytest.raises(ValueError, match="_x"):
         result_type("Q", ("_x",))
     with pytest.raises(TypeError):
@@ -203,3 +207,43 @@ def test_significance_warning_carries_digits():
         assert isinstance(w.digits, int) and 1 <= w.digits <= 7
         assert f"about {w.digits} significant digit" in str(w)
     assert scalar.index is None and array.index == (1,)
+
+
+def test_readme_section_runs(capsys):
+    """README.md's 'Results and errors as objects' example runs and prints what it says."""
+    import re
+    from pathlib import Path
+    text = (Path(__file__).resolve().parent.parent / "README.md").read_text()
+    section = text.split("## Results and errors as objects", 1)[1].split("\n## ", 1)[0]
+    code = re.search(r"```python\n(.*?)```", section, re.S).group(1)
+    namespace = {}
+    exec(compile(code, "README.md", "exec"), namespace)
+    printed = capsys.readouterr().out
+    assert printed.startswith("DPRM1(shape (361,),") and len(printed) < 600
+    assert namespace["frame"].shape == (361, 4)
+    assert namespace["same"].XB.tolist() == namespace["r"].XB.tolist()
+    assert printed.rstrip().endswith("1 (1,)")
+
+
+def test_every_routine_result_pickles_and_converts():
+    """One valid call of each of the 62 routines (the fuzz generators of
+    tests/invariants.py, seed 0): the result pickles to equal values and converts to a
+    frame with a column per field and a row per position."""
+    from pathlib import Path
+    sys.path.insert(0, str(Path(__file__).resolve().parent))
+    from invariants import CASES
+    pytest.importorskip("pandas")
+    for name, (gen, _) in CASES.items():
+        args = gen(np.random.default_rng(0))
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", sarkp.SignificanceWarning)
+            r = getattr(sarkp, name)(*args, on_error="nan")
+        back = pickle.loads(pickle.dumps(r))
+        assert type(back) is type(r) and back._fields == r._fields, name
+        for a, b in zip(r, back):
+            np.testing.assert_array_equal(a, b, err_msg=name)
+        frame = r.to_frame()
+        shape = np.broadcast_shapes(*(np.shape(v) for v in r))
+        assert list(frame.columns) == list(r._fields), name
+        assert len(frame) == max(1, math.prod(shape)), name
+        assert len(repr(r)) < 3000, name

@@ -282,14 +282,44 @@ def test_fig10_slider_needs_0535_E_FIG10_1():
         assert abs(getattr(ocr, name) - printed.value) > 5 * printed.unit
 
 
+def listing_dsntz3(xb1, yb1, xb2, yb2, xc1, yc1, xc2, yc2, fi1, alc1, pi, integer):
+    """Listing III.4 (python/sarkp/listings/III.4_DSNTZ3.f) line by line in double
+    precision: the slopes KS1A, KS2D, KB1A, KC1D, the two 2x2 systems, the lengths.
+    ``integer``: KB1A, KS2D and L3 are INTEGER (implicit typing: only KS1A, KS2E and
+    KC1D are declared REAL), so the assignments truncate (E-DSNTZ3-2)."""
+    trunc = math.trunc if integer else float
+    fib1b2 = math.atan2(yb2 - yb1, xb2 - xb1)            # DUGL2, in [-pi, pi]
+    fic1c2 = math.atan2(yc2 - yc1, xc2 - xc1)
+    ks1a = -1.0 / math.tan(fib1b2)
+    ks2d = trunc(-1.0 / math.tan(fic1c2))
+    kb1a = trunc(math.tan(fib1b2 - pi / 2.0 + fi1 / 2.0))
+    kc1d = -1.0 / math.tan(alc1)
+    xs1, ys1 = 0.5 * (xb1 + xb2), 0.5 * (yb1 + yb2)
+    xs2, ys2 = 0.5 * (xc1 + xc2), 0.5 * (yc1 + yc2)
+    a = np.linalg.solve([[-kb1a, 1.0], [-ks1a, 1.0]], [yb1 - kb1a * xb1, ys1 - ks1a * xs1])
+    d = np.linalg.solve([[-kc1d, 1.0], [-ks2d, 1.0]], [yc1 - kc1d * xc1, ys2 - ks2d * xs2])
+    l1 = math.hypot(a[0] - xb1, a[1] - yb1)
+    l3 = trunc(math.hypot(xc1 - d[0], yc1 - d[1]))
+    lo = math.hypot(d[0] - a[0], d[1] - a[1])
+    return l1, float(l3), lo
+
+
 def test_dsntz3_truncation_switch_E_DSNTZ3_2():
+    """Fig. 10's DSNTZ3 case: as-printed mode is the listing with its implicit INTEGERs,
+    corrected mode the listing with every variable REAL; both recomputed here from the
+    listing (slopes and 2x2 systems, not sarkp's normal-form lines, E-SYN-1)."""
     args = (0.2, 0.4, 0.6, 0.5, 0.8, 0.85, 1.343, 0.6)
+    pi = 3.14159
     with sarkp.as_printed():
-        pi = 3.14159
         r = DSNTZ3(*args, pi / 3, pi / 9.0)
-    assert r[:3] == pytest.approx((0.4006938, 0.0, 0.5739535), abs=2e-7)
+    book = listing_dsntz3(*args, pi / 3, pi / 9.0, pi, integer=True)
+    assert book[1] == 0.0                                # L3 = AINT(0.41...) as printed
+    assert r[:3] == pytest.approx(book, rel=1e-12, abs=1e-15)
     r = DSNTZ3(*args, math.pi / 3, math.pi / 9.0)
-    assert r[:3] == pytest.approx((0.4123106, 0.4247681, 0.5753025), abs=2e-7)
+    exact = listing_dsntz3(*args, math.pi / 3, math.pi / 9.0, math.pi, integer=False)
+    assert r[:3] == pytest.approx(exact, rel=1e-12)
+    # the printed Fig. 10 cells (0.401 / 0.0 / 0.574) are compared in
+    # test_fig10_as_printed_all_reproducible_cells
 
 
 def test_fig10_dsntz2_pivot_in_the_result():
@@ -321,10 +351,24 @@ def test_course_project_call_L7316():
     # Program X: CALL DSNTZR(X5, H5, FICD, FI5, 1.0, RCD, RDE, FICD1); Fig. 84 prints
     # RCD = 0.579, RDE = 0.701, FICD = -0.000.  The 8th result is Table 3 step 12; the
     # printed -0.000 is not reproduced (ERRATA E-DSNTZR-3).
+    lo, l3, fi1, fi3 = [0.82, 0.62, 0.42], 0.64, [0.0, 0.349, 0.698], [1.57] * 3
     with sarkp.as_printed():
-        r = DSNTZR([0.82, 0.62, 0.42], 0.64, [0.0, 0.349, 0.698], [1.57] * 3, 1.0)
+        r = DSNTZR(lo, l3, fi1, fi3, 1.0)
     assert (round(r.L1, 3), round(r.L2, 3)) == (0.579, 0.701)
-    assert r.FI11 == pytest.approx(1.3562568, abs=1e-7)
+    # Table 3 by hand: C_i in the crank's frame, B the centre of the circle through them,
+    # FI11 the direction of B from the crank pivot
+    pts = [(lo[i] * math.cos(fi1[0] - fi1[i]) + l3 * math.cos(fi3[i] + fi1[0] - fi1[i]),
+            lo[i] * math.sin(fi1[0] - fi1[i]) + l3 * math.sin(fi3[i] + fi1[0] - fi1[i]))
+           for i in range(3)]
+    (ax, ay), (bx, by), (cx, cy) = pts
+    d = 2 * (ax * (by - cy) + bx * (cy - ay) + cx * (ay - by))
+    ux = ((ax**2 + ay**2) * (by - cy) + (bx**2 + by**2) * (cy - ay)
+          + (cx**2 + cy**2) * (ay - by)) / d
+    uy = ((ax**2 + ay**2) * (cx - bx) + (bx**2 + by**2) * (ax - cx)
+          + (cx**2 + cy**2) * (bx - ax)) / d
+    assert r.L1 == pytest.approx(math.hypot(ux, uy), rel=1e-12)
+    assert r.L2 == pytest.approx(math.hypot(ax - ux, ay - uy), rel=1e-12)
+    assert r.FI11 == pytest.approx(math.atan2(uy, ux), abs=1e-12)
 
 
 # ---- DSNTZR: three precision positions -----------------------------------------------
@@ -646,11 +690,15 @@ def test_dsntzk_rotating(kw3, s, h):
 
 
 def test_dsntzk_values_and_bad_input():
-    # no printed example; values of the listing (notes, REAL*4) in double precision
-    assert DSNTZK(1.5, 0.3, 0.05, 1.0)[:3] == pytest.approx(
-        (0.1027864, 0.3326238, 0.4854102), abs=1e-7)
-    assert DSNTZK(1.5, 0.3, 0.05, 0.0)[:3] == pytest.approx((0.0763932, 0.0236068, 0.15),
-                                                             abs=1e-7)
+    # no printed example; the closed forms of (3.3) with BETA = pi/2 (KW3 - 1)/(KW3 + 1)
+    # = pi/10: oscillating, L3 = S/(2 sin BETA), L1 = LO sin BETA, LO + L1 = L3 - H;
+    # rotating, L3 = S/2, LO = L1 sin BETA, L1 + LO = L3 - H
+    sb = math.sin(math.pi / 10)
+    l3 = 0.3 / (2 * sb)
+    lo = (l3 - 0.05) / (1 + sb)
+    assert DSNTZK(1.5, 0.3, 0.05, 1.0)[:3] == pytest.approx((lo * sb, lo, l3), rel=1e-14)
+    l1 = (0.15 - 0.05) / (1 + sb)
+    assert DSNTZK(1.5, 0.3, 0.05, 0.0)[:3] == pytest.approx((l1, l1 * sb, 0.15), rel=1e-14)
     with pytest.raises(RequirementError, match="KW3 <= 1"):
         DSNTZK(1.0, 0.3, 0.05, 1.0)
     with pytest.raises(RequirementError, match="reserve H"):

@@ -11,16 +11,23 @@ as in Figs. 35-36).  A radius of curvature is positive where the profile is conv
 
 No routine of this chapter uses PI, so both modes compute the same here; program V.5
 (:mod:`sarkp.book.prog_v_5`) differs between modes through PI and the ES EVM's arithmetic.
+
+sarkp extensions (not in the book), for designing a cam rather than checking one:
+:func:`motion_law` (the standard laws over rise-dwell-return-dwell, in closed form, with
+their peak factors :data:`LAW_FACTORS`); roller followers :func:`roller_translating` and
+:func:`roller_rocker` (pitch curve, working profile, curvature, undercut); and exact
+sizing beside the book's rules: :func:`base_radius` (DKLCHK), :func:`flat_base_radius`
+(DPRFPL) and :func:`rocker_centre_distance` (DKLCHK, INDEX = 2).
 """
 
 from __future__ import annotations
 
 import math
-from collections import namedtuple
 
 import numpy as np
 
 from .library import ST_REQUIREMENT, ST_SINGULAR, Check, book_routine
+from .results import result_type
 
 __all__ = ["DKLCHK", "DPRFLP", "DPRFPL", "DPRFLK", "motion_law", "LAW_FACTORS",
            "roller_translating", "roller_rocker", "base_radius", "flat_base_radius",
@@ -120,12 +127,15 @@ ValueError
 Notes
 -----
 When ``VLST[0]`` is the largest value the printed loop never sets L (ERRATA
-E-DKLCHK-1); sarkp takes the first point.  Only the point of largest velocity is
-checked: on the return stroke the pressure angle can exceed ALD (Fig. 35 reaches
-0.82 rad there); DPRFLP's ``ALFMAX`` and ``NOVER`` report it.  DPRFLP uses RO as the
-follower's axial distance, not as the base-circle radius that this rule assumes
-(E-DPRFLP-3): the cam drawn by DPRFLP is a little larger than needed, and its rise
-stays within ALD (Fig. 35: at most 0.52027 rad).
+E-DKLCHK-1); sarkp takes the first point.  The rule is the book's, kept as printed; the
+smallest radius that keeps the pressure angle within ALD over the whole cycle is
+:func:`base_radius` (for a rocker, whose INDEX = 2 rule applies the translating
+follower's formula to angles, :func:`rocker_centre_distance`).  Only the point of
+largest velocity is checked: on the return stroke the pressure angle can exceed ALD
+(Fig. 35 reaches 0.82 rad there); DPRFLP's ``ALFMAX`` and ``NOVER`` report it.
+DPRFLP uses RO as the follower's axial distance, not as the base-circle radius that
+this rule assumes (E-DPRFLP-3): the cam drawn by DPRFLP is a little larger than needed,
+and its rise stays within ALD (Fig. 35: at most 0.52027 rad).
 """)
 
 
@@ -206,7 +216,12 @@ The printed listing swaps the names of the transfer functions (``D2SDFI = V(K)/W
 (L3184-3185, E-DPRFLP-2); Fig. 35 is reproduced only with the forms above, which both
 modes use.  RO is an axial distance here, while DKLCHK derives it as the base-circle
 radius (E-DPRFLP-3): the profile's smallest radius is ``sqrt(RO**2 + EXCNTR**2)``.
-The pressure angle is checked on every point, rise and return alike.
+The pressure angle is checked on every point, rise and return alike.  ``cos(ALFA)``
+and ``sin(ALFA)`` are taken from the tangent, ``C/h`` and ``(s' - e)/h`` with
+``h = hypot(C, s' - e)``, not as ``cos(atan(...))``, whose rounding near 90 degrees
+leaves only the digits of ``pi/2 - ALFA`` that ALFA holds: ``DPRFLP(1, 1e-14, 0.0,
+10.0, [0.7], [3.0], [0.5], [0.0]).ROK`` is 0.025 exactly, where the printed form gives
+0.0250185 (ERRATA E-DPRFLP-5).  For a roller follower see :func:`roller_translating`.
 """)
 
 
@@ -228,7 +243,9 @@ DPRFPL = book_routine(
 The book's call is ``CALL DPRFPL(N, GAMMA, W, FI, A, V, S, XA, YA, R1, DELTA, ROK,
 RKSH)``; the radius of the cam RKSH is chosen by the routine.  At the first minimum of
 the acceleration, ``A[L]``, with ``s''min = A[L]/W**2`` (the convexity rule (5.4), L3118):
-``RKSH = |s''min/tan(GAMMA) + S[L]|``.  Then, with ``C = RKSH + S``, ``s' = V/W`` and
+``RKSH = |s''min/tan(GAMMA) + S[L]|`` (the book's rule looks at that one point; the
+smallest radius that keeps the profile convex over the whole cycle is
+:func:`flat_base_radius`).  Then, with ``C = RKSH + S``, ``s' = V/W`` and
 ``s'' = A/W**2`` (L3205-3209):
 
 * ``XA = C sin(FI) + s' cos(FI)``, ``YA = C cos(FI) - s' sin(FI)`` (the point where the
@@ -463,7 +480,29 @@ def _modified_sine_factors():
 
 LAW_FACTORS["modified sine"] = _modified_sine_factors()
 
-MotionLaw = namedtuple("MotionLaw", ("FI", "S", "V", "A", "CV", "CA", "PHASE"))
+MotionLaw = result_type("MotionLaw", ("FI", "S", "V", "A", "PHASE", "CV", "CA", "CV_RETURN",
+                                       "CA_RETURN"))
+
+
+def _number(name, arg, value, *, above=None, at_least=None, below=None):
+    """A scalar argument of an extension as a float, or TypeError/ValueError naming it."""
+    if isinstance(value, (bool, np.bool_)) or not isinstance(
+            value, (int, float, np.integer, np.floating)):
+        raise TypeError(f"{name}: {arg} must be a real number, not "
+                        f"{type(value).__name__} {value!r:.40}")
+    v = float(value)
+    bounds = []
+    if above is not None:
+        bounds.append(f"> {above:g}")
+    if at_least is not None:
+        bounds.append(f">= {at_least:g}")
+    if below is not None:
+        bounds.append(f"< {below:g}")
+    if not (math.isfinite(v) and (above is None or v > above)
+            and (at_least is None or v >= at_least) and (below is None or v < below)):
+        raise ValueError(f"{name}: {arg} = {value!r} must be a finite number"
+                         + (" " + " and ".join(bounds) if bounds else ""))
+    return v
 
 
 def _law(name, what):
@@ -510,13 +549,13 @@ def motion_law(law, H, rise, dwell, ret, dwell2=None, *, W=1.0, N=361, FI=None,
 
     Returns
     -------
-    MotionLaw(FI, S, V, A, CV, CA, PHASE)
-        Arrays ``FI, S, V, A`` (rad, m or rad, per s, per s^2); ``CV, CA`` pairs (rise,
-        return) of the laws' peak velocity and acceleration factors: the largest ``|V|``
-        of the rise is ``CV[0] H W / rise`` and the largest ``|A|`` ``CA[0] H W**2 /
-        rise**2`` (return: ``CV[1]``, ``CA[1]`` over ``ret``); ``PHASE`` an int array: 1
+    MotionLaw(FI, S, V, A, PHASE, CV, CA, CV_RETURN, CA_RETURN)
+        Arrays ``FI, S, V, A`` (rad, m or rad, per s, per s^2); ``PHASE`` an int array: 1
         rise, 2 outer dwell, 3 return, 4 inner dwell (a boundary belongs to the phase it
-        starts).  The factors are also in :data:`LAW_FACTORS`.
+        starts); the floats ``CV, CA``, the rise law's peak velocity and acceleration
+        factors (the largest ``|V|`` of the rise is ``CV H W / rise``, the largest
+        ``|A|`` ``CA H W**2 / rise**2``), and ``CV_RETURN, CA_RETURN`` the return law's
+        (over ``ret``).  The factors are also in :data:`LAW_FACTORS`.
 
     Raises
     ------
@@ -526,21 +565,17 @@ def motion_law(law, H, rise, dwell, ret, dwell2=None, *, W=1.0, N=361, FI=None,
     """
     law = _law(law, "law")
     back = _law(law if return_law is None else return_law, "return_law")
-    for name, value, ok in (("H", H, H > 0), ("rise", rise, rise > 0),
-                            ("dwell", dwell, dwell >= 0), ("ret", ret, ret > 0),
-                            ("W", W, W > 0)):
-        if not (isinstance(value, (int, float, np.integer, np.floating))
-                and math.isfinite(value) and ok):
-            raise ValueError(f"motion_law: {name} = {value!r} must be a finite number "
-                             f"{'>= 0' if name == 'dwell' else '> 0'}")
+    H, rise, ret, W = (_number("motion_law", a, v, above=0.0) for a, v in
+                       (("H", H), ("rise", rise), ("ret", ret), ("W", W)))
+    dwell = _number("motion_law", "dwell", dwell, at_least=0.0)
     if dwell2 is None:
         dwell2 = _TWO_PI - rise - dwell - ret
         if dwell2 < -1e-12:
             raise ValueError(f"motion_law: rise + dwell + ret = {rise + dwell + ret!r} is "
                              f"more than a turn; give dwell2 for a longer cycle")
         dwell2 = max(dwell2, 0.0)
-    elif not (math.isfinite(dwell2) and dwell2 >= 0):
-        raise ValueError(f"motion_law: dwell2 = {dwell2!r} must be a finite number >= 0")
+    else:
+        dwell2 = _number("motion_law", "dwell2", dwell2, at_least=0.0)
     cycle = rise + dwell + ret + dwell2
     if FI is None:
         if not (isinstance(N, (int, np.integer)) and N >= 2):
@@ -551,6 +586,8 @@ def motion_law(law, H, rise, dwell, ret, dwell2=None, *, W=1.0, N=361, FI=None,
         fi = as_real_array("motion_law", "FI", FI).astype(float)
         if not np.all(np.isfinite(fi)) or np.any(fi < 0.0) or np.any(fi > cycle):
             raise ValueError(f"motion_law: FI must hold finite angles within [0, {cycle!r}]")
+    scalar = fi.ndim == 0
+    fi = np.atleast_1d(fi)
     s, s1, s2 = np.zeros_like(fi), np.zeros_like(fi), np.zeros_like(fi)
     phase = np.full(fi.shape, 4, dtype=np.int32)
     up = fi < rise
@@ -562,8 +599,10 @@ def motion_law(law, H, rise, dwell, ret, dwell2=None, *, W=1.0, N=361, FI=None,
     s[top] = H
     f, f1, f2 = _rise(back, (fi[down] - rise - dwell) / ret)
     s[down], s1[down], s2[down] = H * (1.0 - f), -H * f1 / ret, -H * f2 / ret**2
-    return MotionLaw(fi, s, W * s1, W**2 * s2, (LAW_FACTORS[law][0], LAW_FACTORS[back][0]),
-                     (LAW_FACTORS[law][1], LAW_FACTORS[back][1]), phase)
+    v, a = W * s1, W**2 * s2
+    if scalar:                                   # a scalar FI gives floats
+        fi, s, v, a, phase = float(fi[0]), float(s[0]), float(v[0]), float(a[0]), int(phase[0])
+    return MotionLaw(fi, s, v, a, phase, *LAW_FACTORS[law], *LAW_FACTORS[back])
 
 
 def _rise(name, x):
@@ -573,16 +612,14 @@ def _rise(name, x):
 
 # ---- roller followers --------------------------------------------------------------------
 
-RollerProfile = namedtuple("RollerProfile", ("XA", "YA", "XW", "YW", "ROK", "RW", "ALFA",
+RollerProfile = result_type("RollerProfile", ("XA", "YA", "XW", "YW", "ROK", "RW", "ALFA",
                                              "ROKMIN", "UNDERCUT"))
 
 
 def _working_profile(xa, ya, dx, dy, rok, alfa, rr, on_undercut, name):
     """Offset the pitch curve (XA, YA), tangent (dx, dy), by the roller radius towards the
     cam centre: the envelope of the roller circles centred on the pitch curve."""
-    if not (isinstance(rr, (int, float, np.integer, np.floating)) and math.isfinite(rr)
-            and rr > 0):
-        raise ValueError(f"{name}: RR = {rr!r} is the roller radius and must be > 0")
+    rr = _number(name, "RR", rr, above=0.0)
     if on_undercut not in ("flag", "raise"):
         raise ValueError(f"{name}: on_undercut must be 'flag' or 'raise', not {on_undercut!r}")
     norm = np.hypot(dx, dy)
@@ -682,11 +719,11 @@ def roller_rocker(N, W1, ETAO, FI, RO, L, R, E2, W2, PSI, RR, ALD=math.pi / 4.0,
 
 # ---- exact sizing ---------------------------------------------------------------------------
 
-BaseRadius = namedtuple("BaseRadius", ("RO", "EXCST", "RO_AXIAL", "RO_RISE", "RO_RETURN",
+BaseRadius = result_type("BaseRadius", ("RO", "EXCST", "RO_AXIAL", "RO_RISE", "RO_RETURN",
                                        "RO_BOOK", "ALFMAX_BOOK"))
-FlatRadius = namedtuple("FlatRadius", ("RKSH", "RKSH_BOOK", "ROKMIN_BOOK"))
-CentreDistance = namedtuple("CentreDistance", ("L", "ETAO", "RO", "ETAO_BOOK", "RO_BOOK",
-                                               "ALFMAX_BOOK"))
+FlatRadius = result_type("FlatRadius", ("RKSH", "RKSH_BOOK", "ROKMIN_BOOK"))
+CentreDistance = result_type("CentreDistance", ("L", "ETAO", "RO", "L_RISE", "L_RETURN",
+                                               "ETAO_BOOK", "RO_BOOK", "ALFMAX_BOOK"))
 
 
 def _tables(name, N, **tables):
@@ -706,12 +743,8 @@ def _limits(name, V, ALD, ALD_return):
     """tan of the allowed pressure angle at each point: the rise's where V > 0, the
     return's where V < 0, the smaller where V = 0 (a dwell)."""
     ret = ALD if ALD_return is None else ALD_return
-    for arg, value in (("ALD", ALD), ("ALD_return", ret)):
-        if not (isinstance(value, (int, float, np.integer, np.floating))
-                and 0.0 < value < _HALF_PI):
-            raise ValueError(f"{name}: {arg} = {value!r} must lie strictly between 0 and "
-                             f"pi/2 (radians)")
-    t1, t2 = math.tan(ALD), math.tan(ret)
+    t1 = math.tan(_number(name, "ALD", ALD, above=0.0, below=_HALF_PI))
+    t2 = math.tan(_number(name, "ALD_return", ret, above=0.0, below=_HALF_PI))
     return np.where(V > 0.0, t1, np.where(V < 0.0, t2, min(t1, t2)))
 
 
@@ -758,13 +791,11 @@ def base_radius(N, FI, A, V, S, W, ALD, ALD_return=None, BETA=0.0):
     """
     from .errors import RequirementError
     fi, a, v, s = _tables("base_radius", N, FI=FI, A=A, V=V, S=S)
-    if not (W > 0):
-        raise ValueError(f"base_radius: W = {W!r} must be > 0")
+    W = _number("base_radius", "W", W, above=0.0)
+    BETA = _number("base_radius", "BETA", BETA, above=-_HALF_PI, below=_HALF_PI)
     t = _limits("base_radius", v, ALD, ALD_return)
     s1 = v / W
     cb, sb = math.cos(BETA), math.sin(BETA)
-    if not cb > 0:
-        raise ValueError(f"base_radius: BETA = {BETA!r} must lie within (-pi/2, pi/2)")
     # (s' - RO sb) <= t (RO cb + s)  and  -(s' - RO sb) <= t (RO cb + s): d RO >= r
     d = np.concatenate([t * cb + sb, t * cb - sb])
     r = np.concatenate([s1 - t * s, -s1 - t * s])
@@ -818,10 +849,9 @@ def flat_base_radius(N, FI, A, V, S, W, ROKMIN=0.0, GAMMA=math.pi / 4.0):
         N not the length of the tables, a NaN or inf, W <= 0, ROKMIN < 0.
     """
     fi, a, v, s = _tables("flat_base_radius", N, FI=FI, A=A, V=V, S=S)
-    if not (W > 0):
-        raise ValueError(f"flat_base_radius: W = {W!r} must be > 0")
-    if not (math.isfinite(ROKMIN) and ROKMIN >= 0):
-        raise ValueError(f"flat_base_radius: ROKMIN = {ROKMIN!r} must be >= 0")
+    W = _number("flat_base_radius", "W", W, above=0.0)
+    ROKMIN = _number("flat_base_radius", "ROKMIN", ROKMIN, at_least=0.0)
+    GAMMA = _number("flat_base_radius", "GAMMA", GAMMA, above=0.0, below=_HALF_PI)
     rksh = max(float(np.max(ROKMIN - s - a / W**2)), float(np.max(-s)))
     book = DPRFPL(N, GAMMA, W, fi, a, v, s)
     return FlatRadius(rksh, book.RKSH, book.ROKMIN)
@@ -852,12 +882,14 @@ def rocker_centre_distance(N, FI, E2, W2, PSI, W1, R, ALD, ALD_return=None):
 
     Returns
     -------
-    CentreDistance(L, ETAO, RO, ETAO_BOOK, RO_BOOK, ALFMAX_BOOK)
+    CentreDistance(L, ETAO, RO, L_RISE, L_RETURN, ETAO_BOOK, RO_BOOK, ALFMAX_BOOK)
         ``L`` the smallest centre distance (m) and ``ETAO`` the rocker's initial angle
         (rad) for DPRFLK; ``RO`` the cam's base radius there (the smallest distance of
-        the pitch curve from O1); then DKLCHK's ``ETAO`` and ``RO`` for INDEX = 2 with
-        ``RSCNTR = L``, ``RZMR = R`` and the largest ``|alpha|`` (rad) DPRFLK gives with
-        the book's ETAO.
+        the pitch curve from O1); ``L_RISE`` and ``L_RETURN`` the smallest centre
+        distance the rise alone (W2 > 0) and the return alone (W2 < 0) would need (each
+        with its own best ETAO; L is at least the larger); then DKLCHK's ``ETAO`` and
+        ``RO`` for INDEX = 2 with ``RSCNTR = L``, ``RZMR = R`` and the largest
+        ``|alpha|`` (rad) DPRFLK gives with the book's ETAO.
 
     Raises
     ------
@@ -868,9 +900,8 @@ def rocker_centre_distance(N, FI, E2, W2, PSI, W1, R, ALD, ALD_return=None):
     """
     from .errors import RequirementError
     fi, e2, w2, psi = _tables("rocker_centre_distance", N, FI=FI, E2=E2, W2=W2, PSI=PSI)
-    for arg, value in (("W1", W1), ("R", R)):
-        if not (math.isfinite(value) and value > 0):
-            raise ValueError(f"rocker_centre_distance: {arg} = {value!r} must be > 0")
+    W1 = _number("rocker_centre_distance", "W1", W1, above=0.0)
+    R = _number("rocker_centre_distance", "R", R, above=0.0)
     t = _limits("rocker_centre_distance", w2, ALD, ALD_return)
     q = R * (1.0 + w2 / W1)
     c, s = np.cos(psi), np.sin(psi)
@@ -879,7 +910,14 @@ def rocker_centre_distance(N, FI, E2, W2, PSI, W1, R, ALD, ALD_return=None):
     ax = np.concatenate([c + t * s, -(c - t * s)])
     ay = np.concatenate([s - t * c, -(s + t * c)])
     b = np.concatenate([q, -q])
-    x, y = _nearest_in_polygon(ax, ay, b, 1e3 * (R + np.abs(q).max()))
+    size = 1e3 * (R + np.abs(q).max())
+    x, y = _nearest_in_polygon(ax, ay, b, size)
+    phase = []
+    for where in (w2 > 0, w2 < 0):
+        two = np.concatenate([where, where])
+        px, py = _nearest_in_polygon(ax[two], ay[two], b[two], size) if where.any() \
+            else (0.0, 0.0)
+        phase.append(math.nan if px is None else math.hypot(px, py))
     if x is None:
         raise RequirementError("rocker_centre_distance: no cam centre keeps the pressure "
                                "angle within the limits over the whole cycle")
@@ -890,7 +928,8 @@ def rocker_centre_distance(N, FI, E2, W2, PSI, W1, R, ALD, ALD_return=None):
     p = psi + book.ETAO
     with np.errstate(divide="ignore", invalid="ignore"):
         alfa = np.arctan(q / L / np.sin(p) - 1.0 / np.tan(p))
-    return CentreDistance(L, etao, ro, book.ETAO, book.RO, float(np.nanmax(np.abs(alfa))))
+    return CentreDistance(L, etao, ro, *phase, book.ETAO, book.RO,
+                          float(np.nanmax(np.abs(alfa))))
 
 
 def _nearest_in_polygon(ax, ay, b, size):

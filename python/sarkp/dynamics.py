@@ -20,13 +20,13 @@ both ends included: M points, step H = 2*pi/(M - 1).
 from __future__ import annotations
 
 import math
-from collections import namedtuple
 
 import numpy as np
 
-from .errors import RequirementError, Status
+from .errors import RangeError, RequirementError, Status
 from .library import ST_REQUIREMENT, Check, as_real_array, book_routine
 from .modes import get_mode
+from .results import result_type
 
 __all__ = ["DZKNDV", "DMHVK", "DMHVK_EXACT", "motion", "flywheel", "Motion", "Flywheel"]
 
@@ -120,7 +120,8 @@ DZKNDV = book_routine(
     has its extremes (where omega has them, exactly so for ISPR = 0), checked by the pass
     that computes WPR (repeated with WPR's extremes if they sit elsewhere; Newton's method
     inside a bracket if that does not settle).  For a fourth-order law of motion on any
-    grid, from rest too, see :func:`sarkp.motion`.  PI is 3.14159 as printed (the listing's local PI, L5955).
+    grid, from rest too, see :func:`sarkp.motion`.  PI is 3.14159 as printed (the
+    listing's local PI, L5955).
     The printed DINTGR writes a line to unit 3 on every call; nothing is printed here.
     """)
 
@@ -176,7 +177,11 @@ DMHVK = book_routine(
     With DEC from DZKNDV, DZKNDV rerun with ``ISC + IMHVK`` gives exactly the coefficient
     DELTA: as printed for any ISPR (the linear law (8.17)), in corrected mode for
     ISPR = 0 (then the energy equation gives it exactly too, since
-    (omega_max**2 - omega_min**2)/2 = delta*omega_sr**2).  The printed ``C1 + ABS(C2)``
+    (omega_max**2 - omega_min**2)/2 = delta*omega_sr**2); with a variable ISPR it is
+    Merkalov's approximation (Fig. 96's machine: 0.00997 for 0.01; ERRATA E-T8-3), and
+    :func:`DMHVK_EXACT` gives the exact flywheel beside it.  When the machine stalls
+    without a flywheel, DZKNDV's ``on_error="nan"`` result (or its error's ``.result``)
+    still holds DEC.  The printed ``C1 + ABS(C2)``
     is the swing C1 - C2 whenever C1 >= 0 >= C2, which DZKNDV's DEC (DEC[0] = 0) always
     satisfies; the swing is used for any DEC (ERRATA E-DMHVK-3).
     """)
@@ -208,96 +213,74 @@ _GAUSS2 = np.polynomial.legendre.leggauss(2)
 _GAUSS4 = np.polynomial.legendre.leggauss(4)
 
 
-class Motion:
-    """The law of motion of the crank over a grid (the result of :func:`motion`).
+Motion = result_type(
+    "Motion", ("phi", "omega", "t", "E0", "M_constant", "omega_mean", "delta", "status"),
+    doc="""The law of motion of the crank over a grid (the result of :func:`motion`).
 
-    Attributes
-    ----------
-    phi, omega, t : ndarray
-        The grid (rad), the angular velocity there (rad/s), the time (s).
-    E0 : float
-        The constant of the energy equation ``J omega**2/2 = E0 + A`` (J).
-    M_constant : float
-        The constant moment added to M (N*m): 0 from a given start; for the steady state,
-        ``-A(end)/(phi[-1] - phi[0])``, which makes the cycle's work zero (as DZKNDV's
-        ASUM does).
-    omega_mean : float
-        ``(max omega + min omega)/2`` over the grid (the book's mean, L6044).
-    delta : float
-        The coefficient of speed fluctuation ``(max omega - min omega)/omega_mean``.
-    status : sarkp.Status
-        OK, or REQUIREMENT when (``on_error="nan"``) the crank stops inside the grid:
-        omega and t are NaN from there on.
-    """
+    Fields: ``phi``, ``omega``, ``t`` -- the grid (rad), the angular velocity there
+    (rad/s), the time (s); ``E0`` -- the constant of the energy equation ``J omega**2/2 =
+    E0 + A`` (J); ``M_constant`` -- the constant moment added to M (N*m): 0 from a given
+    start; for the steady state ``-A(end)/(phi[-1] - phi[0])``, which makes the cycle's
+    work zero (as DZKNDV's ASUM does); ``omega_mean`` -- ``(max omega + min omega)/2``
+    over the grid (the book's mean, L6044); ``delta`` -- the coefficient of speed
+    fluctuation ``(max omega - min omega)/omega_mean``; ``status`` -- sarkp.Status OK, or
+    REQUIREMENT when (``on_error="nan"``) the crank stops inside the grid (omega and t
+    NaN from there on) or the steady motion would stall (all NaN).
+    A sarkp result: a named tuple that pickles, prints short and has ``to_frame()``.""")
 
-    _fields = ("phi", "omega", "t")
+Flywheel = result_type(
+    "Flywheel", ("J_flywheel", "J_merkalov", "delta", "phi", "omega", "t"),
+    doc="""The flywheel for a coefficient of speed fluctuation (:func:`flywheel`'s result).
 
-    def __init__(self, phi, omega, t, E0, M_constant, status=Status.OK):
-        self.phi, self.omega, self.t = phi, omega, t
-        self.E0, self.M_constant, self.status = float(E0), float(M_constant), status
-        ok = omega[np.isfinite(omega)]
-        hi, lo = (ok.max(), ok.min()) if ok.size else (math.nan, math.nan)
-        self.omega_mean = float((hi + lo) / 2.0)
-        self.delta = float((hi - lo) / self.omega_mean) if self.omega_mean else math.nan
-
-    def __repr__(self):
-        n = len(self.phi)
-        return (f"Motion({n} points, phi {self.phi[0]:.6g} .. {self.phi[-1]:.6g} rad, "
-                f"omega_mean={self.omega_mean:.6g} rad/s, delta={self.delta:.6g}, "
-                f"t {self.t[0]:.6g} .. {self.t[-1]:.6g} s)")
-
-    def to_frame(self):
-        """The columns phi, omega, t as a pandas DataFrame (pandas is optional)."""
-        try:
-            import pandas as pd
-        except ImportError:
-            raise ImportError("Motion.to_frame needs pandas (pip install pandas)") from None
-        return pd.DataFrame({"phi": self.phi, "omega": self.omega, "t": self.t})
+    Fields: ``J_flywheel`` -- the moment of inertia to add on the crank (kg*m^2): the
+    steady motion with ``J + J_flywheel`` has exactly the coefficient asked for
+    (negative when the machine fluctuates less than that without a flywheel);
+    ``J_merkalov`` -- DMHVK's approximation (Merkalov's method, eqs. (8.22)/(8.24)),
+    which neglects the variable part of J: ``swing of (A - (J - J_c) omega_mean**2/2)/
+    (delta omega_mean**2) - J_c`` with J_c the constant part; ``delta`` -- the
+    coefficient of that steady motion, computed again; ``phi``, ``omega``, ``t`` -- that
+    steady motion.  A sarkp result (pickles, prints short, ``to_frame()``).""")
 
 
-class Flywheel:
-    """The flywheel for a coefficient of speed fluctuation (the result of :func:`flywheel`).
-
-    Attributes
-    ----------
-    J_flywheel : float
-        The moment of inertia to add on the crank (kg*m^2): the steady motion with
-        ``J + J_flywheel`` has exactly the coefficient asked for.  Negative when the
-        machine fluctuates less than that without a flywheel.
-    J_merkalov : float
-        DMHVK's approximation (Merkalov's method, eqs. (8.22)/(8.24)), which neglects the
-        variable part of J: ``swing of (A - (J - J_c) omega_mean**2/2)/(delta
-        omega_mean**2) - J_c`` with J_c the constant part.
-    delta : float
-        The coefficient of the steady motion with ``J + J_flywheel``, computed again.
-    motion : Motion
-        That steady motion.
-    """
-
-    def __init__(self, J_flywheel, J_merkalov, motion):
-        self.J_flywheel, self.J_merkalov = float(J_flywheel), float(J_merkalov)
-        self.motion = motion
-        self.delta = motion.delta
-
-    def __repr__(self):
-        return (f"Flywheel(J_flywheel={self.J_flywheel:.10g} kg*m^2, J_merkalov="
-                f"{self.J_merkalov:.10g} kg*m^2, delta={self.delta:.12g})")
+def _motion(phi, omega, t, e0, mc, status=Status.OK):
+    ok = omega[np.isfinite(omega)]
+    hi, lo = (float(ok.max()), float(ok.min())) if ok.size else (math.nan, math.nan)
+    mean = (hi + lo) / 2.0
+    delta = (hi - lo) / mean if mean else math.nan
+    return Motion(phi, omega, t, float(e0), float(mc), mean, delta, status)
 
 
-def _real_vector(name, value, n=None):
-    a = as_real_array(name.split(":")[0], name.split(":")[-1], value)
-    arg = name.split(":")[-1]
+def _finite(who, r):
+    """r, or RangeError where omega or t is not a finite double while the motion was
+    computed there (NaN after the crank stops is the on_error="nan" policy; inf never)."""
+    bad = np.isinf(r.omega) | np.isinf(r.t)
+    if getattr(r, "status", Status.OK) == Status.OK:
+        bad |= np.isnan(r.omega) | np.isnan(r.t)
+    if bad.any():
+        k = int(np.flatnonzero(bad)[0])
+        raise RangeError(f"{who}: omega or t would not be a finite double (overflow) at "
+                         f"phi[{k}] = {float(r.phi[k])!r}; the inputs are too far apart in "
+                         f"magnitude")
+    return r
+
+
+def _real_vector(who, arg, value, n=None):
+    """``value`` as a 1-D float array (a number repeated n times when n is given), finite,
+    of length n; else TypeError/ValueError naming ``arg``."""
+    if np.asarray(value).dtype == bool:
+        raise TypeError(f"{who}: {arg} must be real numbers, not booleans")
+    a = as_real_array(who, arg, value)
     if n is not None and a.ndim == 0:
         a = np.full(n, float(a))
     if a.ndim != 1:
-        raise ValueError(f"{name.split(':')[0]}: {arg} must be one-dimensional (or a number), "
-                         f"not of shape {a.shape}")
+        raise ValueError(f"{who}: {arg} must be one-dimensional (or a number), not of "
+                         f"shape {a.shape}")
     if n is not None and len(a) != n:
-        raise ValueError(f"{name.split(':')[0]}: {arg} has {len(a)} values but phi has {n}")
+        raise ValueError(f"{who}: {arg} has {len(a)} values but phi has {n}")
     bad = ~np.isfinite(a)
     if bad.any():
         k = int(np.flatnonzero(bad)[0])
-        raise ValueError(f"{name.split(':')[0]}: {arg}[{k}] = {float(a[k])!r} is not a finite number")
+        raise ValueError(f"{who}: {arg}[{k}] = {float(a[k])!r} is not a finite number")
     return np.array(a, dtype=float)
 
 
@@ -313,7 +296,7 @@ def _scalar(who, arg, value):
 
 def _grid(who, phi, J, M):
     """phi, J, M checked: a strictly increasing grid of >= 4 points, J > 0, all finite."""
-    phi = _real_vector(f"{who}:phi", phi)
+    phi = _real_vector(who, "phi", phi)
     n = len(phi)
     if n < 4:
         raise ValueError(f"{who}: phi needs at least 4 points (the cubic rule), not {n}")
@@ -322,12 +305,12 @@ def _grid(who, phi, J, M):
         k = int(np.flatnonzero(~(steps > 0))[0])
         raise ValueError(f"{who}: phi must be strictly increasing: phi[{k + 1}] = "
                          f"{float(phi[k + 1])!r} <= phi[{k}] = {float(phi[k])!r}")
-    J = _real_vector(f"{who}:J", J, n)
+    J = _real_vector(who, "J", J, n)
     if not np.all(J > 0):
         k = int(np.flatnonzero(~(J > 0))[0])
         raise ValueError(f"{who}: J, the reduced moment of inertia, must be > 0: "
                          f"J[{k}] = {float(J[k])!r}")
-    M = _real_vector(f"{who}:M", M, n)
+    M = _real_vector(who, "M", M, n)
     return phi, J, M
 
 
@@ -386,14 +369,17 @@ def _cumulative(first, w, f):
 
 def _pair_energy(a1, j1, a2, j2, w):
     """E0 with sqrt(2(E0 + a1)/j1) + sqrt(2(E0 + a2)/j2) = 2 w, or None.  With x = w + d,
-    y = w - d: (j1 - j2) d^2 + 2 w (j1 + j2) d + (j1 - j2) w^2 - 2 (a1 - a2) = 0, the root
-    that stays finite as j1 - j2 -> 0."""
-    qa, qb = j1 - j2, 2.0 * w * (j1 + j2)
-    qc = qa * w * w - 2.0 * (a1 - a2)
-    disc = 16.0 * w * w * j1 * j2 + 8.0 * qa * (a1 - a2)
+    y = w - d: (j1 - j2) d^2 + 2 w (j1 + j2) d + (j1 - j2) w^2 - 2 (a1 - a2) = 0, divided
+    by j1 + j2 (no overflow in the discriminant), the root that stays finite as
+    j1 - j2 -> 0."""
+    s = j1 + j2
+    p1, p2 = j1 / s, j2 / s
+    qa, da = p1 - p2, (a1 - a2) / s
+    qc = qa * w * w - 2.0 * da
+    disc = 16.0 * w * w * p1 * p2 + 8.0 * qa * da
     if not disc >= 0.0:
         return None
-    d = -2.0 * qc / (qb + math.sqrt(disc))
+    d = -2.0 * qc / (2.0 * w + math.sqrt(disc))
     if not -w <= d <= w:
         return None
     x, y = w + d, w - d
@@ -425,7 +411,8 @@ def _steady_energy(a, j, w):
         n1, n2 = int(om.argmax()), int(om.argmin())
         if e0 == lo and 0.5 * (om[n1] + om[n2]) > w:
             return None                         # even the least E0 gives more than w
-        if e0 > lo and om[k1] >= om[n1] and om[k2] <= om[n2]:
+        if e0 > lo and om[k1] >= om[n1] and om[k2] <= om[n2] and \
+                abs(0.5 * (om[k1] + om[k2]) - w) <= 1e-12 * w:
             return e0
         k1, k2 = n1, n2
 
@@ -494,13 +481,15 @@ def motion(phi, J, M, *, omega0=0.0, t0=0.0, omega_mean=None, on_error="raise"):
     on_error : {"raise", "nan"}, keyword-only
         When the crank comes to rest inside the grid (or the steady motion would stall):
         ``"raise"`` RequirementError; ``"nan"``: omega and t NaN from there (all of them
-        for the steady motion) and ``status`` REQUIREMENT.
+        for the steady motion; t after phi[0] too when fewer than 4 points precede the
+        stop, too few for the rule) and ``status`` REQUIREMENT.
 
     Returns
     -------
     Motion
         ``.phi, .omega, .t``, and ``.E0``, ``.M_constant``, ``.omega_mean``, ``.delta``
-        (the coefficient of speed fluctuation), ``.status``.
+        (the coefficient of speed fluctuation), ``.status`` (a sarkp result: a named
+        tuple that pickles, prints short and has ``to_frame()``).
 
     Raises
     ------
@@ -511,7 +500,15 @@ def motion(phi, J, M, *, omega0=0.0, t0=0.0, omega_mean=None, on_error="raise"):
     RequirementError
         The crank stops inside the grid (the kinetic energy reaches zero), or the steady
         motion with mean speed omega_mean would stall.
+    RangeError
+        omega or t would not be a finite double (inputs too far apart in magnitude).
     """
+    with np.errstate(all="ignore"):
+        r = _motion_law(phi, J, M, omega0, t0, omega_mean, on_error)
+    return _finite("motion", r)
+
+
+def _motion_law(phi, J, M, omega0, t0, omega_mean, on_error):
     who = "motion"
     phi, J, M = _grid(who, phi, J, M)
     omega0 = _scalar(who, "omega0", omega0)
@@ -530,7 +527,8 @@ def motion(phi, J, M, *, omega0=0.0, t0=0.0, omega_mean=None, on_error="raise"):
                              f"motion), not both")
         if abs(J[-1] - J[0]) > 1e-9 * J.max():
             raise ValueError(f"{who}: the steady motion needs a grid over exactly one "
-                             f"cycle, but J[0] = {float(J[0])!r} differs from J[-1] = {float(J[-1])!r}")
+                             f"cycle, but J[0] = {float(J[0])!r} differs from J[-1] = "
+                             f"{float(J[-1])!r}")
         mc = -A[-1] / (phi[-1] - phi[0])
         asum = A + mc * (phi - phi[0])
         e0 = _steady_energy(asum, J, wm)
@@ -538,10 +536,10 @@ def motion(phi, J, M, *, omega0=0.0, t0=0.0, omega_mean=None, on_error="raise"):
             if on_error == "raise":
                 raise RequirementError(_stall_message(who, wm))
             nan = np.full(n, np.nan)
-            return Motion(phi, nan, nan.copy(), math.nan, mc, Status.REQUIREMENT)
+            return _motion(phi, nan, nan.copy(), math.nan, mc, Status.REQUIREMENT)
         omega = _speeds(e0, asum, J)
         t = t0 + _cumulative(first, w, 1.0 / omega)
-        return Motion(phi, omega, t, e0, mc)
+        return _motion(phi, omega, t, e0, mc)
     if not omega0 >= 0.0:
         raise ValueError(f"{who}: omega0 = {omega0!r} must be >= 0 (the crank turns "
                          f"towards increasing phi)")
@@ -558,7 +556,8 @@ def motion(phi, J, M, *, omega0=0.0, t0=0.0, omega_mean=None, on_error="raise"):
         if on_error == "raise":
             raise RequirementError(
                 f"{who}: the crank comes to rest between phi[{stop - 1}] = "
-                f"{float(phi[stop - 1])!r} and phi[{stop}] = {float(phi[stop])!r} (the kinetic energy "
+                f"{float(phi[stop - 1])!r} and phi[{stop}] = {float(phi[stop])!r} (the "
+                f"kinetic energy "
                 f"reaches zero); a larger omega0 or driving moment is needed to pass")
         status = Status.REQUIREMENT
     omega = np.full(n, np.nan)
@@ -567,7 +566,7 @@ def motion(phi, J, M, *, omega0=0.0, t0=0.0, omega_mean=None, on_error="raise"):
     omega[:stop] = np.sqrt(np.maximum(2.0 * Ep / Jp, 0.0))
     t[0] = t0
     if stop < 4:                                         # too few points for the rule
-        return Motion(phi, omega, t, e0, 0.0, status)
+        return _motion(phi, omega, t, e0, 0.0, status)
     if M[0] > 0.0:                                       # 1/omega = g/sqrt(s + c)
         c = e0 / M[0]
         s = p - p[0]
@@ -579,7 +578,7 @@ def motion(phi, J, M, *, omega0=0.0, t0=0.0, omega_mean=None, on_error="raise"):
     else:
         fs, ws = _cubic_weights(p)
         t[:stop] = t0 + _cumulative(fs, ws, 1.0 / omega[:stop])
-    return Motion(phi, omega, t, e0, 0.0, status)
+    return _motion(phi, omega, t, e0, 0.0, status)
 
 
 def _exact_flywheel(a, j, w, delta):
@@ -601,7 +600,8 @@ def _exact_flywheel(a, j, w, delta):
         e0 = 0.5 * (j[k1] + jf) * x * x - a[k1]
         om = _speeds(e0, a, j + jf)
         n1, n2 = int(om.argmax()), int(om.argmin())
-        if om[k1] >= om[n1] and om[k2] <= om[n2] and e0 + a.min() >= 0.0:
+        if om[k1] >= om[n1] and om[k2] <= om[n2] and e0 + a.min() >= 0.0 and \
+                abs(om[k1] - om[k2] - delta * w) <= 1e-12 * delta * w:
             return jf, e0
         k1, k2 = n1, n2
 
@@ -614,7 +614,9 @@ def _exact_flywheel(a, j, w, delta):
 
     lo = -float(j.min()) * (1.0 - 1e-12)
     hi = max(1.0, 2.0 * float(np.ptp(dec)) / (delta * w * w))
-    while fluctuation(hi) > delta:
+    for _ in range(2100):                      # up to the largest double
+        if not fluctuation(hi) > delta:
+            break
         hi *= 2.0
     for _ in range(200):
         mid = 0.5 * (lo + hi)
@@ -666,8 +668,31 @@ def flywheel(phi, J, M, *, delta, omega_mean, J_constant=None):
     Flywheel
         ``.J_flywheel`` (exact; negative when less fluctuation than delta needs no
         flywheel), ``.J_merkalov``, ``.delta`` (realized: the steady motion with
-        ``J + J_flywheel`` computed again) and ``.motion`` (that motion).
+        ``J + J_flywheel`` computed again) and ``.phi, .omega, .t`` (that motion).
+
+    Raises
+    ------
+    ValueError
+        Bad input, naming the argument (as :func:`motion`; delta outside (0, 1),
+        omega_mean <= 0, J_constant outside [0, min J]).
+    RangeError
+        delta*omega_mean**2 underflows, or the inertia needed is lost in the rounding of
+        J (no double J_flywheel gives delta), or the motion overflows.
     """
+    with np.errstate(all="ignore"):
+        fw = _flywheel(phi, J, M, delta, omega_mean, J_constant)
+    if not (math.isfinite(fw.J_flywheel) and math.isfinite(fw.J_merkalov)):
+        raise RangeError("flywheel: J_flywheel would not be a finite double (overflow); "
+                         "the inputs are too far apart in magnitude")
+    _finite("flywheel", fw)
+    if not abs(fw.delta - delta) <= 1e-9 * delta:
+        raise RangeError(f"flywheel: no double J_flywheel gives delta = {delta!r} (it gives "
+                         f"{fw.delta!r}): the inertia needed, J + J_flywheel, is lost in the "
+                         f"rounding of J")
+    return fw
+
+
+def _flywheel(phi, J, M, delta, omega_mean, J_constant):
     who = "flywheel"
     phi, J, M = _grid(who, phi, J, M)
     delta = _scalar(who, "delta", delta)
@@ -677,9 +702,13 @@ def flywheel(phi, J, M, *, delta, omega_mean, J_constant=None):
     wm = _scalar(who, "omega_mean", omega_mean)
     if not wm > 0.0:
         raise ValueError(f"{who}: omega_mean = {wm!r} must be > 0")
+    if not delta * wm * wm > 0.0:
+        raise RangeError(f"{who}: delta*omega_mean**2 = {delta!r}*{wm!r}**2 is not a "
+                         f"normal double (underflow)")
     if abs(J[-1] - J[0]) > 1e-9 * J.max():
         raise ValueError(f"{who}: the steady motion needs a grid over exactly one cycle, "
-                         f"but J[0] = {float(J[0])!r} differs from J[-1] = {float(J[-1])!r}")
+                         f"but J[0] = {float(J[0])!r} differs from J[-1] = "
+                         f"{float(J[-1])!r}")
     if J_constant is None:
         jc = float(J.min())
     else:
@@ -693,10 +722,11 @@ def flywheel(phi, J, M, *, delta, omega_mean, J_constant=None):
     asum = A + mc * (phi - phi[0])
     jf, _ = _exact_flywheel(asum, J, wm, delta)
     mo = motion(phi, J + jf, M, omega_mean=wm)
-    return Flywheel(jf, _merkalov(asum, J, wm, delta, jc), mo)
+    return Flywheel(float(jf), _merkalov(asum, J, wm, delta, jc), mo.delta, mo.phi,
+                    mo.omega, mo.t)
 
 
-_DMHVK_EXACT = namedtuple("DMHVK_EXACT", ("IMHVK", "IMERK", "DELTA"))
+_DMHVK_EXACT = result_type("DMHVK_EXACT", ("IMHVK", "IMERK", "DELTA"))
 
 
 def DMHVK_EXACT(M, ZM, W1, ISC, MPR, ISPR, DELTA):
@@ -715,8 +745,8 @@ def DMHVK_EXACT(M, ZM, W1, ISC, MPR, ISPR, DELTA):
     there (a bisection takes over if they move).  This is the book's own tangent
     construction on the energy-mass diagram, eqs. (8.20)-(8.21) (L6018-6030), with the
     tangent points found exactly; DMHVK's (8.22)/(8.24) takes them at DEC's extremes,
-    which are omega's only for a constant inertia (ERRATA E-T8-3).  As printed, DZKNDV's linear law (8.17)
-    makes DMHVK itself exact: IMHVK = IMERK.
+    which are omega's only for a constant inertia (ERRATA E-T8-3).  As printed,
+    DZKNDV's linear law (8.17) makes DMHVK itself exact: IMHVK = IMERK.
 
     Parameters
     ----------
@@ -736,11 +766,17 @@ def DMHVK_EXACT(M, ZM, W1, ISC, MPR, ISPR, DELTA):
     ------
     ValueError
         Bad input, as DZKNDV and DMHVK raise it (DELTA outside (0, 1) among them).
+    RequirementError
+        No flywheel is needed and even ISC + IMHVK <= 0 would be (the fluctuation stays
+        below DELTA).
+    RangeError
+        No double IMHVK gives DELTA (ISC + ISPR + IMHVK lost in the rounding).
     """
     delta = _scalar("DMHVK_EXACT", "DELTA", DELTA)
     if not 0.0 < delta < 1.0:
         raise ValueError(f"DMHVK_EXACT: DELTA = {delta!r}, the coefficient of speed "
-                         f"fluctuation (omega_max - omega_min)/omega_sr, must lie in (0, 1)")
+                         f"fluctuation (omega_max - omega_min)/omega_sr, must lie in "
+                         f"(0, 1)")
     first = DZKNDV(M, ZM, W1, ISC, MPR, ISPR, on_error="nan")
     if np.isnan(first.DEC).all():                      # ZM != M: raise its error
         DZKNDV(M, ZM, W1, ISC, MPR, ISPR)
@@ -757,4 +793,8 @@ def DMHVK_EXACT(M, ZM, W1, ISC, MPR, ISPR, DELTA):
             f"{delta!r} only with the constant inertia ISC + IMHVK = "
             f"{float(ISC + imh)!r} <= 0 (IMHVK = {float(imh)!r})")
     w = DZKNDV(M, ZM, W1, ISC + imh, MPR, ISPR).WPR
-    return _DMHVK_EXACT(float(imh), imerk, float((w.max() - w.min()) / W1))
+    realized = float((w.max() - w.min()) / W1)
+    if get_mode() != "as-printed" and not abs(realized - delta) <= 1e-9 * delta:
+        raise RangeError(f"DMHVK_EXACT: no double IMHVK gives DELTA = {delta!r} (it gives "
+                         f"{realized!r}): ISC + ISPR + IMHVK is lost in the rounding")
+    return _DMHVK_EXACT(float(imh), imerk, realized)

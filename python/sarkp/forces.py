@@ -33,10 +33,12 @@ test (tests/test_forces.py) that also shows the other reading fails.
 
 from __future__ import annotations
 
-from .library import book_routine
+import numpy as np
+
+from .library import as_real_array, book_routine
 
 __all__ = ["DNMAF1", "DNMAF2", "DNMAF3", "DNMAF4", "DNMAF5",
-           "DNMA1", "DNMA2", "DNMA3", "DNMA4", "DNMA5", "DUGL6"]
+           "DNMA1", "DNMA2", "DNMA3", "DNMA4", "DNMA5", "DUGL6", "balancing_moment"]
 
 _LOADS_F = """    XS2, YS2 : float or array_like
         Reduction point S2 of link 2 (m).
@@ -88,6 +90,10 @@ DNMAF1 = book_routine(
                  "them coincide: the reactions have no finite value"},
     doc=f"""Reactions in a group of the first kind (RRR), projection method.
 
+    Sense: the projection family (DNMAF1-DNMAF5) returns the forces the group exerts ON
+    the chain (F21 on link 1 from link 2), the opposite of the vector family's reactions
+    on the group (DNMA*'s RA = -F21).
+
     Listing VII.2 (L5059-5087), Table 28, Fig. 53.  F12 is split into its component normal
     to AB (link 2's moments about B) and along AB (the group's moments about C); then
     F23 = F12 + F2 and F34 = F23 + F3.
@@ -122,6 +128,10 @@ DNMAF2 = book_routine(
     messages={3: _NEAR, 2: "AB is perpendicular to the guide, or A = B: the reactions have no "
                  "finite value"},
     doc=f"""Reactions in a group of the second kind (RRP), projection method.
+
+    Sense: the projection family (DNMAF1-DNMAF5) returns the forces the group exerts ON
+    the chain (F21 on link 1 from link 2), the opposite of the vector family's reactions
+    on the group (DNMA*'s RA = -F21).
 
     Listing VII.1 (L4992-5020), Table 27, Fig. 52, eqs. (7.3)-(7.10).  The group is
     projected on the guide m (the guide's reaction has no component along it), link 2's
@@ -161,6 +171,10 @@ DNMAF3 = book_routine(
                  "no finite value"},
     doc=f"""Reactions in a group of the third kind (RPR), projection method.
 
+    Sense: the projection family (DNMAF1-DNMAF5) returns the forces the group exerts ON
+    the chain (F21 on link 1 from link 2), the opposite of the vector family's reactions
+    on the group (DNMA*'s RA = -F21).
+
     Listing VII.4 (L5181-5210), Table 30, Fig. 55.  Link 2 (a slider pivoted at A)
     slides along link 3, which is pivoted at C.  Link 2 projected on the guide gives F12's
     component along it, the group's moments about C the normal one.
@@ -195,6 +209,10 @@ DNMAF4 = book_routine(
     messages={3: _NEAR, 2: "the guides FIM and FIN are parallel: the reactions have no finite "
                  "value"},
     doc=f"""Reactions in a group of the fourth kind (PRP), projection method.
+
+    Sense: the projection family (DNMAF1-DNMAF5) returns the forces the group exerts ON
+    the chain (F21 on link 1 from link 2), the opposite of the vector family's reactions
+    on the group (DNMA*'s RA = -F21).
 
     Listing VII.3 (L5118-5149), Table 29, Fig. 54.  The group projected on the guide n
     gives F12 (normal to m); then F23 = F12 + F2 and F34 = F23 + F3.
@@ -235,6 +253,10 @@ DNMAF5 = book_routine(
                  "reactions have no finite value"},
     doc=f"""Reactions in a group of the fifth kind (RPP), projection method.
 
+    Sense: the projection family (DNMAF1-DNMAF5) returns the forces the group exerts ON
+    the chain (F21 on link 1 from link 2), the opposite of the vector family's reactions
+    on the group (DNMA*'s RA = -F21).
+
     Listing VII.5 (L5235-5268), Table 31, Fig. 56.  Link 3 projected on the inner guide
     gives F43; then F32 = F43 + F3 and F21 = F32 + F2.
 
@@ -271,6 +293,10 @@ DNMA1 = book_routine(
     messages={3: _NEAR, 2: "links 2 and 3 are aligned (FI2 parallel to FI3): the reactions have no "
                  "finite value"},
     doc=f"""Reactions in a group of the first kind (RRR), vector method.
+
+    Sense: the vector family (DNMA1-DNMA5) returns the reactions ON the group's links
+    (RA on link 2 from link 1), the opposite of the projection family's forces of the
+    group on the chain (DNMAF*'s F21 = -RA).
 
     Listing VII.6 (L5274-5318).  Each link's moments about B give the reaction's
     component normal to it, the group's force balance (a 2x2 GELG system) the components
@@ -313,6 +339,10 @@ DNMA2 = book_routine(
     messages={3: _NEAR, 2: "AB is perpendicular to the guide: the reactions have no finite value"},
     doc=f"""Reactions in a group of the second kind (RRP), vector method.
 
+    Sense: the vector family (DNMA1-DNMA5) returns the reactions ON the group's links
+    (RA on link 2 from link 1), the opposite of the projection family's forces of the
+    group on the chain (DNMAF*'s F21 = -RA).
+
     Listing VII.7 (L5322-5368).
 
     Parameters
@@ -353,6 +383,10 @@ DNMA3 = book_routine(
     messages={3: _NEAR, 2: "AC is perpendicular to the guide of link 3: the reactions have no finite "
                  "value"},
     doc=f"""Reactions in a group of the third kind (RPR), vector method.
+
+    Sense: the vector family (DNMA1-DNMA5) returns the reactions ON the group's links
+    (RA on link 2 from link 1), the opposite of the projection family's forces of the
+    group on the chain (DNMAF*'s F21 = -RA).
 
     Listing VII.8 (L5376-5413; no comment block is printed).  The group's moments about C
     give RA's component normal to AC, link 2's force balance (a 2x2 GELG system) its
@@ -398,6 +432,10 @@ DNMA4 = book_routine(
                  "value"},
     doc=f"""Reactions in a group of the fourth kind (PRP), vector method.
 
+    Sense: the vector family (DNMA1-DNMA5) returns the reactions ON the group's links
+    (RA on link 2 from link 1), the opposite of the projection family's forces of the
+    group on the chain (DNMAF*'s F21 = -RA).
+
     The listing has no heading (L5415-5460); Table 33 numbers it VII.9.
 
     Parameters
@@ -435,6 +473,10 @@ DNMA5 = book_routine(
     messages={3: _NEAR, 2: "the inner guide is parallel to the outer one (ETA3 = 0 or pi): the "
                  "reactions have no finite value"},
     doc=f"""Reactions in a group of the fifth kind (RPP), vector method.
+
+    Sense: the vector family (DNMA1-DNMA5) returns the reactions ON the group's links
+    (RA on link 2 from link 1), the opposite of the projection family's forces of the
+    group on the chain (DNMAF*'s F21 = -RA).
 
     Printed under the heading "VII.9" (L5464); Table 33 numbers it VII.10 (ERRATA
     E-DNMA5-1).
@@ -494,3 +536,57 @@ DUGL6 = book_routine(
     DUGL6(DUGL6)
         ``DUGL5(RN cos GN + RT cos GT, RN sin GN + RT sin GT)``, in (-pi/2, 3*pi/2).
     """)
+
+
+# ---- sarkp extension: the balancing moment at the crank ---------------------------------
+
+def balancing_moment(group, XO, YO, XA, YA, M1=0.0):
+    """The balancing moment on the crank from the force analysis of the group attached to
+    it -- a sarkp extension (chapter 10 computes it by hand with DMOMNT, L7570).
+
+    The crank turns about O and carries the group's link 2 at the revolute A.  The
+    group's analysis gives the force between them: DNMAF1, DNMAF2, DNMAF3, DNMAF5 the force
+    of link 2 on the crank (``F21, G21``), DNMA1, DNMA2, DNMA3, DNMA5 the reaction on
+    link 2 (``RA, GA``), whose opposite acts on the crank.  The balancing moment ``My``
+    is the moment the drive applies to the crank so that it is in (d'Alembert)
+    equilibrium: ``My + (A - O) x F_on_crank + M1 = 0``.  By virtual work it is minus the
+    power of all the loads of the mechanism over the crank's angular velocity.
+
+    Parameters
+    ----------
+    group : result of DNMAF1-3, DNMAF5 or DNMA1-3, DNMA5
+        The analysis of the group at the crank (arrays broadcast with the coordinates).
+    XO, YO : float or array_like
+        The crank's pivot O (m).
+    XA, YA : float or array_like
+        The joint A between the crank and the group (m).
+    M1 : float or array_like, optional
+        The moment about O of the crank's own loads (its weight, inertia, ...), N*m.
+
+    Returns
+    -------
+    float or ndarray
+        ``My`` (N*m, counter-clockwise positive).
+
+    Raises
+    ------
+    ValueError
+        A kind-4 group (DNMAF4, DNMA4: link 2 meets the crank in a prismatic pair, with an
+        arm rather than a point of application), or a result of another routine.
+    """
+    fields = getattr(group, "_fields", ())
+    if "H21" in fields or "HA" in fields:
+        raise ValueError("balancing_moment: a kind-4 group (PRP) meets the crank in a "
+                         "prismatic pair; its force has an arm, not the point A")
+    if "F21" in fields and "G21" in fields:
+        f, g = np.asarray(group.F21, dtype=float), np.asarray(group.G21, dtype=float)
+    elif "RA" in fields and "GA" in fields:
+        f, g = -np.asarray(group.RA, dtype=float), np.asarray(group.GA, dtype=float)
+    else:
+        raise ValueError(f"balancing_moment: group must be the result of DNMAF1-3, DNMAF5 or "
+                         f"DNMA1-3, DNMA5, not {type(group).__name__}")
+    xo, yo, xa, ya, m1 = (as_real_array("balancing_moment", a, v) for a, v in
+                          (("XO", XO), ("YO", YO), ("XA", XA), ("YA", YA), ("M1", M1)))
+    rx, ry = xa - xo, ya - yo
+    my = -(rx * f * np.sin(g) - ry * f * np.cos(g)) - m1
+    return float(my) if np.ndim(my) == 0 else my

@@ -15,12 +15,12 @@ from __future__ import annotations
 
 import functools
 import math
-from collections import namedtuple
 
 import numpy as np
 
 from .errors import RequirementError
 from .library import ST_REQUIREMENT, Check, book_routine
+from .results import result_type
 from .modes import book_pi, get_mode
 from .report import fortran_write
 
@@ -329,7 +329,7 @@ DKRKT = book_routine(
     """)
 
 
-Splits = namedtuple("Splits", ("XS", "X1_BOOK", "X2_BOOK", "X1_LOW", "X1_HIGH", "X1", "X2",
+Splits = result_type("Splits", ("XS", "X1_BOOK", "X2_BOOK", "X1_LOW", "X1_HIGH", "X1", "X2",
                                "REASON"))
 
 
@@ -351,6 +351,13 @@ def dkrkt_splits(M, Z1, Z2, AW):
         ``REASON``, one sentence: why the book's split is refused (or "") and which split
         would do, or why none would.
     """
+    for arg, value in (("M", M), ("Z1", Z1), ("Z2", Z2), ("AW", AW)):
+        if isinstance(value, bool) or not isinstance(value, (int, float, np.integer,
+                                                             np.floating)):
+            raise TypeError(f"dkrkt_splits: {arg} must be a real number, not "
+                            f"{type(value).__name__}")
+        if not (math.isfinite(value) and value > 0):
+            raise ValueError(f"dkrkt_splits: {arg} = {value!r} must be a finite number > 0")
     if not (AW > 0.5 * M * (Z1 + Z2) * math.cos(_alpha())):
         raise ValueError(f"dkrkt_splits: AW = {AW!r} must be above r_b1 + r_b2 = "
                          f"{0.5 * M * (Z1 + Z2) * math.cos(_alpha())!r}")
@@ -442,8 +449,12 @@ DUGINV = book_routine(
     by about 6 TCHNST at 20 deg (E-DUGINV-1: this is why the book prints ALFAW = 0.3490,
     not 0.3491, for zero shifts) and crawls for small angles; it is bounded here at 10**6
     steps (E-DUGINV-2).  Corrected mode ignores XNACH and TCHNST and returns the root to
-    full double precision (relative error below 1e-15 for every involute from 0 up, the
-    series of tan x - x below 0.4 rad where tan x - x cancels, then Newton steps).
+    full double precision: relative error below 1e-15 for every normal INVX (from
+    2.2e-308 up; the series of tan x - x below 0.4 rad where tan x - x cancels, then
+    Newton steps).  A subnormal INVX (below 2.2e-308) holds fewer than 53 significant
+    bits and so does the cube x**3/3 the step compares it with: there the error grows to
+    2.8e-14 (at INVX = 1.05e-312; measured against the exact (3 INVX)**(1/3) in
+    tests/test_gears.py).
     """)
 
 

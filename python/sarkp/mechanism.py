@@ -70,9 +70,10 @@ def _name(who, name):
 
 
 class _Link:
-    __slots__ = ("index", "name", "rigid", "axis", "base", "label")
+    __slots__ = ("index", "name", "rigid", "axis", "base", "label", "own")
 
-    def __init__(self, index, name, rigid, base, axis=(), label=""):
+    def __init__(self, index, name, rigid, base, axis=(), label="", own=False):
+        self.own = own            # its cosine and sine are those of its name's direction
         self.index = index
         self.name = name          # its defining name: the direction of its angle
         self.rigid = set(rigid)   # joints rigidly on it
@@ -116,9 +117,11 @@ class Mechanism:
         self._springs = []          # (P, Q, k, L0)
         self._pairs = [("O", 1, 0, "R")]   # (joint, on link, by link, R/P) per reaction slot
         self._crank = None
+        self._cache = None
 
     # -- description ------------------------------------------------------------------
     def _new(self, who, name):
+        self._cache = None
         name = _name(who, name)
         if name in self._points:
             raise ValueError(f"{who}: joint {name!r} is defined twice")
@@ -135,8 +138,8 @@ class Mechanism:
         if self._crank is None:
             raise ValueError(f"{who}: define the crank first (m.crank)")
 
-    def _add_link(self, name, rigid, base, axis=(), label=""):
-        link = _Link(len(self._links), tuple(name), rigid, base, axis, label)
+    def _add_link(self, name, rigid, base, axis=(), label="", own=False):
+        link = _Link(len(self._links), tuple(name), rigid, base, axis, label, own)
         self._links.append(link)
         return link.index
 
@@ -159,7 +162,7 @@ class Mechanism:
         if O not in self._fixed:
             raise ValueError(f"{who}: joint {O!r} must be a frame point (m.fixed)")
         self._new(who, A)
-        link = self._add_link((O, A), {O, A}, O, label="crank")
+        link = self._add_link((O, A), {O, A}, O, label="crank", own=True)
         self._owner[A] = link
         self._crank = (A, O)
         self._steps.append((0, [self._points[A], o, link], [r], A))
@@ -196,10 +199,10 @@ class Mechanism:
         l2, l3 = _length(who, "l2", l2), _length(who, "l3", l3)
         q = _branch(who, branch)
         self._new(who, B)
-        L2 = self._add_link((A, B), {A, B}, A, label=f"{A}-{B}")
-        L3 = self._add_link((C, B), {C, B}, C, label=f"{C}-{B}")
+        L2 = self._add_link((A, B), {A, B}, A, label=f"{A}-{B}", own=True)
+        L3 = self._add_link((C, B), {C, B}, C, label=f"{C}-{B}", own=True)
         self._owner[B] = L2
-        self._group(1, B, [a, c, L2, L3, 0, 0], [l2, l3, q], (L2, L3),
+        self._group(1, B, [a, c, L2, L3, 0, 0], [l2, l3, q, 1.0 / l2, 1.0 / l3], (L2, L3),
                     [(A, L2, self._owner[A], "R"), (B, L3, L2, "R"),
                      (C, L3, self._owner[C], "R")])
 
@@ -220,11 +223,12 @@ class Mechanism:
         off = _real(who, "offset", offset)
         lm = self._guide_link(who, K, guide)
         self._new(who, B)
-        L2 = self._add_link((A, B), {A, B}, A, label=f"{A}-{B}")
+        L2 = self._add_link((A, B), {A, B}, A, label=f"{A}-{B}", own=True)
         L3 = self._add_link((B,), {B}, B, label=f"slider {B}")
         self._owner[B] = L3
         self._group(2, B, [a, k, L2, L3, lm, 0],
-                    [l2, q, math.cos(angle), math.sin(angle), off, angle], (L2, L3),
+                    [l2, q, math.cos(angle), math.sin(angle), off, angle, 1.0 / l2],
+                    (L2, L3),
                     [(A, L2, self._owner[A], "R"), (B, L3, L2, "R"), (B, L3, lm, "P")])
 
     def rpr(self, B, A, C, rz2, t=math.pi / 2, branch=1):
@@ -242,7 +246,7 @@ class Mechanism:
         h = abs(rz2 * math.sin(t))
         self._new(who, B)
         L2 = self._add_link((A, B), {A, B}, A, label=f"slider {A}")
-        L3 = self._add_link((C, B), {C}, C, axis=[(C, B)], label=f"{C}-{B}")
+        L3 = self._add_link((C, B), {C}, C, axis=[(C, B)], label=f"{C}-{B}", own=True)
         self._owner[B] = L2
         self._group(3, B, [a, c, L2, L3, 0, 0], [h, q], (L2, L3),
                     [(A, L2, self._owner[A], "R"), (B, L3, L2, "P"),
@@ -345,7 +349,8 @@ class Mechanism:
         self._new(who, D)
         link.rigid.add(D)
         self._owner[D] = link.index
-        self._steps.append((6, [self._points[D], self._points[P], self._points[Q],
+        q = P if link.own and link.name == (P, Q) else Q     # no square root needed
+        self._steps.append((6, [self._points[D], self._points[P], self._points[q],
                                 link.index], [dist, math.cos(angle), math.sin(angle)], D))
 
     def _centre(self, who, link, P, Q, centre):
@@ -367,7 +372,8 @@ class Mechanism:
         self._hidden += 1
         name = f"\x00centre{self._hidden}"
         self._points[name] = len(self._points)
-        self._steps.append((6, [self._points[name], self._points[P], self._points[Q],
+        q = P if link.own and link.name == (P, Q) else Q     # no square root needed
+        self._steps.append((6, [self._points[name], self._points[P], self._points[q],
                                 link.index], [dist, math.cos(ang), math.sin(ang)], name))
         return self._points[name]
 
@@ -385,6 +391,7 @@ class Mechanism:
             raise ValueError(f"{who}: inertia must be >= 0, not {j}")
         point = self._centre(who, link, P, Q, centre)
         self._masses.append((link.index, point, m, j))
+        self._cache = None
 
     def force(self, P, fx, fy, *, link=None):
         """External force (N) at joint or point P: constants, or one value per position
@@ -404,6 +411,7 @@ class Mechanism:
                              f"nothing")
         fx, fy = self._load_values(who, "fx", fx), self._load_values(who, "fy", fy)
         self._forces.append((self._points[P], on, fx, fy))
+        self._cache = None
 
     def torque(self, P, Q, M):
         """External moment (N m, counter-clockwise positive) on link P-Q: a constant or
@@ -411,6 +419,7 @@ class Mechanism:
         who = f"torque({P!r}, {Q!r})"
         link = self._link(who, (P, Q))
         self._torques.append((link.index, self._load_values(who, "M", M)))
+        self._cache = None
 
     def spring(self, P, Q, k, L0):
         """A linear spring between points P and Q: stiffness k (N/m, >= 0), free length
@@ -428,6 +437,7 @@ class Mechanism:
             raise ValueError(f"{who}: L0 must be >= 0, not {L0}")
         self._springs.append((self._points[P], self._points[Q], self._owner[P],
                               self._owner[Q], k, L0))
+        self._cache = None
 
     @staticmethod
     def _load_values(who, name, value):
@@ -472,28 +482,90 @@ class Mechanism:
             A position where a group does not assemble raises AssemblyError naming the
             group and the angle (a dead centre SingularError; a loss of digits warns with
             SignificanceWarning); ``"nan"``: NaN there and ``r.status``.
+
+        Returns
+        -------
+        MechanismResult
+            ``r.position(name)``, ``r.velocity``, ``r.acceleration`` (shape phi.shape +
+            (2,)), ``r.angle(P, Q)``, ``r.omega``, ``r.epsilon``, ``r.reaction(joint)``,
+            ``r.balancing_moment``, ``r.reduced_inertia``, ``r.reduced_moment``,
+            ``r.status``; ``r.plot()``, ``r.animate(path)``, ``r.to_frame()``.
         """
         if self._crank is None:
             raise ValueError("solve: the mechanism has no crank (m.crank)")
-        if need not in NEEDS:
+        level = NEEDS.get(need) if isinstance(need, str) else None
+        if level is None:
             raise ValueError(f"solve: need must be one of {list(NEEDS)}, not {need!r}")
         if on_error not in ("raise", "nan"):
             raise ValueError(f"solve: on_error must be 'raise' or 'nan', not {on_error!r}")
-        level = NEEDS[need]
         phi_in = np.asarray(phi)
         if phi_in.dtype.kind not in "fiu":
             raise TypeError("solve: phi must be real numbers")
         shape = phi_in.shape
-        phiv = np.ascontiguousarray(phi_in, dtype=float).ravel()
+        phiv = np.ascontiguousarray(phi_in, dtype=float).reshape(-1)
         n = phiv.size
         if n == 0:
             raise ValueError("solve: phi is empty")
-        if not np.all(np.isfinite(phiv)):
+        if not np.isfinite(phiv).all():
             raise ValueError("solve: phi must be finite")
         w, inc_w = self._per_position("omega", omega, n)
         e, inc_e = self._per_position("epsilon", epsilon, n)
         g = _real("solve", "gravity", gravity)
+        t = self._tables()
+        fval, tval = self._load_tables(n)
+        nop, nl, npair = len(t["outp"]), t["nl"], t["npair"]
+        nv = n if level >= 2 else 1
+        na = n if level >= 3 else 1
+        nr = n if level >= 4 else 1
+        empty = np.empty
+        pos = empty((2, nop, n), order="F")
+        vel = empty((2, nop, nv), order="F")
+        acc = empty((2, nop, na), order="F")
+        th = empty((2, nl, n), order="F")
+        om = empty((nl, nv), order="F")
+        ep = empty((nl, na), order="F")
+        react = empty((3, npair, nr), order="F")
+        mbal, jred, mred = empty(nr), empty(nv), empty(nr)
+        status = np.zeros(n, dtype=np.int32)
+        fgroup = np.zeros(n, dtype=np.int32)
+        _sarkp.mechanism.mech_solve(
+            level, t["gi"], t["gr"], phiv, w, e, inc_w, inc_e, t["mlink"], t["mpoint"],
+            t["mval"], g, t["fpoint"], t["flink"], fval, t["tlink"], tval, t["spp"],
+            t["spl"], t["spv"], t["powner"], t["lbase"], t["x0"], t["outp"], t["outl"],
+            pos, vel, acc, th, om, ep, react, mbal, jred, mred, status, fgroup)
+        ok = status == 0
+        if not ok.all():
+            ok |= status > _ST_DIGITS
+            self._settle(status, fgroup, phiv, shape, on_error)
+            bad = ~ok
+            if bad.any():
+                for arr in (pos, vel, acc, th, om, ep, react):
+                    if arr.shape[-1] == n:
+                        arr[..., bad] = math.nan
+                for arr in (mbal, jred, mred):
+                    if arr.size == n:
+                        arr[bad] = math.nan
 
+        flat = len(shape) == 1
+
+        def out(a, tail=()):
+            if a.shape[-1] != n:
+                return None                 # not asked for
+            a = a.T
+            return a if flat else a.reshape(shape + tail)
+        lost = status > _ST_DIGITS
+        code = np.where(lost, np.int32(Status.SIGNIFICANCE), status) if lost.any() else status
+        return MechanismResult._make((
+            self, t["columns"], need, phiv if flat else phiv.reshape(shape),
+            out(pos, (nop, 2)), out(vel, (nop, 2)), out(acc, (nop, 2)), out(th, (nl, 2)),
+            out(om, (nl,)), out(ep, (nl,)), out(react, (npair, 3)), out(mbal), out(jred),
+            out(mred), code if flat else code.reshape(shape)))
+
+    def _tables(self):
+        """The description as Fortran tables, built once (until the next change)."""
+        t = getattr(self, "_cache", None)
+        if t is not None:
+            return t
         npt = len(self._points)
         nl = len(self._links) - 1
         steps = self._steps
@@ -512,93 +584,73 @@ class Mechanism:
         powner = np.zeros(npt, dtype=np.int32)
         for name, l in self._owner.items():
             powner[self._points[name]] = l
-        for name, p in self._points.items():
-            if name.startswith("\x00"):
-                for (l, pt, _, _) in self._masses:
-                    if pt == p:
-                        powner[p] = l
+        for (l, p, _, _) in self._masses:
+            if p not in [self._points[nm] for nm in self._owner]:
+                powner[p] = l
         lbase = np.ones(nl + 1, dtype=np.int32)
         for lk in self._links[1:]:
             lbase[lk.index] = self._points[lk.base] + 1
-
-        def arr(*s, dtype=float):
-            return np.zeros(s, dtype=dtype, order="F")
         # f2py takes no empty arrays: an empty list of loads gets one neutral entry (a zero
         # mass, force, torque or spring on the crank)
         a_pin = self._points[self._crank[0]]
         masses = self._masses or [(_CRANK, a_pin, 0.0, 0.0)]
-        mlink = np.array([m[0] for m in masses], dtype=np.int32)
-        mpoint = np.array([m[1] + 1 for m in masses], dtype=np.int32)
-        mval = np.array([[m[2], m[3]] for m in masses]).T.copy("F")
-        forces = self._forces or [(a_pin, _CRANK, 0.0, 0.0)]
-        nfv = n if any(np.ndim(f[2]) or np.ndim(f[3]) for f in forces) else 1
-        fpoint = np.array([f[0] + 1 for f in forces], dtype=np.int32)
-        flink = np.array([f[1] for f in forces], dtype=np.int32)
-        fval = arr(2, len(forces), nfv)
-        for j, (_, _, fx, fy) in enumerate(forces):
-            fval[0, j, :] = self._values_for("force", fx, n)
-            fval[1, j, :] = self._values_for("force", fy, n)
-        torques = self._torques or [(_CRANK, 0.0)]
-        ntv = n if any(np.ndim(t[1]) for t in torques) else 1
-        tlink = np.array([t[0] for t in torques], dtype=np.int32)
-        tval = arr(len(torques), ntv)
-        for j, (_, M) in enumerate(torques):
-            tval[j, :] = self._values_for("torque", M, n)
         springs = self._springs or [(a_pin, a_pin, _CRANK, _CRANK, 0.0, 0.0)]
-        spp = np.array([[s[0] + 1, s[1] + 1] for s in springs], dtype=np.int32).T.copy("F")
-        spl = np.array([[s[2], s[3]] for s in springs], dtype=np.int32).T.copy("F")
-        spv = np.array([[s[4], s[5]] for s in springs]).T.copy("F")
-        npair = len(self._pairs)
-        nv = n if level >= 2 else 1
-        na = n if level >= 3 else 1
-        nr = n if level >= 4 else 1
-        nan = math.nan
-        pos = np.full((2, npt, n), nan, order="F")
-        pos[:, :, :] = x0[:, :, None]
-        vel = np.full((2, npt, nv), nan, order="F")
-        acc = np.full((2, npt, na), nan, order="F")
-        th = np.full((nl + 1, n), nan, order="F")
-        om = np.full((nl + 1, nv), nan, order="F")
-        ep = np.full((nl + 1, na), nan, order="F")
-        react = np.full((3, npair, nr), nan, order="F")
-        mbal = np.full(nr, nan)
-        jred = np.full(nv, nan)
-        mred = np.full(nr, nan)
-        status = np.zeros(n, dtype=np.int32)
-        fgroup = np.zeros(n, dtype=np.int32)
-        _sarkp.mechanism.mech_solve(
-            level, gi, gr, phiv, w, e, inc_w, inc_e, mlink, mpoint, mval, g,
-            fpoint, flink, fval, tlink, tval, spp, spl, spv, powner, lbase, x0,
-            pos, vel, acc, th, om, ep, react, mbal, jred, mred, status, fgroup)
-        status, fgroup = self._settle(status, fgroup, phiv, shape, on_error)
-        bad = ~((status == 0) | (status > _ST_DIGITS))
-        if bad.any():
-            for a, last in ((pos, 2), (vel, 2), (acc, 2), (th, 1), (om, 1), (ep, 1),
-                            (react, 2)):
-                if a.shape[last] == n:
-                    a[..., bad] = nan
-            for a in (mbal, jred, mred):
-                if a.size == n:
-                    a[bad] = nan
+        forces = self._forces or [(a_pin, _CRANK, 0.0, 0.0)]
+        torques = self._torques or [(_CRANK, 0.0)]
+        # the outputs: the moving points (not the frame's, not the hidden centres) and the
+        # moving links
+        moving = [name for name in self.joints if name not in self._fixed]
+        outp = np.array([self._points[nm] + 1 for nm in moving], dtype=np.int32)
+        outl = np.arange(1, nl + 1, dtype=np.int32)
+        columns = ({nm: j for j, nm in enumerate(moving)},
+                   {nm: tuple(xy) for nm, xy in self._fixed.items()})
+        t = {"npt": npt, "nl": nl, "npair": len(self._pairs), "gi": gi, "gr": gr, "x0": x0,
+             "outp": outp, "outl": outl, "columns": columns,
+             "powner": powner, "lbase": lbase,
+             "mlink": np.array([m[0] for m in masses], dtype=np.int32),
+             "mpoint": np.array([m[1] + 1 for m in masses], dtype=np.int32),
+             "mval": np.array([[m[2], m[3]] for m in masses]).T.copy("F"),
+             "spp": np.array([[s[0] + 1, s[1] + 1] for s in springs],
+                             dtype=np.int32).T.copy("F"),
+             "spl": np.array([[s[2], s[3]] for s in springs], dtype=np.int32).T.copy("F"),
+             "spv": np.array([[s[4], s[5]] for s in springs]).T.copy("F"),
+             "forces": forces, "torques": torques,
+             "fpoint": np.array([f[0] + 1 for f in forces], dtype=np.int32),
+             "flink": np.array([f[1] for f in forces], dtype=np.int32),
+             "fvar": any(np.ndim(f[2]) or np.ndim(f[3]) for f in forces),
+             "tlink": np.array([t[0] for t in torques], dtype=np.int32),
+             "tvar": any(np.ndim(t[1]) for t in torques), "loads": {}}
+        self._cache = t
+        return t
 
-        def pts(a):
-            return None if a.shape[2] != n else \
-                np.transpose(a, (2, 1, 0)).reshape(shape + (npt, 2))
+    def _load_tables(self, n):
+        """The forces' and torques' values, (2, nf, 1 or n) and (nt, 1 or n)."""
+        t = self._tables()
+        key = (n if t["fvar"] else 1, n if t["tvar"] else 1)
+        if key in t["loads"]:
+            return t["loads"][key]
+        fval = np.zeros((2, len(t["forces"]), key[0]), order="F")
+        names = {i: nm for nm, i in self._points.items()}
+        for j, (p, _, fx, fy) in enumerate(t["forces"]):
+            fval[0, j, :] = self._values_for(f"force at {names[p]!r}: fx", fx, n)
+            fval[1, j, :] = self._values_for(f"force at {names[p]!r}: fy", fy, n)
+        tval = np.zeros((len(t["torques"]), key[1]), order="F")
+        for j, (li, M) in enumerate(t["torques"]):
+            tval[j, :] = self._values_for(f"torque on {self._links[li].label}: M", M, n)
+        t["loads"] = {key: (fval, tval)}
+        return fval, tval
 
-        def lks(a):
-            return None if a.shape[1] != n else a.T.reshape(shape + (nl + 1,))
-        code = np.where(status > _ST_DIGITS, int(Status.SIGNIFICANCE), status)
-        return MechanismResult._make((
-            self, need, phiv.reshape(shape), pts(pos), pts(vel), pts(acc), lks(th), lks(om),
-            lks(ep),
-            None if nr != n else np.transpose(react, (2, 1, 0)).reshape(shape + (npair, 3)),
-            None if nr != n else mbal.reshape(shape),
-            None if nv != n else jred.reshape(shape),
-            None if nr != n else mred.reshape(shape),
-            code.astype(np.int32).reshape(shape)))
+    def __getstate__(self):
+        state = dict(self.__dict__)
+        state["_cache"] = None
+        return state
 
     @staticmethod
     def _per_position(name, value, n):
+        if type(value) is float or type(value) is int:         # the common case, quickly
+            if not math.isfinite(value):
+                raise ValueError(f"solve: {name} must be finite")
+            return np.array([value], dtype=float), 0
         a = np.asarray(value)
         if a.dtype.kind not in "fiu":
             raise TypeError(f"solve: {name} must be real numbers")
@@ -618,8 +670,7 @@ class Mechanism:
         if np.ndim(value) == 0:
             return value
         if len(value) != n:
-            raise ValueError(f"solve: a {who} array has {len(value)} values for {n} "
-                             f"positions")
+            raise ValueError(f"solve: {who} has {len(value)} values for {n} positions")
         return value
 
     def _step_text(self, k):
@@ -697,14 +748,18 @@ class _MechanismBase(Result):
     __str__ = __repr__
 
     def _point(self, name, field):
-        m = self.mechanism
-        if name not in m._points or name.startswith("\x00"):
+        moving, fixed = self.columns
+        if name not in moving and name not in fixed:
             raise ValueError(f"unknown joint {name!r}")
         a = getattr(self, field)
         if a is None:
-            raise ValueError(f"{field} were not computed: solve with need >= "
-                             f"{ {'velocities': 'velocities', 'accelerations': 'accelerations'}.get(field, field)!r}")
-        return a[..., m._points[name], :]
+            raise ValueError(f"{field} were not computed: solve with need >= {field!r}")
+        if name in moving:
+            return a[..., moving[name], :]
+        shape = np.shape(self.phi) + (2,)
+        if field == "positions":
+            return np.broadcast_to(np.array(fixed[name], dtype=float), shape).copy()
+        return np.zeros(shape)
 
     def position(self, name):
         """Cartesian (x, y) of a joint or point: shape phi.shape + (2,)."""
@@ -720,25 +775,31 @@ class _MechanismBase(Result):
         return self.mechanism._link("result", (P,) if Q is None else (P, Q))
 
     def angle(self, P, Q=None):
-        """The direction P->Q of a link named by two joints on it (continuous along the
-        sweep); a slider block's or a slotted link's guide direction."""
+        """The direction P->Q of a link named by two joints on it, continuous along the
+        sweep (the first value in (-pi, pi]; the crank's is phi itself); a slider block's
+        or a slotted link's guide direction.  Computed from the link's cosine and sine
+        when asked for (np.unwrap along the positions)."""
         link = self._link(P, Q)
-        th = self.angles[..., link.index]
+        if link.index == _CRANK and (P, Q) == link.name:
+            return np.array(self.phi, dtype=float)
+        d = self.directions[..., link.index - 1, :]
+        shape = d.shape[:-1]
+        th = np.unwrap(np.arctan2(d[..., 1], d[..., 0]).reshape(-1)).reshape(shape)
         if Q is None or link.name == (P, Q) or not self.mechanism._rigid_name(link, P, Q):
             return th
-        d = self.position(Q) - self.position(P)
-        direct = np.arctan2(d[..., 1], d[..., 0])
+        r = self.position(Q) - self.position(P)
+        direct = np.arctan2(r[..., 1], r[..., 0])
         return th + np.remainder(direct - th + math.pi, 2 * math.pi) - math.pi
 
     def omega(self, P, Q=None):
         if self.omegas is None:
             raise ValueError("omega: solve with need >= 'velocities'")
-        return self.omegas[..., self._link(P, Q).index]
+        return self.omegas[..., self._link(P, Q).index - 1]
 
     def epsilon(self, P, Q=None):
         if self.epsilons is None:
             raise ValueError("epsilon: solve with need >= 'accelerations'")
-        return self.epsilons[..., self._link(P, Q).index]
+        return self.epsilons[..., self._link(P, Q).index - 1]
 
     def _pair(self, joint, on, by):
         m = self.mechanism
@@ -783,20 +844,21 @@ class _MechanismBase(Result):
     def _frame_columns(self):
         m = self.mechanism
         cols = {"phi": np.ravel(self.phi)}
-        for name in m.joints:
+        for name in [*self.columns[1], *self.columns[0]]:
             for field, tag in (("positions", ""), ("velocities", "v"),
                                ("accelerations", "a")):
                 a = getattr(self, field)
                 if a is not None:
-                    cols[f"{tag}x_{name}"] = np.ravel(a[..., m._points[name], 0])
-                    cols[f"{tag}y_{name}"] = np.ravel(a[..., m._points[name], 1])
+                    xy = self._point(name, field)
+                    cols[f"{tag}x_{name}"] = np.ravel(xy[..., 0])
+                    cols[f"{tag}y_{name}"] = np.ravel(xy[..., 1])
         for lk in m._links[1:]:
             label = "-".join(lk.name)
-            cols[f"angle_{label}"] = np.ravel(self.angles[..., lk.index])
+            cols[f"angle_{label}"] = np.ravel(self.angle(*lk.name))
             if self.omegas is not None:
-                cols[f"omega_{label}"] = np.ravel(self.omegas[..., lk.index])
+                cols[f"omega_{label}"] = np.ravel(self.omegas[..., lk.index - 1])
             if self.epsilons is not None:
-                cols[f"epsilon_{label}"] = np.ravel(self.epsilons[..., lk.index])
+                cols[f"epsilon_{label}"] = np.ravel(self.epsilons[..., lk.index - 1])
         for f in ("balancing_moment", "reduced_inertia", "reduced_moment"):
             v = getattr(self, f)
             if v is not None:
@@ -807,7 +869,7 @@ class _MechanismBase(Result):
     # -- pictures ---------------------------------------------------------------------
     def _drawing(self):
         m = self.mechanism
-        pts = {n: (self.positions[..., m._points[n], 0], self.positions[..., m._points[n], 1])
+        pts = {n: (self.position(n)[..., 0], self.position(n)[..., 1])
                for n in m.joints}
         links = []
         for lk in m._links[1:]:
@@ -833,8 +895,6 @@ class _MechanismBase(Result):
     def animate(self, path, *, fps=20, every=1, paths=()):
         """An animation over the sweep written to ``path`` (.gif through Pillow, .mp4
         through ffmpeg: matplotlib's writers)."""
-        import matplotlib
-        matplotlib.use(matplotlib.get_backend())
         import matplotlib.pyplot as plt
         from matplotlib import animation
         pts, links, fixed = self._drawing()
@@ -866,7 +926,8 @@ class _MechanismBase(Result):
 
 MechanismResult = result_type(
     "MechanismResult",
-    ("mechanism", "need", "phi", "positions", "velocities", "accelerations", "angles",
+    ("mechanism", "columns", "need", "phi", "positions", "velocities", "accelerations",
+     "directions",
      "omegas", "epsilons", "reactions", "balancing_moment", "reduced_inertia",
      "reduced_moment", "status"),
     base=_MechanismBase,

@@ -41,9 +41,15 @@ DINTGR = book_routine(
     -------
     DINTGR(FINT)
         ``FINT[k]`` is the integral from the first point to point k; ``FINT[0] = 0``.
-        Rectangles use the right end of each step; Simpson integrates the odd points
-        from the first and the even points from a trapezoid over the first step, as
-        printed (so it is exact for cubics at the odd points only).
+        Rectangles use the right end of each step; trapezoids the two ends.  Simpson
+        chains Simpson's rule over pairs of steps from the first point for ``FINT[2]``,
+        ``FINT[4]``, ... and from ``FINT[1]`` for ``FINT[3]``, ``FINT[5]``, ...;
+        ``FINT[1]``, the integral over the first step, is in corrected mode that of the
+        parabola through the first three points, ``H (5 Y[0] + 8 Y[1] - Y[2])/12``, so
+        that every point is of the fourth order (exact for cubics at the points of even
+        index, for quadratics at the others); as-printed mode keeps the book's trapezoid
+        ``H (Y[0] + Y[1])/2`` there, whose error of the third order every odd-index point
+        carries (ERRATA E-DINTGR-4).  With M = 2 Simpson gives the trapezoid.
     """)
 
 DFRNCL = book_routine(
@@ -68,7 +74,10 @@ DFRNCL = book_routine(
     -------
     DFRNCL(FDIF)
         Backward differences assigned to the right-hand point:
-        ``FDIF[k] = (Y[k] - Y[k-1]) / H``, and ``FDIF[0] = 0``.
+        ``FDIF[k] = (Y[k] - Y[k-1]) / H`` for k >= 1.  The first point: corrected mode
+        gives it the forward difference ``(Y[1] - Y[0]) / H``, i.e. ``FDIF[0] =
+        FDIF[1]``, of the same first order as the others; as-printed mode keeps the
+        book's ``FDIF[0] = 0`` whatever the derivative (ERRATA E-DFRNCL-1).
     """)
 
 

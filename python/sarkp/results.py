@@ -6,7 +6,8 @@ names in the book's order (``r.FI2``, ``fi2, fi3, xb, yb = r``, ``r[0]``, ``r._f
 which also
 
 * pickles, scalar or array, so multiprocessing, joblib and dask can return it (the class
-  is rebuilt from its name and fields on unpickling; it need not be importable);
+  is rebuilt from its name, fields and base on unpickling; it need not be importable,
+  and an instance of a further subclass comes back as its result class);
 * prints short: arrays show their shape and a few values, not every position;
 * converts to a pandas DataFrame with :meth:`Result.to_frame` (pandas is optional:
   ``pip install 'sarkp[frame]'``).
@@ -70,8 +71,9 @@ class Result(tuple):
 
     # -- pickling -----------------------------------------------------------------------
     def __reduce__(self):
-        base = type(self).__bases__[0]
-        return (_rebuild, (type(self).__name__, self._fields, _where(base), tuple(self)))
+        cls = type(self)
+        return (_rebuild, (cls._result_name, self._fields, _where(cls._result_base),
+                           tuple(self)))
 
     # -- pandas -------------------------------------------------------------------------
     def _frame_columns(self) -> tuple[dict[str, Any], tuple[int, ...]]:
@@ -174,6 +176,8 @@ def result_type(name: str, fields: Iterable[str], *, base: type = Result,
         cls = type(name, (base, plain), {
             "__slots__": (),
             "_fields": fields,
+            "_result_name": name,
+            "_result_base": base,
             "__doc__": doc or f"The result of {name}: {', '.join(fields)}.",
             "__module__": __name__,
         })

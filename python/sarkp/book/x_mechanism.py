@@ -96,3 +96,19 @@ def solve(links: dict, angles=None) -> dict:
     out["M1"] = -st.balancing_moment
     out["vectors"] = named
     return out
+
+
+def flywheel(links: dict, delta: float | None = None, positions: int = 361):
+    """The flywheel of program X's machine from the Mechanism (chapter 8 at the mechanism
+    level, :meth:`sarkp.Mechanism.flywheel`): J_red with the crank's IS1 (the book's
+    IPR + ISC), the reduced moment of the weights and of the resistance FS (the book's M1:
+    the static balancing moment's opposite), over one turn at ``positions`` points;
+    ``delta``: the program's corrected 0.02 by default.  Returns the
+    :class:`sarkp.dynamics.Flywheel` (exact J_flywheel, DMHVK's J_merkalov, the realized
+    delta)."""
+    delta = prog_x.DELTA_FLYWHEEL["corrected"] if delta is None else delta
+    phi = np.linspace(0.0, 2.0 * math.pi, positions)
+    w3 = mechanism(links).solve(phi, omega=1.0, need="velocities").omega("C", "B")
+    fs = np.where(w3 < 0.0, 2000.0, 400.0)
+    m = mechanism(links, fs, crank_inertia=True)
+    return m.flywheel(delta, prog_x.W1, phi, gravity=prog_x.G)
