@@ -276,6 +276,13 @@ def test_cli_fails_early_in_one_line(tmp_path, args, message):
     assert done.stderr.startswith("sarkp: error: ")
 
 
+def test_book_list_says_which_programs_draw(capsys):
+    assert main(["book", "list"]) == 0
+    lines = {line.split()[0]: line for line in capsys.readouterr().out.splitlines()}
+    drawn = {p for p, line in lines.items() if line.endswith("; pictures: --plots)")}
+    assert drawn == set(PROGRAMS)
+
+
 def test_printout_as_printed_pictures_corrected_by_default(tmp_path, capsys):
     """Without --mode the printout is the book's (as printed) and the pictures the
     corrected design; --mode sets both."""
