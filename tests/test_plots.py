@@ -83,7 +83,8 @@ def sheet_problems(figure) -> list:
         lb = legend.get_window_extent(renderer)
         for other in figure.axes:
             if other.get_visible() and lb.padded(-1).overlaps(other.get_window_extent(renderer)):
-                problems.append(f"a legend covers the drawing: {legend.get_texts()[0].get_text()!r}")
+                first = legend.get_texts()[0].get_text()
+                problems.append(f"a legend covers the drawing: {first!r}")
     return problems
 
 
