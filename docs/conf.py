@@ -13,8 +13,10 @@ from __future__ import annotations
 import contextlib
 import importlib
 import io
+import os
 import re
 import sys
+import tempfile
 from pathlib import Path
 
 import sarkp
@@ -165,6 +167,17 @@ def generate_api():
 
 # ---- the tutorial: the README's examples, run ------------------------------------------------
 
+@contextlib.contextmanager
+def _inside(folder):
+    """Work in ``folder`` for a while (contextlib.chdir, which Python 3.10 lacks)."""
+    here = os.getcwd()
+    os.chdir(folder)
+    try:
+        yield
+    finally:
+        os.chdir(here)
+
+
 def _run_like_a_session(code, namespace):
     """Run ``code``; a top-level expression that is not a call of print shows its value,
     as the interpreter's prompt would (``>>> expression`` then the value)."""
@@ -183,7 +196,9 @@ def _run_like_a_session(code, namespace):
 
 def generate_tutorial():
     """Every ```python block of README.md under its section heading, with what it
-    prints when run (all blocks in one namespace, in order, from a scratch folder)."""
+    prints when run (all blocks in one namespace, in order, in a scratch folder).  A
+    block that needs an optional package not installed is shown and marked not run; any
+    other failure fails the build."""
     readme = (ROOT / "README.md").read_text(encoding="utf-8")
     parts = ["# Tutorial: the README's examples, run", "",
              "Every Python example of the README, in its order, under the README's "
@@ -191,6 +206,7 @@ def generate_tutorial():
              "of them); what each prints follows it.  The prose around them is in the "
              "README; each routine's reference is in the API pages.", ""]
     namespace: dict = {"__name__": "__readme__"}
+    scratch = tempfile.mkdtemp(prefix="sarkp-readme-")     # files the examples write
     heading = None
     for match in re.finditer(r"^(#{2,3}) ([^\n]+)$|^( *)```python\n(.*?)^\3```", readme,
                              flags=re.M | re.S):
@@ -203,10 +219,17 @@ def generate_tutorial():
             parts += [f"## {heading}", ""]
             heading = None
         output = io.StringIO()
-        with contextlib.redirect_stdout(output):
-            _run_like_a_session(code, namespace)
+        missing = None
+        with contextlib.redirect_stdout(output), _inside(scratch):
+            try:
+                _run_like_a_session(code, namespace)
+            except ImportError as exc:            # an optional package (dask, pandas)
+                missing = exc.name or str(exc)
         parts += ["```python", code.rstrip("\n"), "```", ""]
-        if output.getvalue().strip():
+        if missing:
+            parts += [f"(Not run when these pages were built: it needs an optional "
+                      f"package that is not installed there: {missing}.)", ""]
+        elif output.getvalue().strip():
             parts += ["prints", "", "```text", output.getvalue().rstrip("\n"), "```", ""]
     GENERATED.mkdir(parents=True, exist_ok=True)
     (GENERATED / "tutorial.md").write_text("\n".join(parts), encoding="utf-8")

@@ -83,7 +83,8 @@ def sheet_problems(figure) -> list:
         lb = legend.get_window_extent(renderer)
         for other in figure.axes:
             if other.get_visible() and lb.padded(-1).overlaps(other.get_window_extent(renderer)):
-                problems.append(f"a legend covers the drawing: {legend.get_texts()[0].get_text()!r}")
+                first = legend.get_texts()[0].get_text()
+                problems.append(f"a legend covers the drawing: {first!r}")
     return problems
 
 
@@ -274,6 +275,13 @@ def test_cli_fails_early_in_one_line(tmp_path, args, message):
     assert done.stdout == ""
     assert done.stderr.count("\n") == 1 and message in done.stderr, done.stderr
     assert done.stderr.startswith("sarkp: error: ")
+
+
+def test_book_list_says_which_programs_draw(capsys):
+    assert main(["book", "list"]) == 0
+    lines = {line.split()[0]: line for line in capsys.readouterr().out.splitlines()}
+    drawn = {p for p, line in lines.items() if line.endswith("; pictures: --plots)")}
+    assert drawn == set(PROGRAMS)
 
 
 def test_printout_as_printed_pictures_corrected_by_default(tmp_path, capsys):

@@ -270,7 +270,8 @@ def _main(argv=None) -> int:
         for listing, name in book.PROGRAMS.items():
             prog = book.program(listing)
             figs = ", ".join(f"Fig. {f}" for f in prog.FIGURES) or "no printed output"
-            print(f"{listing:8s} {prog.TITLE} ({figs})")
+            pictures = "; pictures: --plots" if listing == "X" or hasattr(prog, "plots") else ""
+            print(f"{listing:8s} {prog.TITLE} ({figs}{pictures})")
         return 0
     if args.action == "run" and args.printed:
         from . import printed
