@@ -170,8 +170,15 @@ contains
         ei = epsil(1 + (i - 1)*inc_e)
         w2 = wi*wi
         if (need >= 4) then
-          aa = a*w2 + v*ei
-          ee = e*w2 + w*ei
+          ! every point's and link's acceleration, for the inertia loads (explicit loops:
+          ! the whole-array form cost gfortran a temporary)
+          do p = 1, np
+            aa(1, p) = a(1, p)*w2 + v(1, p)*ei
+            aa(2, p) = a(2, p)*w2 + v(2, p)*ei
+          end do
+          do l = 0, nl
+            ee(l) = e(l)*w2 + w(l)*ei
+          end do
         end if
         do k = 1, nop
           p = outp(k)
