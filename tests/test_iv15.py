@@ -352,9 +352,56 @@ def test_render_is_the_books_layout(mode):
 
 
 def test_a_card_that_cannot_be_assembled_raises():
-    with pytest.raises(sarkp.AssemblyError, match="DPRM2"):
+    # corrected mode: the Mechanism names the group by its new joint and the angle
+    with pytest.raises(sarkp.AssemblyError, match=r"group rrp 'D' .*does not assemble at "
+                                                  r"phi = 0\.0"):
         prog.compute(card={"RCD": 0.1})
-    t = prog.compute(card={"RCD": 0.1}, on_error="nan")
-    bad = np.isnan(t["XD"])
+    # as printed: the book's call sequence, the routine names itself
+    with sarkp.as_printed(), pytest.raises(sarkp.AssemblyError, match="DPRM2"):
+        prog.compute(card={"RCD": 0.1})
+
+
+#: The columns of each group (the crank's FI, XA, YA, XM, YM belong to none).
+GROUP_COLUMNS = {
+    "B": "FI2 FI3 XB YB XC YC XH YH VBA ALBA VBF ALBF VB ALB W2 W3 VC ALC ABAT BBAT ABFT "
+         "BBFT AB BB E2 E3 AC BC",
+    "D": "XD Y FI4 VDC ALDC VDE ALDE VD ALD W4 ADCT BDCT ADE BDE E4 AD BD",
+    "K": "SGL SGH VGH ALGH VGL ALGL VG ALG AGH BGH AGL BGL AG BG",
+    "N": "RO1M FI9 FIO1M VNM ALNM VNO1 ALNO1 VN ALN W9 ANM BNM ANO1T BNO1T E9 AN BN",
+    "P": "XP YP RO1P FIO1P RV FV VPM ALPM VPN ALPN VP ALP APR BPR APS BPS AP BP",
+}
+
+
+def test_the_group_columns_cover_every_variable():
+    named = [k for cols in GROUP_COLUMNS.values() for k in cols.split()]
+    assert sorted(named + ["FI", "XA", "YA", "XM", "YM"]) == sorted(prog.compute())
+    assert set(GROUP_COLUMNS) == set(prog.GROUPS)
+
+
+@pytest.mark.parametrize("card, failing", [({"RCD": 0.1}, "D"),      # the slider's rod
+                                           ({"RAB": 0.05}, "B")])    # the four-bar
+def test_a_failing_group_leaves_the_groups_before_it_and_beside_it(card, failing):
+    """Under on_error="nan", where a group does not assemble its variables and those of
+    the groups built on it (GROUPS) are NaN; the crank, the groups it stands on and the
+    groups on other branches keep their values -- the same as the book's call sequence
+    gives, and the same as a solve of the positions where everything assembles."""
+    fi = fine_angles()[::8]
+    t = prog.compute(card=card, angles=fi, on_error="nan")
+    bad = np.isnan(t["X" + failing])
     assert bad.any() and not bad.all()
-    assert not np.isnan(t["XB"]).any() and not np.isnan(t["XP"]).any()
+    after = {g for g, needs in prog.GROUPS.items() if failing in needs}
+    assert after == ({"D"} if failing == "D" else {"B", "D", "K"})
+    for g, cols in GROUP_COLUMNS.items():
+        for k in cols.split():
+            if g in after:
+                assert np.isnan(t[k][bad]).all() and np.isfinite(t[k][~bad]).all(), k
+            else:
+                assert np.isfinite(t[k]).all(), k
+    # the same NaN as the book's call sequence (one chapter 4 routine per group)
+    ref = prog.compute_by_groups(card=card, angles=fi, on_error="nan")
+    for k in t:
+        assert np.array_equal(np.isnan(t[k]), np.isnan(ref[k])), k
+    # the positions that assemble: the values of a solve of those positions alone
+    good = prog.compute(card=card, angles=fi[~bad])
+    for k in t:
+        np.testing.assert_array_equal(t[k][~bad], good[k], err_msg=k)

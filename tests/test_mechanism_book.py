@@ -1,6 +1,7 @@
 """The book's programs on sarkp.Mechanism: program X's six-bar (x_mechanism), IV.15's
 and VII.10's mechanism of Fig. 29/57 (kinds 1-5), against their group-by-group corrected
-paths (the chapter 4 and 7 routines called one group at a time), to 1e-13 relative."""
+paths (the chapter 4 and 7 routines called one group at a time), to 1e-13 relative;
+IV.15's corrected compute() is the Mechanism path, read as the book's variables."""
 
 import math
 
@@ -66,7 +67,7 @@ def polar(t, v, a):
 @pytest.fixture(scope="module")
 def iv15():
     with sarkp.mode("corrected"):
-        t = prog_iv_15.compute()
+        t = prog_iv_15.compute_by_groups()
         r = prog_iv_15.mechanism().solve(t["FI"], omega=-prog_iv_15.CARD["W1"],
                                           need="accelerations")
     return t, r
@@ -104,7 +105,7 @@ def test_iv15_velocities_and_accelerations(iv15):
 
 def test_vii10_forces_and_balancing_moment():
     with sarkp.mode("corrected"):
-        t = prog_vii_10.compute()
+        t = prog_vii_10.compute_by_groups()
         m, FI = prog_vii_10.mechanism()
         r = m.solve(FI, omega=-prog_iv_15.CARD["W1"], epsilon=0.0, need="forces")
     # the program's forces are static: no masses in the Mechanism, so no inertia
@@ -144,3 +145,156 @@ def test_program_x_flywheel_from_the_mechanism(x_paths):
     r = m.solve(prog_x.crank_angles(), omega=1.0, need="forces", gravity=prog_x.G)
     assert close(r.reduced_inertia, ipr + fo["IS1"])
     assert close(r.reduced_moment, fo["M1"])
+
+
+# -- IV.15's corrected compute(): one Mechanism solve, the book's variables ---------------
+
+#: (modulus, direction) pairs of IV.15's velocities and accelerations
+IV15_VECTORS = (
+    ("VBA", "ALBA"), ("VBF", "ALBF"), ("VB", "ALB"), ("VC", "ALC"), ("VDC", "ALDC"),
+    ("VDE", "ALDE"), ("VD", "ALD"), ("VGH", "ALGH"), ("VGL", "ALGL"), ("VG", "ALG"),
+    ("VNM", "ALNM"), ("VNO1", "ALNO1"), ("VN", "ALN"), ("VPM", "ALPM"), ("VPN", "ALPN"),
+    ("VP", "ALP"), ("ABAT", "BBAT"), ("ABFT", "BBFT"), ("AB", "BB"), ("AC", "BC"),
+    ("ADCT", "BDCT"), ("ADE", "BDE"), ("AD", "BD"), ("AGH", "BGH"), ("AGL", "BGL"),
+    ("AG", "BG"), ("ANM", "BNM"), ("ANO1T", "BNO1T"), ("AN", "BN"), ("APR", "BPR"),
+    ("APS", "BPS"), ("AP", "BP"))
+
+
+@pytest.mark.parametrize("card", [{}, {"ROA": 0.2, "RCD": 0.7, "ROM": 0.35}])
+@pytest.mark.parametrize("sweep", ["book", "fine"])
+def test_iv15_compute_from_the_mechanism_agrees_with_the_groups(card, sweep):
+    """Every variable of corrected compute() (the Mechanism) against the book's call
+    sequence (compute_by_groups): numbers to 1e-13 of their column's scale, link angles
+    in the routines' ranges (DPRM1's FI2, FI3 up to 3 pi, DUGOL's FIO1P, FV), each
+    (modulus, direction) pair as a vector to 1e-13 of its largest modulus and its
+    direction on the routine's branch (DUGL3: FI +- pi/2, DUGL4: FIM or FIM - pi, DUGL5:
+    (-pi/2, 3 pi/2)) wherever the vector is not zero to rounding."""
+    fi = (prog_iv_15.crank_angles() if sweep == "book"
+          else np.linspace(0.0, -2.0 * math.pi, 1441) - 1e-3)
+    t = prog_iv_15.compute(card, angles=fi)
+    g = prog_iv_15.compute_by_groups(card, angles=fi)
+    assert t.keys() == g.keys()
+    directions = {d for _, d in IV15_VECTORS}
+    for name in t:
+        if name in directions:
+            continue
+        scale = max(np.max(np.abs(g[name])), 1e-300)
+        err = np.max(np.abs(t[name] - g[name]))
+        assert err <= TOL * scale, (name, err, scale)
+    for mod, ang in IV15_VECTORS:
+        scale = np.max(g[mod])
+        assert close(polar(t, mod, ang), polar(g, mod, ang), scale), mod
+        seen = g[mod] > 1e-9 * scale                      # a direction to compare
+        diff = np.abs(t[ang] - g[ang])[seen]
+        # DUGL5 gives -pi/2 for x = 0 exactly, the Mechanism's x is a rounding's -0
+        ends = np.isclose(g[ang][seen], -math.pi / 2, rtol=0, atol=1e-12) & \
+            np.isclose(t[ang][seen], 1.5 * math.pi, rtol=0, atol=1e-12)
+        assert np.all((diff <= 1e-9) | ends), (ang, diff.max())
+
+
+def test_iv15_compute_is_one_solve(monkeypatch):
+    from sarkp.mechanism import Mechanism
+    calls = []
+    solve = Mechanism.solve
+
+    def counted(self, *args, **kwargs):
+        calls.append(args[0])
+        return solve(self, *args, **kwargs)
+    monkeypatch.setattr(Mechanism, "solve", counted)
+    t = prog_iv_15.compute()
+    assert len(calls) == 1 and np.array_equal(calls[0], t["FI"])
+    with sarkp.as_printed():
+        prog_iv_15.compute()                       # the book's call sequence: no solve
+    assert len(calls) == 1
+
+
+# -- r.animate(path) as MP4 (program X's six-bar) ------------------------------------------
+
+def _x_sweep(n=6):
+    with sarkp.mode("corrected"):
+        links = prog_x.synthesis()
+        return x_mechanism.mechanism(links).solve(np.linspace(0, 2 * math.pi, n),
+                                                  need="positions")
+
+
+def test_animate_writes_an_mp4(tmp_path):
+    matplotlib = pytest.importorskip("matplotlib")
+    matplotlib.use("Agg")
+    from matplotlib import animation
+    if not animation.FFMpegWriter.isAvailable():
+        pytest.skip("ffmpeg is not installed (Debian: apt-get install ffmpeg)")
+    import shutil
+    import subprocess
+    out = _x_sweep(6).animate(tmp_path / "six.mp4", fps=5)
+    with open(out, "rb") as f:
+        head = f.read(12)
+    assert head[4:8] == b"ftyp"                    # an ISO base media (MP4) file
+    ffprobe = shutil.which("ffprobe")
+    if ffprobe:
+        frames = subprocess.run(
+            [ffprobe, "-v", "error", "-count_frames", "-select_streams", "v:0",
+             "-show_entries", "stream=nb_read_frames,codec_type", "-of", "csv=p=0", out],
+            capture_output=True, text=True, check=True).stdout.split(",")
+        assert frames[0] == "video" and int(frames[1]) == 6
+
+
+def test_animate_without_ffmpeg_names_it(tmp_path, monkeypatch):
+    pytest.importorskip("matplotlib")
+    import matplotlib
+    monkeypatch.setitem(matplotlib.rcParams, "animation.ffmpeg_path",
+                        str(tmp_path / "no-such-ffmpeg"))
+    r = _x_sweep(3)
+    with pytest.raises(RuntimeError, match="needs ffmpeg.*apt-get install ffmpeg"):
+        r.animate(tmp_path / "six.mp4")
+    assert not (tmp_path / "six.mp4").exists()
+
+
+# -- VII.10's corrected compute(): the force solve of the loaded Mechanism ----------------
+
+VII10_INERTIA = {"M2": 5.1, "J2": 0.09, "M3": 8.0, "J3": 0.25, "M4": 6.0, "J4": 0.17,
+                 "M5": 4.0, "M7": 10.2, "M9": 7.5, "J9": 0.12, "M11": 3.0}
+
+
+@pytest.mark.parametrize("inertia", [None, VII10_INERTIA])
+@pytest.mark.parametrize("card", [{}, {"ROA": 0.2, "RCD": 0.7, "ROM": 0.35, "FS2": 700.0}])
+def test_vii10_compute_from_the_mechanism_agrees_with_the_groups(card, inertia):
+    """Every force variable of corrected compute() (a Mechanism force solve) against the
+    book's call sequence (compute_by_groups: DNMAF1-5 one group at a time): moduli,
+    arms H, moments and MY to 1e-13 of their column's scale, each reaction as a vector
+    to 1e-13 of its largest modulus and its direction on the routine's branch (DSMVKT's
+    DUGL5, DUGL5 - pi, DUGL3(FIM, PI/2, F) - PI) wherever the force is not zero; the two
+    ends of DUGL5's range (-pi/2, 3 pi/2) name the same direction of a vertical force."""
+    fi = np.concatenate([prog_iv_15.crank_angles(),
+                         np.linspace(0.0, -2.0 * math.pi, 361) - 1e-3])
+    t = prog_vii_10.compute(card, angles=fi, inertia=inertia)
+    g = prog_vii_10.compute_by_groups(card, angles=fi, inertia=inertia)
+    assert t.keys() == g.keys()
+    forces = [k for k in prog_vii_10.COLUMNS if k[0] == "F" and k != "FI"] + ["F3", "F9"]
+    for name in forces + [k for k in prog_vii_10.COLUMNS if k[0] == "H"] + \
+            ["TM3", "TM9", "MY", "TMR", "FC1", "FC2", "FC3"]:
+        scale = max(np.max(np.abs(g[name])), 1e-300)
+        assert np.max(np.abs(t[name] - g[name])) <= TOL * scale, name
+    for f in forces:
+        ang = "G" + f[1:]
+        scale = np.max(g[f])
+        assert close(polar(t, f, ang), polar(g, f, ang), scale), f
+        seen = g[f] > 1e-9 * scale
+        a, b = t[ang][seen], g[ang][seen]
+        ends = np.isclose(np.minimum(a, b), -math.pi / 2, rtol=0, atol=1e-12) & \
+            np.isclose(np.abs(a - b), 2 * math.pi, rtol=0, atol=1e-12)
+        assert np.all((np.abs(a - b) <= 1e-9) | ends), (ang, np.abs(a - b).max())
+
+
+def test_link_angles_stay_defined_where_the_mechanism_assembles():
+    """on_error="nan": r.angle is NaN where the mechanism does not assemble and the link's
+    direction where it does (np.unwrap over the sweep once spread one NaN to every later
+    position)."""
+    fi = -np.linspace(0.0, 4.0 * math.pi, 97)
+    r = prog_iv_15.mechanism({"RCD": 0.1}).solve(fi, omega=-2.0, on_error="nan")
+    bad = r.status != 0
+    assert bad.any() and not bad.all()
+    for p, q in (("F", "B"), ("O1", "N"), ("A", "B")):
+        a = r.angle(p, q)
+        assert np.isnan(a[bad]).all() and np.isfinite(a[~bad]).all()
+        d = r.position(q) - r.position(p)
+        assert same_angle(a[~bad], np.arctan2(d[~bad, 1], d[~bad, 0]))

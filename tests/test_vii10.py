@@ -3,8 +3,9 @@
 The book prints no output of VII.10.  Its balancing moment MY = -TMR (eq. 7.22) must equal
 what the power balance of the loads demands: MY*omega1 + sum(F.v) + sum(M*omega) = 0,
 with omega1 = -W1 (the crank turns clockwise, ``FI = FI - DFI``), i.e. MY = P/W1 -- over
-the whole sweep, with the velocities of IV.15 (chapter 4's routines), to 1e-9 of the
-loads' power.
+the whole sweep, with the velocities of IV.15, to 1e-9 of the loads' power.  In corrected
+mode both come from sarkp.Mechanism solves (tests/test_mechanism_book.py holds them to the
+book's call sequence).
 """
 
 from __future__ import annotations
@@ -193,3 +194,41 @@ def test_plots_draw_the_computed_data(tmp_path):
 def test_inertia_extension_rejects_bad_masses(inertia, name):
     with pytest.raises(ValueError, match=name):
         prog.compute(inertia=inertia)
+
+
+#: the force variables of each group (FORCE_GROUPS) and of the crank
+GROUP_FORCES = {
+    "K": "F63 G63 F76 G76 H76 F70 G70 H70",
+    "D": "F43 G43 F54 G54 F50 G50 H50",
+    "B": "F21 G21 F23 G23 F30 G30 F3 G3 TM3",
+    "P": "F109 G109 H109 F1011 G1011 F110 G110 H110",
+    "N": "F81 G81 F89 G89 H89 F90 G90 F9 G9 TM9",
+}
+
+
+@pytest.mark.parametrize("card, failing", [({"RCD": 0.1}, "D"), ({"RAB": 0.05}, "B")])
+def test_a_failing_group_leaves_the_forces_that_do_not_depend_on_it(card, failing):
+    """on_error="nan": where a group does not assemble, its reactions, those of the
+    groups it loads (inward: D and K load link 3 of group B) and MY are NaN; the groups
+    on other branches and those outward of it keep theirs -- as in the book's call
+    sequence, and equal to a solve of the positions where everything assembles."""
+    fi = fine_angles()[::12]
+    t = prog.compute(card=card, angles=fi, on_error="nan")
+    bad = np.isnan(t["X" + failing])
+    assert bad.any() and not bad.all()
+    undefined = {"D": {"D", "B"}, "B": {"B", "D", "K"}}[failing]
+    for g, names in GROUP_FORCES.items():
+        for k in names.split():
+            if g in undefined:
+                assert np.isnan(t[k][bad]).all() and np.isfinite(t[k][~bad]).all(), k
+            else:
+                assert np.isfinite(t[k]).all(), k
+    assert np.array_equal(np.isnan(t["MY"]), bad)
+    ref = prog.compute_by_groups(card=card, angles=fi, on_error="nan")
+    for k in t:
+        assert np.array_equal(np.isnan(t[k]), np.isnan(ref[k])), k
+    good = prog.compute(card=card, angles=fi[~bad])
+    for k in t:
+        np.testing.assert_array_equal(t[k][~bad], good[k], err_msg=k)
+    with pytest.raises(sarkp.AssemblyError, match=f"group .* '{failing}'"):
+        prog.compute(card=card, angles=fi)

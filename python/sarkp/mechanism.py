@@ -784,7 +784,10 @@ class _MechanismBase(Result):
             return np.array(self.phi, dtype=float)
         d = self.directions[..., link.index - 1, :]
         shape = d.shape[:-1]
-        th = np.unwrap(np.arctan2(d[..., 1], d[..., 0]).reshape(-1)).reshape(shape)
+        th = np.arctan2(d[..., 1], d[..., 0]).reshape(-1)
+        ok = ~np.isnan(th)                  # on_error="nan": unwrap across the failed positions
+        th[ok] = np.unwrap(th[ok])
+        th = th.reshape(shape)
         if Q is None or link.name == (P, Q) or not self.mechanism._rigid_name(link, P, Q):
             return th
         r = self.position(Q) - self.position(P)
@@ -897,6 +900,10 @@ class _MechanismBase(Result):
         through ffmpeg: matplotlib's writers)."""
         import matplotlib.pyplot as plt
         from matplotlib import animation
+        if not str(path).endswith(".gif") and not animation.FFMpegWriter.isAvailable():
+            raise RuntimeError(f"animate: writing {str(path)!r} needs ffmpeg (matplotlib's "
+                               f"FFMpegWriter), which is not installed (Debian: apt-get "
+                               f"install ffmpeg); a .gif path needs only Pillow")
         pts, links, fixed = self._drawing()
         xs = np.concatenate([np.ravel(x) for x, _ in pts.values()])
         ys = np.concatenate([np.ravel(y) for _, y in pts.values()])

@@ -29,6 +29,12 @@ sign went to the next argument).  Both are corrected in both modes; as-printed m
 differs from corrected mode only by PI = 3.14159 (and by what IV.15's as-printed mode
 changes: its accelerations, which the force analysis does not use).
 
+Corrected mode computes from the Mechanism (:func:`from_mechanism`): IV.15's solve, then
+one force solve of the mechanism with the program's loads (:func:`mechanism`), read as the
+book's (F, G, H) with the routines' ranges; the book's call sequence stays as
+:func:`compute_by_groups` (as-printed mode; the reference the tests hold the Mechanism
+to, 1e-13).
+
 Extension (not in the book): ``compute(..., inertia=...)`` adds the d'Alembert loads
 -m a_S and -J_S epsilon of section 7.1 (L4863-4869) with the exact accelerations of IV.15.
 """
@@ -39,6 +45,7 @@ import math
 
 import numpy as np
 
+from .. import get_mode
 from ..forces import DNMAF1, DNMAF2, DNMAF3, DNMAF4, DNMAF5
 from ..modes import book_pi
 from ..operators import DMOMNT, DSMVKT
@@ -86,11 +93,30 @@ def compute(card=None, positions: int | None = None, angles=None, on_error: str 
     ``inertia`` (sarkp's extension): {name: value} for :data:`INERTIA_KEYS` (missing ones
     0); the d'Alembert loads -m a_S, -J epsilon are added to each link's loads, with
     g = 9.81 not involved (the weights stay the book's Q).
+
+    ``on_error`` as IV.15's: under ``"nan"`` a group that does not assemble leaves NaN in
+    its reactions, in those of the groups it loads and in MY (:data:`FORCE_GROUPS`).
     """
     card = dict(card or {})
     forces = {k: card.pop(k) if k in card else v for k, v in CARD.items()}
     kin_card = card
-    t = prog_iv_15.compute(kin_card, positions, angles, on_error)
+    if get_mode() != "as-printed":
+        FI = (prog_iv_15.crank_angles(positions) if angles is None
+              else np.atleast_1d(np.asarray(angles, dtype=float)))
+        return from_mechanism(dict(kin_card, **forces), FI, on_error, inertia)
+    return compute_by_groups(dict(kin_card, **forces), positions, angles, on_error, inertia)
+
+
+def compute_by_groups(card=None, positions: int | None = None, angles=None,
+                      on_error: str = "raise", inertia: dict | None = None) -> dict:
+    """The book's call sequence (L5604-5637): IV.15's :func:`~sarkp.book.prog_iv_15.
+    compute_by_groups`, then the chapter 7 routines one group at a time, in the current
+    mode (as-printed mode's :func:`compute`; in corrected mode the reference of
+    :func:`from_mechanism`).  Arguments and result as :func:`compute`."""
+    card = dict(card or {})
+    forces = {k: card.pop(k) if k in card else v for k, v in CARD.items()}
+    kin_card = card
+    t = prog_iv_15.compute_by_groups(kin_card, positions, angles, on_error)
     c = dict(prog_iv_15.CARD, **kin_card)
     FS1, FS2, FS3, Q4, Q3, Q9 = (forces[k] for k in ("FS1", "FS2", "FS3", "Q4", "Q3", "Q9"))
     ROA, RCF, RFG, RFS3, ROM, RO1S9, ROF, B, C, Q5, Q2, W1 = (
@@ -119,15 +145,7 @@ def compute(card=None, positions: int | None = None, angles=None, on_error: str 
         return call(DSMVKT, f, g, np.hypot(fx, fy), np.arctan2(fy, fx))
 
     # d'Alembert loads (extension): -m a_S as (x, y) components, -J epsilon
-    m = {k: 0.0 for k in INERTIA_KEYS}
-    for k, value in (inertia or {}).items():
-        if k not in m:
-            raise ValueError(f"VII.10: unknown inertia key {k!r}; known: "
-                             f"{', '.join(INERTIA_KEYS)}")
-        if not (isinstance(value, (int, float)) and math.isfinite(value) and value >= 0):
-            raise ValueError(f"VII.10: inertia {k} = {value!r} must be a finite number "
-                             f">= 0 (a mass in kg or a moment of inertia in kg*m^2)")
-        m[k] = float(value)
+    m = _inertia(inertia)
     acc = _centre_accelerations(t, c) if inertia else None
 
     def inertia_force(link, mass):
@@ -195,37 +213,199 @@ def compute(card=None, positions: int | None = None, angles=None, on_error: str 
     return result
 
 
-def mechanism(card=None, angles=None):
+def _inertia(inertia):
+    """The ``inertia`` extension's values, checked: {key: float} for every key."""
+    m = {k: 0.0 for k in INERTIA_KEYS}
+    for k, value in (inertia or {}).items():
+        if k not in m:
+            raise ValueError(f"VII.10: unknown inertia key {k!r}; known: "
+                             f"{', '.join(INERTIA_KEYS)}")
+        if not (isinstance(value, (int, float)) and math.isfinite(value) and value >= 0):
+            raise ValueError(f"VII.10: inertia {k} = {value!r} must be a finite number "
+                             f">= 0 (a mass in kg or a moment of inertia in kg*m^2)")
+        m[k] = float(value)
+    return m
+
+
+def mechanism(card=None, angles=None, inertia: dict | None = None):
     """The mechanism of Fig. 57 with the program's loads as a :class:`sarkp.Mechanism`
     (IV.15's :func:`~sarkp.book.prog_iv_15.mechanism` plus the weights Q2 .. Q9 at the
     centres the program uses and the resistances FC1 .. FC3 at the crank ``angles``
     (default IV.15's), on the links the program puts them on: FC1 and Q5 on the yoke 7
     at (XH, B), FC2 on the slider 5 at D, FC3 on the slider 11 at P).  Static: solve with
-    ``need="forces"``; its balancing moment is the program's MY."""
+    ``need="forces"``; its balancing moment is the program's MY.  ``inertia``: the
+    masses and moments of inertia of :data:`INERTIA_KEYS` at those centres (M5 at D,
+    M11 at P), for the d'Alembert loads of a solve at the crank's speed.
+    Returns ``(mechanism, FI)``."""
     card = dict(card or {})
     forces = {k: card.pop(k) if k in card else v for k, v in CARD.items()}
     c = dict(prog_iv_15.CARD, **card)
     FI = (prog_iv_15.crank_angles() if angles is None
           else np.atleast_1d(np.asarray(angles, dtype=float)))
-    m = prog_iv_15.mechanism(card)
-    r = m.solve(FI, omega=-c["W1"], need="velocities")
-    w3, w9 = r.omega("F", "B"), r.omega("O1", "N")
+    r = prog_iv_15.mechanism(card).solve(FI, omega=-c["W1"], need="velocities")
+    return _loaded(c, forces, r.omega("F", "B"), r.omega("O1", "N"), inertia), FI
+
+
+def _loaded(c, forces, w3, w9, inertia=None, groups=None):
+    """IV.15's mechanism (only ``groups``, as prog_iv_15.mechanism) with the loads of
+    steps 1-16 on its links (W3, W9: the signs that switch the resistances, steps 1-3)
+    and the ``inertia`` extension's masses."""
     fc1 = np.where(w3 <= 0.0, forces["FS1"], 0.0)                 # steps 1-3
     fc2 = np.where(w3 <= 0.0, forces["FS2"], 0.0)
     fc3 = np.where(w9 > 0.0, forces["FS3"], 0.0)
-    m.point("Y7", "K", None, c["B"], math.pi / 2)                 # (XH, B) on the yoke
-    m.force("Y7", -fc1, -c["Q5"] + 0.0 * fc1)
-    m.point("S4", "C", "D", 0.5 * c["RCD"])
-    m.force("S4", 0.0, -forces["Q4"])
-    m.force("D", -fc2, 0.0 * fc2)
-    m.point("S3", "F", "B", c["RFS3"])
-    m.force("S3", 0.0, -forces["Q3"])
-    m.point("S2", "A", "B", 0.5 * c["RAB"])
-    m.force("S2", 0.0, -c["Q2"])
-    m.force("P", -fc3, 0.0 * fc3, link=("P", "Q"))
-    m.point("S9", "O1", "N", c["RO1S9"])
-    m.force("S9", 0.0, -forces["Q9"])
-    return m, FI
+    m = prog_iv_15.mechanism(c, groups)
+    has = set(m.joints)
+    w = _inertia(inertia)
+    if "B" in has:
+        m.point("S3", "F", "B", c["RFS3"])
+        m.force("S3", 0.0, -forces["Q3"])
+        m.point("S2", "A", "B", 0.5 * c["RAB"])
+        m.force("S2", 0.0, -c["Q2"])
+    if "K" in has:
+        m.point("Y7", "K", None, c["B"], math.pi / 2)             # (XH, B) on the yoke
+        m.force("Y7", -fc1, -c["Q5"] + 0.0 * fc1)
+    if "D" in has:
+        m.point("S4", "C", "D", 0.5 * c["RCD"])
+        m.force("S4", 0.0, -forces["Q4"])
+        m.force("D", -fc2, 0.0 * fc2)
+    if "N" in has:
+        m.point("S9", "O1", "N", c["RO1S9"])
+        m.force("S9", 0.0, -forces["Q9"])
+    if "P" in has:
+        m.force("P", -fc3, 0.0 * fc3, link=("P", "Q"))
+    if inertia:
+        for joint, args, kw in (
+                ("B", ("A", "B"), dict(mass=w["M2"], inertia=w["J2"], centre=0.5 * c["RAB"])),
+                ("B", ("F", "B"), dict(mass=w["M3"], inertia=w["J3"], centre=c["RFS3"])),
+                ("D", ("C", "D"), dict(mass=w["M4"], inertia=w["J4"], centre=0.5 * c["RCD"])),
+                ("D", ("D",), dict(mass=w["M5"])),
+                ("K", ("K", "Y7"), dict(mass=w["M7"], centre=c["B"])),
+                ("N", ("O1", "N"), dict(mass=w["M9"], inertia=w["J9"], centre=c["RO1S9"])),
+                ("P", ("P", "Q"), dict(mass=w["M11"]))):
+            if joint in has:
+                m.mass(*args, **kw)
+    return m
+
+
+#: VII.10's reactions from a Mechanism solve: name -> (joint, on, by, sign), the force of
+#: link i on link j for Fij (the book's numbers: 1 crank, 2 AB, 3 FB, 4 CD, 5 slider D,
+#: 6 block at H, 7 yoke, 8 slider at M, 9 link O1-N, 10 slider P on 9, 11 slider P on
+#: the guide, 0 the frame)
+REACTIONS = {
+    "F63": ("H", ("H", "K"), ("F", "B"), -1.0), "F76": ("H", ("H", "K"), ("K", "L"), 1.0),
+    "F70": ("K", ("K", "L"), "frame", -1.0), "F43": ("C", None, None, -1.0),
+    "F54": ("D", "D", ("C", "D"), 1.0), "F50": ("D", "D", "frame", -1.0),
+    "F21": ("A", None, None, -1.0), "F23": ("B", None, None, 1.0),
+    "F30": ("F", None, None, -1.0),
+    "F109": ("P", ("P", "O1"), ("O1", "N"), -1.0),
+    "F1011": ("P", ("P", "Q"), ("P", "O1"), 1.0),
+    "F110": ("P", ("P", "Q"), "frame", -1.0), "F81": ("M", None, None, -1.0),
+    "F89": ("N", ("O1", "N"), ("M", "N"), 1.0), "F90": ("O1", None, None, -1.0)}
+#: directions "g - pi" of DNMAF1-3's first reaction (DSMVKT's DUGL5 of the opposite force,
+#: less pi: in (-3 pi/2, pi/2)); DNMAF5's G70 and DNMAF4's G109 are DUGL3(FIM, PI/2, F)
+#: - PI; the others DSMVKT's DUGL5
+OPPOSITE = ("F43", "F21", "F81")
+#: the slider pairs' arms H (DNMAF's ARM: a moment about the routine's point over the
+#: force): name -> (reaction, the routine's point, sign).  DNMAF5's H34 (H70) balances the
+#: group's loads about A, so it is the arm of the frame's force on the yoke, -F70.
+ARMS = {"H76": ("F76", "H", 1.0), "H70": ("F70", "H", -1.0), "H50": ("F50", "D", 1.0),
+        "H109": ("F109", "P", 1.0), "H110": ("F110", "P", 1.0), "H89": ("F89", "O1", 1.0)}
+
+
+def _cross(r, f):
+    return r[..., 0] * f[..., 1] - r[..., 1] * f[..., 0]
+
+
+#: The reactions of each group and the groups whose kinematics and loads they need
+#: (IV.15's GROUPS: a group, the groups it stands on and those that load it): a group
+#: that does not assemble leaves the others' forces valid (the crank's MY needs all).
+FORCE_GROUPS = {
+    "K": (("F63", "F76", "F70"), ("B", "K")),
+    "D": (("F43", "F54", "F50"), ("B", "D")),
+    "B": (("F21", "F23", "F30"), ("B", "D", "K")),
+    "P": (("F109", "F1011", "F110"), ("N", "P")),
+    "N": (("F81", "F89", "F90"), ("N", "P")),
+}
+
+
+def _force_columns(r, t, group, forces, w):
+    """The book's variables of one group's reactions from the force solve r."""
+    from .prog_iv_15 import _dugl5, _near
+    out, vec = {}, {}
+    for name in FORCE_GROUPS[group][0]:
+        joint, on, by, sign = REACTIONS[name]
+        v = vec[name] = sign * r.reaction(joint, on=on, by=by)
+        out[name] = np.hypot(v[..., 0], v[..., 1])
+        g = "G" + name[1:]
+        if name in OPPOSITE:
+            out[g] = _dugl5(-v) - np.pi
+        elif name == "F70":
+            out[g] = _near(v, 0.0 * out[name] - np.pi)
+        elif name == "F109":
+            out[g] = _near(v, t["FI9"] - np.pi)
+        else:
+            out[g] = _dugl5(v)
+    for h, (name, at, arm) in ARMS.items():
+        if name in vec:
+            joint, on, by, sign = REACTIONS[name]
+            moment = arm * (sign * r.couple(joint, on=on, by=by)
+                            + _cross(r.position(joint) - r.position(at), vec[name]))
+            f = out[name]
+            out[h] = np.where(f == 0.0, 0.0, moment / np.where(f == 0.0, 1.0, f))
+    # steps 7-11 and 14-15: links 3 and 9 reduced to S3 and S9 (their weights, the
+    # forces of the outer groups on them, the extension's inertia loads)
+    pos, acc = r.position, r.acceleration
+    down = np.array([0.0, -1.0])
+    if group == "B":
+        f63 = REACTIONS["F63"][3] * r.reaction(*REACTIONS["F63"][:3])
+        f43 = REACTIONS["F43"][3] * r.reaction(*REACTIONS["F43"][:3])
+        f3 = f63 + f43 + forces["Q3"] * down - w["M3"] * acc("S3")
+        out["F3"], out["G3"] = np.hypot(f3[..., 0], f3[..., 1]), _dugl5(f3)
+        out["TM3"] = (_cross(pos("H") - pos("S3"), f63) + _cross(pos("C") - pos("S3"), f43)
+                      - w["J3"] * t["E3"])
+    if group == "N":
+        f109 = REACTIONS["F109"][3] * r.reaction(*REACTIONS["F109"][:3])
+        f9 = f109 + forces["Q9"] * down - w["M9"] * acc("S9")
+        out["F9"], out["G9"] = np.hypot(f9[..., 0], f9[..., 1]), _dugl5(f9)
+        out["TM9"] = _cross(pos("P") - pos("S9"), f109) - w["J9"] * t["E9"]
+    return out
+
+
+def from_mechanism(card, FI, on_error: str = "raise", inertia: dict | None = None) -> dict:
+    """Corrected mode's :func:`compute`: IV.15's variables from its Mechanism solve
+    (:func:`sarkp.book.prog_iv_15.from_mechanism`), then one force solve of the loaded
+    mechanism (:func:`mechanism`), its reactions read as the book's (modulus, direction,
+    arm) with the directions in the routines' ranges.  Where a group does not assemble
+    (``on_error="nan"``), those positions are solved again per group
+    (:data:`FORCE_GROUPS`), so that forces that do not depend on it keep their values."""
+    card = dict(card or {})
+    forces = {k: card.pop(k) if k in card else v for k, v in CARD.items()}
+    c = dict(prog_iv_15.CARD, **card)
+    w = _inertia(inertia)
+    t = prog_iv_15.from_mechanism(card, FI, on_error)
+    r = _loaded(c, forces, t["W3"], t["W9"], inertia).solve(
+        FI, omega=-c["W1"], epsilon=0.0, need="forces", on_error=on_error)
+    out = dict(t)
+    bad = np.isnan(r.positions).any(axis=(-1, -2))
+    for g, (_, needs) in FORCE_GROUPS.items():
+        cols = _force_columns(r, t, g, forces, w)
+        if bad.any():
+            sub_t = {k: v[bad] for k, v in t.items()}
+            sub = _loaded(c, forces, sub_t["W3"], sub_t["W9"], inertia, needs).solve(
+                FI[bad], omega=-c["W1"], epsilon=0.0, need="forces", on_error="nan")
+            for k, v in _force_columns(sub, sub_t, g, forces, w).items():
+                cols[k] = np.array(cols[k], dtype=float)
+                cols[k][bad] = v
+        out.update(cols)
+    # steps 1-3 and 17-19
+    out["FC1"] = np.where(t["W3"] <= 0.0, forces["FS1"], 0.0)
+    out["FC2"] = np.where(t["W3"] <= 0.0, forces["FS2"], 0.0)
+    out["FC3"] = np.where(t["W9"] > 0.0, forces["FS3"], 0.0)
+    out["MY"] = r.balancing_moment
+    out["TMR"] = -r.balancing_moment
+    return {k: np.broadcast_to(np.asarray(out[k], dtype=float), FI.shape).copy()
+            for k in list(t) + list(COLUMNS) + ["FC1", "FC2", "FC3", "F3", "G3", "TM3",
+                                                 "F9", "G9", "TM9", "MY"]}
 
 
 def _centre_accelerations(t, c):

@@ -448,27 +448,21 @@ def dynamics(links: dict, kin: dict, fo: dict) -> dict:
     is1 = fo["IS1"]
     delta = DELTA_FLYWHEEL[get_mode()]
     n = len(ipr)
-    stalls = False
     try:
-        try:
-            d1 = sarkp.DZKNDV(n, float(n), W1, is1, fo["M1"], ipr)
-        except sarkp.RequirementError:
-            # corrected mode (E-DZKNDV-2): without a flywheel the crank's inertia alone
-            # cannot keep a steady motion at W1 -- the machine stalls, there is no WPR.
-            # DEC does not depend on ISC: take it from a run with a large one.
-            if get_mode() == "as-printed":
-                raise
-            stalls = True
-            d1 = sarkp.DZKNDV(n, float(n), W1, is1 + 1e6, fo["M1"], ipr)
+        # corrected mode (E-DZKNDV-2): without a flywheel the crank's inertia alone may not
+        # keep a steady motion at W1 -- the machine stalls: WPR, EPR are NaN, and DEC,
+        # which does not depend on ISC, is still returned for DMHVK.
+        d1 = sarkp.DZKNDV(n, float(n), W1, is1, fo["M1"], ipr, on_error="nan")
+        stalls = d1.status == sarkp.Status.REQUIREMENT
+        if d1.status not in (sarkp.Status.OK, sarkp.Status.REQUIREMENT):
+            sarkp.DZKNDV(n, float(n), W1, is1, fo["M1"], ipr)          # raises its error
         imh = sarkp.DMHVK(n, delta, is1, W1, d1.DEC)
         imh = float(imh[0] if isinstance(imh, tuple) else imh)
         d2 = sarkp.DZKNDV(n, float(n), W1, is1 + imh, fo["M1"], ipr)
     except SarkpError as exc:
         raise StageError(f"program X, stage 'dynamics' (Fig. 96): {exc}") from exc
-    nan = np.full(n, np.nan)
     return {"FI1": kin["FI1"], "IPR": ipr, "AS": d1.AS, "ASUM": d1.ASUM, "EV": d1.EV,
-            "DEC": d1.DEC, "WPR": nan if stalls else d1.WPR,
-            "EPR": nan if stalls else d1.EPR, "WPRM": d2.WPR, "EPRM": d2.EPR,
+            "DEC": d1.DEC, "WPR": d1.WPR, "EPR": d1.EPR, "WPRM": d2.WPR, "EPRM": d2.EPR,
             "IMH": imh, "DELTA": delta, "IS1": is1, "STALLS": stalls}
 
 
