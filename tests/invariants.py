@@ -106,7 +106,10 @@ def angdiff(a, b):
 
 
 def worst(*ratios):
-    return max([0.0] + [float(r) for r in ratios])
+    """The largest violation; a NaN (a check that could not be evaluated) counts as
+    infinite, never as passing."""
+    values = [float(np.max(r)) for r in ratios]
+    return max([0.0] + [math.inf if math.isnan(r) else r for r in values])
 
 
 def tol(bound, coords=0.0, scale=1.0):
@@ -319,7 +322,9 @@ def chk_dsntzr(args, out, bound):
         c = vec(lo[k], 0.0) + vec(l3, fi3[k])
         viol.append(abs(np.linalg.norm(c - b) - out.L2) /
                     (max(out.L1, out.L2, l3, lo[k]) * tol(1e-10)))
-    return worst(*viol)
+    # the transmission angle's extremes over the turn (a four-bar: LO the same 3 times)
+    mu = fourbar_mu(0.0, 0.0, lo[0], 0.0, out.L1, out.L2, l3)
+    return worst(*viol, chk_turn(mu, out))
 
 
 def circle_points(p, r1, q, r2):
@@ -592,7 +597,8 @@ def chk_dprm1(args, out, bound):
         else math.inf
     return worst(abs(np.hypot(*(B - A)) - rz2) / (L * t), abs(np.hypot(*(B - C)) - rz3) /
                  (L * t), angdiff(out.FI2, math.atan2(*(B - A)[::-1])) / t * min(rz2, rz3) /
-                 rz2, side_ok)
+                 rz2, angdiff(out.FI3, math.atan2(*(B - C)[::-1])) / t * min(rz2, rz3) /
+                 rz3, side_ok)
 
 
 def not_parallel(rng, fi):
@@ -620,7 +626,8 @@ def chk_dskor1(args, out, bound):
     vb2 = polar(vc, alc) + out.W3 * kx(r3)
     scale = va + vc + abs(out.W2) * rz2 + abs(out.W3) * rz3
     t = tol(bound, abs(fi2) + abs(fi3) + abs(ala) + abs(alc), 1.0)
-    return worst(rel(vb1 - vb2, scale) / t, rel(polar(out.VB, out.ALB) - vb1, scale) / t,
+    return worst(rel(polar(out.VBC, out.ALBC) - out.W3 * kx(r3), scale) / t,
+                 rel(vb1 - vb2, scale) / t, rel(polar(out.VB, out.ALB) - vb1, scale) / t,
                  abs(out.VBA - abs(out.W2) * rz2) / (scale * t),
                  rel(polar(out.VBA, out.ALBA) - out.W2 * kx(r2), scale) / t)
 
@@ -639,7 +646,9 @@ def chk_duskr1(args, out, bound):
     ab2 = polar(ac, bc) + out.E3 * kx(r3) - w3**2 * r3
     scale = aa + ac + w2**2 * rz2 + w3**2 * rz3 + abs(out.E2) * rz2 + abs(out.E3) * rz3
     t = tol(bound, abs(fi2) + abs(fi3) + abs(ba) + abs(bc), 1.0)
-    return worst(rel(ab1 - ab2, scale) / t, rel(polar(out.AB, out.BB) - ab1, scale) / t)
+    return worst(rel(polar(out.ABAT, out.BBAT) - out.E2 * kx(r2), scale) / t,
+                 rel(polar(out.ABCT, out.BBCT) - out.E3 * kx(r3), scale) / t,
+                 rel(ab1 - ab2, scale) / t, rel(polar(out.AB, out.BB) - ab1, scale) / t)
 
 
 def gen_dknma1(rng):
@@ -673,6 +682,22 @@ def chk_dknma1(args, out, bound):
         else math.inf
     v = [abs(np.hypot(*(B - A)) - rz2) / (L * t), abs(np.hypot(*(B - C)) - rz3) / (L * t),
          side_ok]
+    # the link directions, and the relative motions of B about A and about C: velocity
+    # W x r, normal acceleration W^2 r, tangential E x r (r = A->B, C->B)
+    r2, r3 = B - A, B - C
+    s = min(rz2, rz3)
+    v += [angdiff(out.FI2, math.atan2(*r2[::-1])) * s / rz2 / t,
+          angdiff(out.FI3, math.atan2(*r3[::-1])) * s / rz3 / t]
+    Vr = max(abs(out.W2) * rz2, abs(out.W3) * rz3, 1e-300)
+    v += [rel(polar(out.VBA, out.ALBA) - out.W2 * kx(r2), Vr) / t,
+          rel(polar(out.VBC, out.ALBC) - out.W3 * kx(r3), Vr) / t]
+    if an != 1.0:
+        Ar = max(out.W2**2 * rz2 + abs(out.E2) * rz2, out.W3**2 * rz3 + abs(out.E3) * rz3,
+                 1e-300)
+        v += [abs(out.ABAN - out.W2**2 * rz2) / (Ar * t),
+              abs(out.ABCN - out.W3**2 * rz3) / (Ar * t),
+              rel(polar(out.ABAT, out.BBAT) - out.E2 * kx(r2), Ar) / t,
+              rel(polar(out.ABCT, out.BBCT) - out.E3 * kx(r3), Ar) / t]
     V = max(va, vc, out.VB, 1e-300)
     h = 1e-4 * timescale([rz2, rz3], [va, vc])
     v.append(fd_vs(lambda s: (lambda o: None if o is None else
@@ -750,7 +775,8 @@ def chk_dprm2(args, out, bound):
     t = tol(bound, np.abs(np.r_[A, K]).max() + abs(fim) * np.hypot(*(A - K)), L)
     foot = A - so * n
     ahead = (B - foot) @ e(fim)
-    return worst(abs(np.hypot(*(B - A)) - rz2) / (L * t), abs((B - K) @ n - off) / (L * t),
+    return worst(angdiff(out.FI2, math.atan2(*(B - A)[::-1])) * rz2 / (L * t),
+                 abs(np.hypot(*(B - A)) - rz2) / (L * t), abs((B - K) @ n - off) / (L * t),
                  0.0 if ahead >= -t * L * 4 else math.inf)
 
 
@@ -766,7 +792,8 @@ def chk_dskor2(args, out, bound):
     vb2 = polar(vbm, albm) + polar(out.VBBM, out.ALBBM)
     scale = va + vbm + abs(out.W2) * rz2 + out.VBBM
     t = tol(bound, abs(fi2) + abs(fim) + abs(ala) + abs(albm), 1.0)
-    return worst(rel(vb1 - vb2, scale) / t, rel(polar(out.VB, out.ALB) - vb1, scale) / t,
+    return worst(rel(polar(out.VBA, out.ALBA) - out.W2 * kx(r2), scale) / t,
+                 rel(vb1 - vb2, scale) / t, rel(polar(out.VB, out.ALB) - vb1, scale) / t,
                  unit_dir_ok(out.ALBBM, fim) / t if out.VBBM > t * scale else 0.0)
 
 
@@ -783,7 +810,8 @@ def chk_duskr2(args, out, bound):
     ab2 = polar(abm, bvm) + polar(abk, bvk) + polar(out.ABVM, out.BVBM)
     scale = aa + abm + abk + w2**2 * rz2 + abs(out.E2) * rz2 + out.ABVM
     t = tol(bound, abs(fi2) + abs(fim) + abs(ba) + abs(bvm) + abs(bvk), 1.0)
-    return worst(rel(ab1 - ab2, scale) / t, rel(polar(out.AB, out.BB) - ab1, scale) / t,
+    return worst(rel(polar(out.ABAT, out.VBAT) - out.E2 * kx(r2), scale) / t,
+                 rel(ab1 - ab2, scale) / t, rel(polar(out.AB, out.BB) - ab1, scale) / t,
                  unit_dir_ok(out.BVBM, fim) / t if out.ABVM > t * scale else 0.0)
 
 
@@ -822,6 +850,20 @@ def chk_dknma2(args, out, bound):
     v = [abs(np.hypot(*(B - A)) - rz2) / (L * t),
          abs((B - K) @ n - rz3 * math.sin(eta)) / (L * t),
          0.0 if ahead >= -t * L * 4 else math.inf]
+    # B about A: the direction of AB, the relative velocity W2 x r and v_B = v_A + W2 x r;
+    # the normal and tangential accelerations and a_B = a_A - W2^2 r + E2 x r
+    r2 = B - A
+    t2 = tol(bound, np.abs(np.r_[A, K]).max() + abs(fim) * np.hypot(*(A - K)), rz2)
+    Vr = max(abs(out.W2) * rz2, va, 1e-300)
+    v += [angdiff(out.FI2, math.atan2(*r2[::-1])) / t2,
+          rel(polar(out.VBA, out.ALBA) - out.W2 * kx(r2), Vr) / t2,
+          rel(polar(out.VB, out.ALB) - polar(va, ala) - out.W2 * kx(r2), Vr) / t2]
+    if an != 1.0:
+        Ar = max(out.W2**2 * rz2 + abs(out.E2) * rz2 + aa, 1e-300)
+        v += [abs(out.ABAN - out.W2**2 * rz2) / (Ar * t2),
+              rel(polar(out.ABAT, out.BBAT) - out.E2 * kx(r2), Ar) / t2,
+              rel(polar(out.AB, out.BB) - polar(aa, ba) + out.W2**2 * r2
+                  - out.E2 * kx(r2), Ar) / t2]
     h = 1e-4 * timescale([rz2], [va])
     V = max(va, out.VB, 1e-300)
     v.append(fd_vs(lambda s: (lambda o: None if o is None else
@@ -888,7 +930,8 @@ def chk_dskor3(args, out, bound):
     L = np.hypot(*r)
     scale = va + vc + abs(out.W3) * L + out.VA3A
     t = tol(bound, np.abs(np.r_[A, C]).max() / L + abs(fi3) + abs(ala) + abs(alc), 1.0)
-    return worst(rel(va3_1 - va3_2, scale) / t, rel(polar(out.VA3, out.ALA3) - va3_2, scale) / t,
+    return worst(rel(polar(out.VA3C, out.ALA3C) - out.W3 * kx(r), scale) / t,
+                 rel(va3_1 - va3_2, scale) / t, rel(polar(out.VA3, out.ALA3) - va3_2, scale) / t,
                  unit_dir_ok(out.ALA3A, fi3) / t if out.VA3A > t * scale else 0.0)
 
 
@@ -905,7 +948,8 @@ def chk_duskr3(args, out, bound):
     a2 = polar(aa, ba) + polar(aak, bak) + polar(out.AA3AR, out.BA3AR)
     scale = aa + ac + aak + w3**2 * rzac + abs(out.E3) * rzac + out.AA3AR
     t = tol(bound, abs(fi3) + abs(fica) + abs(ba) + abs(bc) + abs(bak), 1.0)
-    return worst(rel(a1 - a2, scale) / t, rel(polar(out.AA3, out.BA3) - a1, scale) / t,
+    return worst(rel(polar(out.AA3CT, out.BA3CT) - out.E3 * kx(r), scale) / t,
+                 rel(a1 - a2, scale) / t, rel(polar(out.AA3, out.BA3) - a1, scale) / t,
                  unit_dir_ok(out.BA3AR, fi3) / t if out.AA3AR > t * scale else 0.0)
 
 
@@ -957,6 +1001,27 @@ def chk_dknma3(args, out, bound):
     # the velocity of A3 (link 3's point at A) = v_C + W3 k x CA
     v.append(rel(polar(out.VA3, out.ALA3) - polar(vc, alc) - out.W3 * kx(A - C),
                  V + W * L) / t)
+    # CB and the axis; A3 relative to C (W3 x CA) and to A (along the axis, v_A3 - v_A)
+    rca = A - C
+    vrel = polar(out.VA3, out.ALA3) - polar(va, ala)
+    v += [abs(out.RZBC - np.hypot(*(B - C))) / (max(L, rz2) * t),
+          abs(math.sin(out.FI3 - math.atan2(*(B - C)[::-1]))) * np.hypot(*(B - C)) /
+          (max(L, rz2) * t),
+          rel(polar(out.VAC, out.ALAC) - out.W3 * kx(rca), V + W * L) / t,
+          rel(polar(out.VAR, out.ALAR) - vrel, V + W * L) / t,
+          abs(cross(polar(out.VAR, out.ALAR), e(out.FI3))) / ((V + W * L) * t)]
+    if an != 1.0:
+        # in link 3's frame: a_A3 = a_C - W3^2 CA + E3 x CA, the Coriolis term 2 W3 x
+        # (v_A3 - v_A), the relative acceleration a_A3 - a_A - Coriolis (along the axis)
+        a3 = polar(ac, bc) - out.W3**2 * rca + out.E3 * kx(rca)
+        cor = 2 * out.W3 * kx(vrel)
+        Ar = aa + ac + (out.W3**2 + abs(out.E3)) * L + 2 * abs(out.W3) * np.hypot(*vrel) + \
+            1e-300
+        v += [abs(out.AACN - out.W3**2 * L) / (Ar * t),
+              rel(polar(out.AACT, out.BACT) - out.E3 * kx(rca), Ar) / t,
+              rel(polar(out.AA3, out.BA3) - a3, Ar) / t,
+              rel(polar(out.AAK, out.BAK) - cor, Ar) / t,
+              rel(polar(out.AAR, out.BAR) - (a3 - polar(aa, ba) - cor), Ar) / t]
     if an != 1.0:
         v.append(fd_vs(lambda s: (lambda o: None if o is None else [o.W3])(
             quiet("DKNMA3", *_dknma3_at(args, s))), h, [out.E3],
@@ -1070,6 +1135,24 @@ def chk_dknma4(args, out, bound):
     t = tol(bound, np.abs(np.r_[A, C]).max(), L)
     v = [abs((B - A) @ kx(e(fim)) - rz2 * math.sin(t2)) / (L * t),
          abs((B - C) @ kx(e(fin)) - rz3 * math.sin(t3)) / (L * t)]
+    # B in the frames of the two turning guides: v_B = W x r + v_rel (v_rel along the
+    # guide), a_B = E x r - W^2 r + 2 W x v_rel + a_rel (a_rel along the guide)
+    rm, rn = B - A, B - C
+    vm, vn, vb = polar(out.VB2R, out.ALB2R), polar(out.VB3R, out.ALB3R), polar(out.VB, out.ALB)
+    Vs = max(out.VB, (abs(wm) + abs(wn)) * L, 1e-300)
+    v += [rel(vb - wm * kx(rm) - vm, Vs) / t, rel(vb - wn * kx(rn) - vn, Vs) / t,
+          abs(cross(vm, e(fim))) / (Vs * t), abs(cross(vn, e(fin))) / (Vs * t)]
+    if an != 1.0:
+        km, kn = 2 * wm * kx(vm), 2 * wn * kx(vn)
+        am, aN = polar(out.AB2R, out.BB2R), polar(out.AB3R, out.BB3R)
+        As = out.AB + (abs(em) + wm**2 + abs(en) + wn**2) * L + \
+            2 * (abs(wm) + abs(wn)) * Vs + 1e-300
+        ab = polar(out.AB, out.BB)
+        v += [rel(polar(out.AB2K, out.BB2K) - km, As) / t,
+              rel(polar(out.AB3K, out.BB3K) - kn, As) / t,
+              rel(ab - (em * kx(rm) - wm**2 * rm + km + am), As) / t,
+              rel(ab - (en * kx(rn) - wn**2 * rn + kn + aN), As) / t,
+              abs(cross(am, e(fim))) / (As * t), abs(cross(aN, e(fin))) / (As * t)]
     h = 1e-4 / max(abs(wm), abs(wn), 1e-300)
     V = max(out.VB, (abs(wm) + abs(wn)) * L)
     v.append(fd_vs(lambda s: (lambda o: None if o is None else
@@ -1600,18 +1683,27 @@ def chk_dgmzpc(args, out, bound):
     y = (aw - a) / m
     dy = xs - y
     eps = 0.0
+    tips = []                          # (DA, ALFAA, SA) of each wheel, tips shortened by dy
     for z, x in ((z1, x1), (z2, x2)):
         d = m * z / math.cos(beta)
-        eps += z * math.tan(math.acos(d * math.cos(at) / (d + 2 * (1 + x - dy) * m)))
+        da = d + 2 * (1 + x - dy) * m
+        aa = math.acos(d * math.cos(at) / da)
+        st = m * (PI / 2 + 2 * x * math.tan(ALPHA)) / math.cos(beta)     # transverse
+        tips.append((da, aa, da * (st / d + inv(at) - inv(aa))))
+        eps += z * math.tan(aa)
     eps = (eps - (z1 + z2) * math.tan(out.ALFAW)) / (2 * PI) + \
         bw * abs(math.sin(beta)) / (PI * m)
+    got = ((out.DA1, out.ALFAA1, out.SA1), (out.DA2, out.ALFAA2, out.SA2))
+    tip_v = [abs(g - w) / (1e-9 * (1 + abs(w))) for gs, ws in zip(got, tips)
+             for g, w in zip(gs, ws)]
     # ALFAW through the involute equation (its root, to roundings of tan), the rest
     # from it; E to 1e-9 (the tip angles' arccos near their base circles)
     return worst(abs(inv(out.ALFAW) - inv_w) / (16 * U * (1 + inv_w) /
                                                 math.cos(out.ALFAW) ** 2),
                  abs(out.A - a) / (1e-13 * a), abs(out.XS - xs) / (1e-13 * (1 + abs(xs))),
                  abs(out.AW - aw) / (1e-12 * a), abs(out.XY - y) / (1e-9 * (1 + abs(y))),
-                 abs(out.XUR - dy) / (1e-9 * (1 + abs(dy))), abs(out.E - eps) / (1e-9 * eps))
+                 abs(out.XUR - dy) / (1e-9 * (1 + abs(dy))), abs(out.E - eps) / (1e-9 * eps),
+                 *tip_v)
 
 
 def gen_dkrkt(rng):
