@@ -331,7 +331,7 @@ contains
       integer, intent(out) :: st
       real(dp), intent(out) :: est
       integer :: pb, pa, pk, l2, l3, lm
-      real(dp) :: u(2), nn(2), wv(2), along, perp, off, len2, cq, root, sl, r2(2), dc
+      real(dp) :: u(2), nn(2), wv(2), along, perp, off, len2, cq, root, sl, r2(2), dc, sq
       real(dp) :: vg(2), ag(2), y1, y2, rel, sb
       type(system2) :: f
       pb = gi(2, k); pa = gi(3, k); pk = gi(4, k); l2 = gi(5, k); l3 = gi(6, k); lm = gi(7, k)
@@ -350,14 +350,23 @@ contains
         end if
         cq = sign(1.0_dp, cq)
       end if
-      root = len2*sqrt((1.0_dp - cq)*(1.0_dp + cq))
+      sq = sqrt((1.0_dp - cq)*(1.0_dp + cq))
+      root = len2*sq
       sl = along + gr(2, k)*root
       x(:, pb) = x(:, pk) + sl*u + off*nn
       r2 = x(:, pb) - x(:, pa)
       call set_link(l2, r2(1)*gr(7, k), r2(2)*gr(7, k))      ! gr(7) = 1/l2
       call set_link(l3, u(1), u(2))
       dc = 4.0_dp*uround*(abs(perp) + abs(off) + len2 + abs(wv(1)) + abs(wv(2)))/len2
-      est = angle_sensitivity(cq, dc)
+      ! numerics' angle_sensitivity(cq, dc) = min(dc/sq, sqrt(2 dc)), its square root sq
+      ! shared with the position's, sqrt(2 dc) taken only when it may be the smaller
+      ! (est**2 < 2 dc (1 - 8u) assures est < the rounded sqrt(2 dc)): the same bits
+      if (sq > 0.0_dp) then
+        est = dc/sq
+        if (.not. est*est < 2.0_dp*dc*(1.0_dp - 8.0_dp*uround)) est = min(dc/sq, sqrt(2.0_dp*dc))
+      else
+        est = sqrt(2.0_dp*dc)
+      end if
       st = st_ok
       if (need < 2) return
       ! v_A + w2 k x r2 = v_G(B) + s' u
