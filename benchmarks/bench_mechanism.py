@@ -11,12 +11,18 @@ Cases (corrected mode, crank at omega = 3 rad/s, phi_k = 2 pi k / N):
    sarkp);
 2. the same six-bar, positions only against full kinematics (both through Mechanism);
 3. the four-bar of bench_kinematics.py (OA 0.1, AB 0.35, CB 0.3, C = (0.4, 0)), full
-   kinematics, Mechanism against fourbar.c (which also forms the book's polar outputs:
-   two more atan2 and hypot per position) and against pylinkage's numba kernel
+   kinematics, Mechanism against fourbar.c (the issue's baseline, which forms the book's
+   polar outputs instead: four more atan2 and two hypot per position, and no crank
+   outputs), against ``fourbar_mech`` of mechanism_loops.c (exactly the Mechanism's twenty
+   numbers per position: A and B's position, velocity, acceleration, the three moving
+   links' cosine, sine, omega, epsilon) and against pylinkage's numba kernel
    ``step_fast_with_kinematics`` when pylinkage and numba are installed;
 4. forces: that four-bar with two masses, gravity and a torque, need="forces", against
    ``fourbar_forces`` of mechanism_loops.c (kinematics, then the reactions by moments about
-   B and Cramer's rule, the balancing moment).
+   B and Cramer's rule, the balancing moment: 9 numbers stored per position) and against
+   ``fourbar_forces_full`` (the same, storing what the Mechanism stores: the twenty
+   numbers of the kinematics, the four pairs' reactions with their couples, M_b, J_red,
+   M_red: 38 numbers).
 
 Every C loop's outputs are checked against the Mechanism's (the maximum difference is
 printed), so the same work is compared.  Times: best of REPEAT runs of at least 50 ms of
@@ -89,6 +95,8 @@ class Loops:
         self.lib.sixbar.argtypes = [ctypes.c_long, ctypes.c_int, arr] + [d] * 9 + [arr] * 6
         self.lib.fourbar.argtypes = [ctypes.c_long, ctypes.c_int, arr] + [d] * 6 + [arr]
         self.lib.fourbar_forces.argtypes = [ctypes.c_long, arr] + [d] * 14 + [arr]
+        self.lib.fourbar_mech.argtypes = [ctypes.c_long, arr] + [d] * 6 + [arr] * 6
+        self.lib.fourbar_forces_full.argtypes = [ctypes.c_long, arr] + [d] * 14 + [arr] * 10
 
     def sixbar(self, phi, level, g):
         n = phi.size
@@ -105,6 +113,26 @@ class Loops:
                                                                   "xc", "yc")), W1, out)
         return out
 
+    def fourbar_mech(self, phi):
+        n = phi.size
+        out = [np.empty((n, 2, 2)), np.empty((n, 2, 2)), np.empty((n, 2, 2)),
+               np.empty((n, 3, 2)), np.empty((n, 3)), np.empty((n, 3))]
+        self.lib.fourbar_mech(n, phi, *(FOURBAR[k] for k in ("roa", "rab", "rcb", "xc",
+                                                             "yc")), W1, *out)
+        return out
+
+    def forces_full(self, phi):
+        n = phi.size
+        out = [np.empty((n, 2, 2)), np.empty((n, 2, 2)), np.empty((n, 2, 2)),
+               np.empty((n, 3, 2)), np.empty((n, 3)), np.empty((n, 3)), np.empty((n, 4, 3)),
+               np.empty(n), np.empty(n), np.empty(n)]
+        L = LOADS
+        self.lib.fourbar_forces_full(n, phi, *(FOURBAR[k] for k in ("roa", "rab", "rcb",
+                                                                    "xc", "yc")), W1,
+                                     L["m2"], L["j2"], L["f2"], L["m3"], L["j3"], L["f3"],
+                                     L["g"], L["t3"], *out)
+        return out
+
     def forces(self, phi):
         out = np.empty((phi.size, 9))
         L = LOADS
@@ -113,6 +141,17 @@ class Loops:
                                 L["m2"], L["j2"], L["f2"], L["m3"], L["j3"], L["f3"],
                                 L["g"], L["t3"], out)
         return out
+
+
+def _max_error(r, out):
+    """The largest difference of a Mechanism's kinematics from a C loop's (positions,
+    velocities, accelerations relative to their largest, directions, omegas, epsilons
+    relative to their largest)."""
+    pos, vel, acc, dr, om, ep = out
+    return max(np.max(np.abs(r.positions - pos)), np.max(np.abs(r.velocities - vel)),
+               np.max(np.abs(r.accelerations - acc)) / np.max(np.abs(acc)),
+               np.max(np.abs(r.directions - dr)), np.max(np.abs(r.omegas - om)),
+               np.max(np.abs(r.epsilons - ep)) / np.max(np.abs(ep)))
 
 
 def sixbar_geometry():
@@ -163,9 +202,7 @@ def main():
         phi = 2 * math.pi * np.arange(n) / n
         r = six.solve(phi, omega=W1, need="accelerations")
         pos, vel, acc, dr, om, ep = loops.sixbar(phi, 3, g)
-        err = max(np.max(np.abs(r.positions - pos)), np.max(np.abs(r.velocities - vel)),
-                  np.max(np.abs(r.accelerations - acc)) / np.max(np.abs(acc)),
-                  np.max(np.abs(r.omegas - om)), np.max(np.abs(r.directions - dr)))
+        err = _max_error(r, (pos, vel, acc, dr, om, ep))
         t = best_of({"mech": lambda: six.solve(phi, omega=W1, need="accelerations"),
                      "c": lambda: loops.sixbar(phi, 3, g),
                      "cgen": lambda: generic.sixbar(phi, 3, g),
@@ -189,8 +226,11 @@ def main():
     out = loops.fourbar(phi)
     err = max(np.max(np.abs(r.position("B") - out[2:4].T)),
               np.max(np.abs(r.omega("A", "B") - out[4])))
+    same = loops.fourbar_mech(phi)
+    err_same = _max_error(r, same)
     fns = {"mech": lambda: four.solve(phi, omega=W1, need="accelerations"),
-           "c": lambda: loops.fourbar(phi)}
+           "c": lambda: loops.fourbar(phi),
+           "csame": lambda: loops.fourbar_mech(phi)}
     pyl = None
     try:
         import numba  # noqa: F401
@@ -205,6 +245,10 @@ def main():
     case = f"four-bar, N = {n}"
     add(case, "C loop (fourbar.c, with polar outputs), full", n, t["c"])
     add(case, "Mechanism.solve, full", n, t["mech"], t["c"], err)
+    add(case, "C loop (mechanism_loops.c fourbar_mech: the Mechanism's outputs)", n,
+        t["csame"])
+    add(case, "Mechanism.solve, full, against that C loop", n, t["mech"], t["csame"],
+        err_same)
     if "pylinkage" in t:
         add(case, "pylinkage step_fast_with_kinematics (numba)", n, t["pylinkage"],
             t["mech"])
@@ -214,11 +258,21 @@ def main():
     out = loops.forces(phi)
     err = max(np.max(np.abs(r.balancing_moment - out[:, 8])) / np.max(np.abs(out[:, 8])),
               np.max(np.abs(r.reaction("B") - out[:, 4:6])) / np.max(np.abs(out[:, 4:6])))
+    full = loops.forces_full(phi)
+    err_full = max(_max_error(r, full[:6]),
+                   np.max(np.abs(r.reactions - full[6])) / np.max(np.abs(full[6])),
+                   *(np.max(np.abs(a - b)) / np.max(np.abs(b)) for a, b in
+                     ((r.balancing_moment, full[7]), (r.reduced_inertia, full[8]),
+                      (r.reduced_moment, full[9]))))
     t = best_of({"mech": lambda: fl.solve(phi, omega=W1, need="forces", gravity=LOADS["g"]),
-                 "c": lambda: loops.forces(phi)})
+                 "c": lambda: loops.forces(phi),
+                 "cfull": lambda: loops.forces_full(phi)})
     case = f"four-bar forces, N = {n}"
-    add(case, "C loop (mechanism_loops.c fourbar_forces)", n, t["c"])
+    add(case, "C loop (mechanism_loops.c fourbar_forces: 9 numbers)", n, t["c"])
     add(case, "Mechanism.solve, need='forces'", n, t["mech"], t["c"], err)
+    add(case, "C loop (fourbar_forces_full: the Mechanism's 38 numbers)", n, t["cfull"])
+    add(case, "Mechanism.solve, need='forces', against that C loop", n, t["mech"],
+        t["cfull"], err_full)
 
     print(f"load average {os.getloadavg()}")
     print("| case | path | time per position | ratio | check |")

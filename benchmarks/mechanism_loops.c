@@ -18,6 +18,16 @@
  *     out[i][0..8] = R_O (x, y), R_A, R_B, R_C (x, y each: O on the crank by the frame, A on
  *     A-B by the crank, B on C-B by A-B, C on C-B by the frame), M_b.
  *
+ * fourbar_mech: the four-bar (crank O-A, RRR group A-B-C, B on the left of A->C) with the
+ *   Mechanism's outputs in its layout, for a like-with-like comparison (fourbar.c forms the
+ *   book's polar outputs instead): points A, B and links crank, A-B, C-B:
+ *     pos[i][2][2], vel[i][2][2], acc[i][2][2], dir[i][3][2] (cos, sin), om[i][3], ep[i][3].
+ * fourbar_forces_full: fourbar_forces' mechanism with what Mechanism.solve(need="forces")
+ *   stores: fourbar_mech's twenty numbers per position, then
+ *     react[i][4][3] (O, A, B, C: fx, fy and the couple, 0 for a revolute), mb[i], and the
+ *     reduced inertia and moment jred[i] = m2 |v_S2|^2 + J2 w2^2 + m3 |v_S3|^2 + J3 w3^2,
+ *     mred[i] = -g (m2 v_S2y + m3 v_S3y) + T3 w3, both per unit crank speed.
+ *
  * Built by bench_mechanism.py: cc -O3 -march=native -shared -fPIC mechanism_loops.c -lm.
  */
 #include <math.h>
@@ -119,6 +129,98 @@ int fourbar_forces(long n, const double *phi, double roa, double rab, double rcb
         o[0] = rax; o[1] = ray;                /* the crank is massless: R_O = R_A */
         o[2] = rax; o[3] = ray; o[4] = rbx; o[5] = rby; o[6] = rcx; o[7] = rcy;
         o[8] = cross(xa, ya, rax, ray);       /* M_b = A x R_A: the crank's balance */
+    }
+    return bad;
+}
+
+int fourbar_mech(long n, const double *phi, double roa, double rab, double rcb, double xc,
+                 double yc, double w1, double *pos, double *vel, double *acc, double *dir,
+                 double *om, double *ep)
+{
+    int bad = 0;
+    const double d2 = rab * rab - rcb * rcb, rab2 = rab * rab;
+    for (long i = 0; i < n; i++) {
+        double s = sin(phi[i]), c = cos(phi[i]);
+        double xa = roa * c, ya = roa * s;
+        double dx = xc - xa, dy = yc - ya, l2 = dx * dx + dy * dy;
+        double k1 = 0.5 * (l2 + d2) / l2, h2 = rab2 / l2 - k1 * k1;
+        if (!(h2 >= 0.0)) { bad = 1; continue; }
+        double k2 = sqrt(h2);
+        double ux = k1 * dx - k2 * dy, uy = k1 * dy + k2 * dx;      /* B - A */
+        double wx = xa + ux - xc, wy = ya + uy - yc;                 /* B - C */
+        double det = uy * wx - ux * wy;
+        double vax = -w1 * ya, vay = w1 * xa;
+        double om2 = (vax * wx + wy * vay) / det, om3 = (uy * vay + vax * ux) / det;
+        double bx = w1 * w1 * xa + om2 * om2 * ux - om3 * om3 * wx,
+               by = w1 * w1 * ya + om2 * om2 * uy - om3 * om3 * wy;
+        double ep2 = -(bx * wx + wy * by) / det, ep3 = -(uy * by + bx * ux) / det;
+        double *p = pos + 4 * i, *v = vel + 4 * i, *a = acc + 4 * i, *dr = dir + 6 * i;
+        p[0] = xa; p[1] = ya; p[2] = xa + ux; p[3] = ya + uy;
+        v[0] = vax; v[1] = vay; v[2] = -om3 * wy; v[3] = om3 * wx;
+        a[0] = -w1 * w1 * xa; a[1] = -w1 * w1 * ya;
+        a[2] = -ep3 * wy - om3 * om3 * wx; a[3] = ep3 * wx - om3 * om3 * wy;
+        dr[0] = c; dr[1] = s; dr[2] = ux / rab; dr[3] = uy / rab; dr[4] = wx / rcb;
+        dr[5] = wy / rcb;
+        om[3 * i] = w1; om[3 * i + 1] = om2; om[3 * i + 2] = om3;
+        ep[3 * i] = 0.0; ep[3 * i + 1] = ep2; ep[3 * i + 2] = ep3;
+    }
+    return bad;
+}
+
+int fourbar_forces_full(long n, const double *phi, double roa, double rab, double rcb,
+                        double xc, double yc, double w1, double m2, double j2, double f2,
+                        double m3, double j3, double f3, double g, double t3, double *pos,
+                        double *vel, double *acc, double *dir, double *om, double *ep,
+                        double *react, double *mb, double *jred, double *mred)
+{
+    int bad = 0;
+    const double d2 = rab * rab - rcb * rcb, rab2 = rab * rab;
+    for (long i = 0; i < n; i++) {
+        double s = sin(phi[i]), c = cos(phi[i]);
+        double xa = roa * c, ya = roa * s;
+        double dx = xc - xa, dy = yc - ya, l2 = dx * dx + dy * dy;
+        double k1 = 0.5 * (l2 + d2) / l2, h2 = rab2 / l2 - k1 * k1;
+        if (!(h2 >= 0.0)) { bad = 1; continue; }
+        double k2 = sqrt(h2);
+        double ux = k1 * dx - k2 * dy, uy = k1 * dy + k2 * dx;      /* B - A */
+        double wx = xa + ux - xc, wy = ya + uy - yc;                 /* B - C */
+        double det = uy * wx - ux * wy;
+        double vax = -w1 * ya, vay = w1 * xa;
+        double om2 = (vax * wx + wy * vay) / det, om3 = (uy * vay + vax * ux) / det;
+        double bx = w1 * w1 * xa + om2 * om2 * ux - om3 * om3 * wx,
+               by = w1 * w1 * ya + om2 * om2 * uy - om3 * om3 * wy;
+        double ep2 = -(bx * wx + wy * by) / det, ep3 = -(uy * by + bx * ux) / det;
+        double *p = pos + 4 * i, *v = vel + 4 * i, *a = acc + 4 * i, *dr = dir + 6 * i;
+        p[0] = xa; p[1] = ya; p[2] = xa + ux; p[3] = ya + uy;
+        v[0] = vax; v[1] = vay; v[2] = -om3 * wy; v[3] = om3 * wx;
+        a[0] = -w1 * w1 * xa; a[1] = -w1 * w1 * ya;
+        a[2] = -ep3 * wy - om3 * om3 * wx; a[3] = ep3 * wx - om3 * om3 * wy;
+        dr[0] = c; dr[1] = s; dr[2] = ux / rab; dr[3] = uy / rab; dr[4] = wx / rcb;
+        dr[5] = wy / rcb;
+        om[3 * i] = w1; om[3 * i + 1] = om2; om[3 * i + 2] = om3;
+        ep[3 * i] = 0.0; ep[3 * i + 1] = ep2; ep[3 * i + 2] = ep3;
+        /* the centres' velocities and accelerations, the loads and the reactions as in
+           fourbar_forces */
+        double v2x = vax - f2 * om2 * uy, v2y = vay + f2 * om2 * ux;
+        double v3x = -f3 * om3 * wy, v3y = f3 * om3 * wx;
+        double a2x = -w1 * w1 * xa + f2 * (-ep2 * uy - om2 * om2 * ux),
+               a2y = -w1 * w1 * ya + f2 * (ep2 * ux - om2 * om2 * uy);
+        double a3x = f3 * (-ep3 * wy - om3 * om3 * wx), a3y = f3 * (ep3 * wx - om3 * om3 * wy);
+        double F2x = -m2 * a2x, F2y = -m2 * (a2y + g), F3x = -m3 * a3x, F3y = -m3 * (a3y + g);
+        double M2 = cross((f2 - 1.0) * ux, (f2 - 1.0) * uy, F2x, F2y) - j2 * ep2;
+        double M3 = cross((f3 - 1.0) * wx, (f3 - 1.0) * wy, F3x, F3y) - j3 * ep3 + t3;
+        double p1 = cross(-ux, -uy, F2x, F2y) - M2, p2 = -cross(-wx, -wy, F3x, F3y) + M3;
+        double dd = uy * (-wx) - (-ux) * wy;
+        double rbx = (p1 * (-wx) - (-ux) * p2) / dd, rby = (uy * p2 - wy * p1) / dd;
+        double rax = rbx - F2x, ray = rby - F2y, rcx = -rbx - F3x, rcy = -rby - F3y;
+        double *r = react + 12 * i;
+        r[0] = rax; r[1] = ray; r[2] = 0.0; r[3] = rax; r[4] = ray; r[5] = 0.0;
+        r[6] = rbx; r[7] = rby; r[8] = 0.0; r[9] = rcx; r[10] = rcy; r[11] = 0.0;
+        mb[i] = cross(xa, ya, rax, ray);
+        double q2 = 1.0 / (w1 * w1);
+        jred[i] = (m2 * (v2x * v2x + v2y * v2y) + j2 * om2 * om2 + m3 * (v3x * v3x + v3y * v3y)
+                   + j3 * om3 * om3) * q2;
+        mred[i] = (-g * (m2 * v2y + m3 * v3y) + t3 * om3) / w1;
     }
     return bad;
 }

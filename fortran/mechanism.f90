@@ -39,7 +39,7 @@
 ! M_red = sum (F . v' + M w') over the external loads (no inertia).
 module mechanism
   use prmtr, only: dp, st_ok, st_assembly, st_singular, st_range, st_digits, norm2d
-  use numerics, only: uround, system2, cramer_set, cramer, solve2e, tri_apex, apex_vectors, &
+  use numerics, only: uround, system2, bound2, solve2e, tri_apex, apex_vectors, &
                       unscale, angle_sensitivity, policy, failed
   implicit none
   private
@@ -80,8 +80,9 @@ contains
     real(dp), allocatable :: x(:, :), v(:, :), a(:, :), c(:), s(:), w(:), e(:)
     real(dp), allocatable :: fl(:, :), ml(:), aa(:, :), ee(:)
     integer, allocatable :: gslot(:)
-    integer :: i, k, kind, st, worst, jf, jt, fg, g
-    real(dp) :: est, maxest, wi, ei
+    integer :: i, k, kind, st, worst, jf, jt, fg, g, p, l
+    real(dp) :: est, maxest, wi, ei, w2, px, py
+    logical :: masses
 
     allocate(x(2, np), v(2, np), a(2, np), c(0:nl), s(0:nl), w(0:nl), e(0:nl))
     allocate(fl(2, 0:nl), ml(0:nl), aa(2, np), ee(0:nl))
@@ -97,6 +98,8 @@ contains
         g = g + 1
       end if
     end do
+    ! no masses (the caller's one neutral entry of zero mass and inertia): J_red = 0
+    masses = any(mval /= 0.0_dp)
     wi = 0.0_dp
     do i = 1, n
       worst = st_ok
@@ -124,45 +127,67 @@ contains
         fgroup(i) = fg
         cycle
       end if
+      ! the outputs: the moving points and links only (the caller knows the frame's), one
+      ! scalar statement a number (cheaper than the little array sections); a position
+      ! found out of range here is overwritten with NaN by the caller
       do k = 1, nop
-        if (.not. (abs(x(1, outp(k))) <= huge(1.0_dp) .and. &
-                   abs(x(2, outp(k))) <= huge(1.0_dp))) then
+        p = outp(k)
+        px = x(1, p)
+        py = x(2, p)
+        pos(1, k, i) = px
+        pos(2, k, i) = py
+        if (.not. (abs(px) <= huge(px) .and. abs(py) <= huge(py))) then
           worst = st_range
           fg = 0
         end if
       end do
-      status(i) = worst
-      fgroup(i) = fg
-      if (worst == st_range) cycle
-      ! the outputs: the moving points and links only (the caller knows the frame's)
-      do k = 1, nop
-        pos(:, k, i) = x(:, outp(k))
-      end do
+      ! status and fgroup come in zeroed (solve): a position that is fine is not written,
+      ! which spares the kernel clearing their pages
+      if (worst /= st_ok .or. fg /= 0) then
+        status(i) = worst
+        fgroup(i) = fg
+        if (worst == st_range) cycle
+      end if
       do k = 1, nol
-        th(1, k, i) = c(outl(k))
-        th(2, k, i) = s(outl(k))
+        l = outl(k)
+        th(1, k, i) = c(l)
+        th(2, k, i) = s(l)
       end do
       if (need >= 2) then
         wi = omega(1 + (i - 1)*inc_w)
         do k = 1, nop
-          vel(:, k, i) = v(:, outp(k))*wi
+          p = outp(k)
+          vel(1, k, i) = v(1, p)*wi
+          vel(2, k, i) = v(2, p)*wi
         end do
         do k = 1, nol
           om(k, i) = w(outl(k))*wi
         end do
-        jred(i) = reduced_inertia()
+        jred(i) = 0.0_dp
+        if (masses) jred(i) = reduced_inertia()
       end if
       if (need >= 3) then
         ei = epsil(1 + (i - 1)*inc_e)
+        w2 = wi*wi
         if (need >= 4) then
-          aa = a*(wi*wi) + v*ei
-          ee = e*(wi*wi) + w*ei
+          ! every point's and link's acceleration, for the inertia loads (explicit loops:
+          ! the whole-array form cost gfortran a temporary)
+          do p = 1, np
+            aa(1, p) = a(1, p)*w2 + v(1, p)*ei
+            aa(2, p) = a(2, p)*w2 + v(2, p)*ei
+          end do
+          do l = 0, nl
+            ee(l) = e(l)*w2 + w(l)*ei
+          end do
         end if
         do k = 1, nop
-          acc(:, k, i) = a(:, outp(k))*(wi*wi) + v(:, outp(k))*ei
+          p = outp(k)
+          acc(1, k, i) = a(1, p)*w2 + v(1, p)*ei
+          acc(2, k, i) = a(2, p)*w2 + v(2, p)*ei
         end do
         do k = 1, nol
-          ep(k, i) = e(outl(k))*(wi*wi) + w(outl(k))*ei
+          l = outl(k)
+          ep(k, i) = e(l)*w2 + w(l)*ei
         end do
       end if
       if (need >= 4) call forces(i)
@@ -306,7 +331,7 @@ contains
       integer, intent(out) :: st
       real(dp), intent(out) :: est
       integer :: pb, pa, pk, l2, l3, lm
-      real(dp) :: u(2), nn(2), wv(2), along, perp, off, len2, cq, root, sl, r2(2), dc
+      real(dp) :: u(2), nn(2), wv(2), along, perp, off, len2, cq, root, sl, r2(2), dc, sq
       real(dp) :: vg(2), ag(2), y1, y2, rel, sb
       type(system2) :: f
       pb = gi(2, k); pa = gi(3, k); pk = gi(4, k); l2 = gi(5, k); l3 = gi(6, k); lm = gi(7, k)
@@ -325,14 +350,23 @@ contains
         end if
         cq = sign(1.0_dp, cq)
       end if
-      root = len2*sqrt((1.0_dp - cq)*(1.0_dp + cq))
+      sq = sqrt((1.0_dp - cq)*(1.0_dp + cq))
+      root = len2*sq
       sl = along + gr(2, k)*root
       x(:, pb) = x(:, pk) + sl*u + off*nn
       r2 = x(:, pb) - x(:, pa)
       call set_link(l2, r2(1)*gr(7, k), r2(2)*gr(7, k))      ! gr(7) = 1/l2
       call set_link(l3, u(1), u(2))
       dc = 4.0_dp*uround*(abs(perp) + abs(off) + len2 + abs(wv(1)) + abs(wv(2)))/len2
-      est = angle_sensitivity(cq, dc)
+      ! numerics' angle_sensitivity(cq, dc) = min(dc/sq, sqrt(2 dc)), its square root sq
+      ! shared with the position's, sqrt(2 dc) taken only when it may be the smaller
+      ! (est**2 < 2 dc (1 - 8u) assures est < the rounded sqrt(2 dc)): the same bits
+      if (sq > 0.0_dp) then
+        est = dc/sq
+        if (.not. est*est < 2.0_dp*dc*(1.0_dp - 8.0_dp*uround)) est = min(dc/sq, sqrt(2.0_dp*dc))
+      else
+        est = sqrt(2.0_dp*dc)
+      end if
       st = st_ok
       if (need < 2) return
       ! v_A + w2 k x r2 = v_G(B) + s' u
@@ -789,5 +823,47 @@ contains
 
   end subroutine mech_solve
 
+  ! A 2x2 system by Cramer's rule (forward stable for n = 2), for the whole-mechanism
+  ! solver's velocities and accelerations, with solve2f's error bound (bound2), so that
+  ! the dead-centre policy is the same: cramer_set once per matrix, cramer each
+  ! right-hand side.  det A = 0: st_singular.  (Here, beside their one caller, so
+  ! that the compiler inlines them.)
+  pure subroutine cramer_set(a11, a12, a21, a22, f)
+    real(dp), intent(in) :: a11, a12, a21, a22
+    type(system2), intent(out) :: f
+    f%lu(1, 1) = a11
+    f%lu(2, 1) = a21
+    f%lu(1, 2) = a12
+    f%lu(2, 2) = a22
+    f%na = sqrt(a11**2 + a12**2 + a21**2 + a22**2)
+    f%det = a11*a22 - a12*a21
+    f%nadet = 0.0_dp
+    f%r = 0.0_dp
+    if (f%det /= 0.0_dp) then
+      f%r(1) = 1.0_dp/f%det
+      f%nadet = f%na*abs(f%r(1))
+    end if
+    f%st = st_ok
+    if (f%det == 0.0_dp .or. .not. f%nadet <= huge(1.0_dp)) f%st = st_singular
+  end subroutine cramer_set
+
+  pure subroutine cramer(f, b1, b2, da, db, sb, y1, y2, st, rel)
+    type(system2), intent(in) :: f
+    real(dp), intent(in) :: b1, b2, da, db, sb
+    real(dp), intent(out) :: y1, y2, rel
+    integer, intent(out) :: st
+    y1 = 0.0_dp; y2 = 0.0_dp
+    rel = huge(1.0_dp)
+    st = f%st
+    if (st /= st_ok) return
+    y1 = (b1*f%lu(2, 2) - f%lu(1, 2)*b2)*f%r(1)     ! r(1) = 1/det (cramer_set)
+    y2 = (f%lu(1, 1)*b2 - f%lu(2, 1)*b1)*f%r(1)
+    if (.not. (abs(y1) <= huge(y1) .and. abs(y2) <= huge(y2))) then
+      y1 = 0.0_dp; y2 = 0.0_dp
+      st = st_range
+      return
+    end if
+    rel = bound2(f%na, f%nadet, y1, y2, da, db, sb)
+  end subroutine cramer
 
 end module mechanism

@@ -22,7 +22,6 @@ module numerics
   end type system2
   public :: uround, system2
   public :: solve2e, factor2, solve2f, solve_kind5, policy, settle, failed, bound2
-  public :: cramer_set, cramer
   public :: wrap_pi, angle_sensitivity, tri_angles, tri_apex, apex_vectors, unscale
   public :: acc_dir, turn, components, quarter
 
@@ -109,48 +108,6 @@ contains
       bound2 = nadet*((2.0_dp*da + 4.0_dp*uround*na)*ny + db)/den
     end if
   end function bound2
-
-  ! A 2x2 system by Cramer's rule (forward stable for n = 2), for the whole-mechanism
-  ! solver's velocities and accelerations, with solve2f's error bound (bound2), so that
-  ! the dead-centre policy is the same: cramer_set once per matrix, cramer each
-  ! right-hand side.  det A = 0: st_singular.
-  pure subroutine cramer_set(a11, a12, a21, a22, f)
-    real(dp), intent(in) :: a11, a12, a21, a22
-    type(system2), intent(out) :: f
-    f%lu(1, 1) = a11
-    f%lu(2, 1) = a21
-    f%lu(1, 2) = a12
-    f%lu(2, 2) = a22
-    f%na = sqrt(a11**2 + a12**2 + a21**2 + a22**2)
-    f%det = a11*a22 - a12*a21
-    f%nadet = 0.0_dp
-    f%r = 0.0_dp
-    if (f%det /= 0.0_dp) then
-      f%r(1) = 1.0_dp/f%det
-      f%nadet = f%na*abs(f%r(1))
-    end if
-    f%st = st_ok
-    if (f%det == 0.0_dp .or. .not. f%nadet <= huge(1.0_dp)) f%st = st_singular
-  end subroutine cramer_set
-
-  pure subroutine cramer(f, b1, b2, da, db, sb, y1, y2, st, rel)
-    type(system2), intent(in) :: f
-    real(dp), intent(in) :: b1, b2, da, db, sb
-    real(dp), intent(out) :: y1, y2, rel
-    integer, intent(out) :: st
-    y1 = 0.0_dp; y2 = 0.0_dp
-    rel = huge(1.0_dp)
-    st = f%st
-    if (st /= st_ok) return
-    y1 = (b1*f%lu(2, 2) - f%lu(1, 2)*b2)*f%r(1)     ! r(1) = 1/det (cramer_set)
-    y2 = (f%lu(1, 1)*b2 - f%lu(2, 1)*b1)*f%r(1)
-    if (.not. (abs(y1) <= huge(y1) .and. abs(y2) <= huge(y2))) then
-      y1 = 0.0_dp; y2 = 0.0_dp
-      st = st_range
-      return
-    end if
-    rel = bound2(f%na, f%nadet, y1, y2, da, db, sb)
-  end subroutine cramer
 
   ! The kind-5 system  y1*e(FIM + T2) - y2*e(FIM) = b  written in the frame of the guide
   ! (b1, b2 = components of b along e(FIM), e(FIM + pi/2)):  y1*cos(T2) - y2 = b1,
