@@ -459,6 +459,11 @@ def test_plot_and_animate(tmp_path):
     r = sixbar().solve(np.linspace(0, 2 * math.pi, 8), need="positions")
     fig = r.plot(paths=("E",))
     assert fig is not None
+    # on a given Axes: drawn there, and that Axes' figure comes back
+    import matplotlib.pyplot as plt
+    own, ax = plt.subplots()
+    assert r.plot(ax=ax) is own and ax.lines
+    plt.close("all")
     pytest.importorskip("PIL")
     out = r.animate(tmp_path / "six.gif", fps=4)
     from PIL import Image

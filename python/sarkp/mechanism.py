@@ -892,8 +892,10 @@ class _MechanismBase(Result):
         n = int(np.size(self.phi))
         if every is None:
             every = max(1, n // 12)
-        return plot.mechanism(pts, links, fixed=fixed, highlight=position, every=every,
-                              paths=paths, title=title)
+        # frame points that carry a link are pivots; a guide's frame point is not
+        pivots = [f for f in fixed if any(f in link for link in links)]
+        return plot.mechanism(pts, links, fixed=pivots, highlight=position, every=every,
+                              paths=paths, title=title, ax=ax)
 
     def animate(self, path, *, fps=20, every=1, paths=()):
         """An animation over the sweep written to ``path`` (.gif through Pillow, .mp4
