@@ -9,7 +9,7 @@ from fractions import Fraction
 import mpmath as mp
 import numpy as np
 import pytest
-from hypothesis import assume, given, settings
+from hypothesis import assume, example, given, settings
 from hypothesis import strategies as st
 
 import sarkp
@@ -826,6 +826,7 @@ def test_aaa_zero_prints_the_books_report(capsys, routine, args, label):
 @SETTINGS
 @given(st.sampled_from([2.0, 3.0, 4.0, 5.0]), st.integers(9, 40), st.integers(9, 80),
        st.floats(-0.3, 1.5))
+@example(2.0, 39, 9, -0.3)     # x2 = XS - x1 rounded 6e-17 below X2P (found by Hypothesis)
 def test_dkrkt_refusal_names_a_split_that_fits(m, z1, z2, y):
     """At AW = a + y m: when DKRKT's own split is refused, the split it proposes has the
     same x1 + x2, keeps both gears within X1P..X1Z (6.15), (6.19), and DGMZPC puts it at

@@ -337,10 +337,12 @@ def dkrkt_splits(M, Z1, Z2, AW):
     head = ("The book's split (6.14): " + "; ".join(why) + ". ") if why else ""
     if low <= high:
         x1 = min(max(x1b, low), high)
-        reason = (f"{head}The split x1 = {x1:.4f}, x2 = {xs - x1:.4f} (any x1 from "
+        # xs - x1 at a bound of x1 can round past the x2 limit that set it: clamp
+        x2 = min(max(xs - x1, lim["X2P"]), lim["X2Z"])
+        reason = (f"{head}The split x1 = {x1:.4f}, x2 = {x2:.4f} (any x1 from "
                   f"{low:.4f} to {high:.4f} with x2 = {xs:.4f} - x1) fits AW without "
                   f"undercut or pointed teeth")
-        return Splits(xs, x1b, x2b, low, high, x1, xs - x1, reason)
+        return Splits(xs, x1b, x2b, low, high, x1, x2, reason)
     reason = (f"{head}No split of x1 + x2 = {xs:.4f} keeps both gears between undercut and "
               f"pointed teeth (x1 would need {lim['X1P']:.4f}..{lim['X1Z']:.4f} and x2 "
               f"{lim['X2P']:.4f}..{lim['X2Z']:.4f}): change AW or the tooth numbers")
