@@ -37,6 +37,7 @@ python -m pip install -q numpy meson meson-python ninja fortranformat matplotlib
   mypy \
   pylinkage \
   dask \
+  numpydoc \
   >&2
 echo "building and installing sarkp" >&2
 python -m pip install -q --no-build-isolation "$here" >&2
