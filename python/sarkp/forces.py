@@ -36,10 +36,7 @@ from __future__ import annotations
 import numpy as np
 
 from . import _wrap_forces as _w
-from .errors import Status
-from .library import as_real_array, describe
-
-SINGULAR, SIGNIFICANCE = int(Status.SINGULAR), int(Status.SIGNIFICANCE)
+from .library import ST_SIGNIFICANCE, ST_SINGULAR, as_real_array, describe
 
 __all__ = ["DNMAF1", "DNMAF2", "DNMAF3", "DNMAF4", "DNMAF5",
            "DNMA1", "DNMA2", "DNMA3", "DNMA4", "DNMA5", "DUGL6", "balancing_moment"]
@@ -86,7 +83,7 @@ _MODES = """    Corrected and as-printed modes differ only by PI (3.14159 as pri
 
 DNMAF1 = describe(
     _w.DNMAF1, listing="VII.2", lines="L5055-5087",
-    messages={SIGNIFICANCE: _NEAR, SINGULAR: "A, B and C are collinear (the dyad is stretched or folded) or two of "
+    messages={ST_SIGNIFICANCE: _NEAR, ST_SINGULAR: "A, B and C are collinear (the dyad is stretched or folded) or two of "
                  "them coincide: the reactions have no finite value"},
     doc=f"""Reactions in a group of the first kind (RRR), projection method.
 
@@ -114,7 +111,7 @@ DNMAF1 = describe(
 
 DNMAF2 = describe(
     _w.DNMAF2, listing="VII.1", lines="L4988-5020",
-    messages={SIGNIFICANCE: _NEAR, SINGULAR: "AB is perpendicular to the guide, or A = B: the reactions have no "
+    messages={ST_SIGNIFICANCE: _NEAR, ST_SINGULAR: "AB is perpendicular to the guide, or A = B: the reactions have no "
                  "finite value"},
     doc=f"""Reactions in a group of the second kind (RRP), projection method.
 
@@ -144,7 +141,7 @@ DNMAF2 = describe(
 
 DNMAF3 = describe(
     _w.DNMAF3, listing="VII.4", lines="L5179-5210",
-    messages={SIGNIFICANCE: _NEAR, SINGULAR: "CA is perpendicular to the guide of link 3, or A = C: the reactions have "
+    messages={ST_SIGNIFICANCE: _NEAR, ST_SINGULAR: "CA is perpendicular to the guide of link 3, or A = C: the reactions have "
                  "no finite value"},
     doc=f"""Reactions in a group of the third kind (RPR), projection method.
 
@@ -170,7 +167,7 @@ DNMAF3 = describe(
 
 DNMAF4 = describe(
     _w.DNMAF4, listing="VII.3", lines="L5116-5149",
-    messages={SIGNIFICANCE: _NEAR, SINGULAR: "the guides FIM and FIN are parallel: the reactions have no finite "
+    messages={ST_SIGNIFICANCE: _NEAR, ST_SINGULAR: "the guides FIM and FIN are parallel: the reactions have no finite "
                  "value"},
     doc=f"""Reactions in a group of the fourth kind (PRP), projection method.
 
@@ -200,7 +197,7 @@ DNMAF4 = describe(
 
 DNMAF5 = describe(
     _w.DNMAF5, listing="VII.5", lines="L5233-5268",
-    messages={SIGNIFICANCE: _NEAR, SINGULAR: "the inner guide is parallel to the outer one (TT3 = 0 or pi): the "
+    messages={ST_SIGNIFICANCE: _NEAR, ST_SINGULAR: "the inner guide is parallel to the outer one (TT3 = 0 or pi): the "
                  "reactions have no finite value"},
     doc=f"""Reactions in a group of the fifth kind (RPP), projection method.
 
@@ -227,7 +224,7 @@ DNMAF5 = describe(
 
 DNMA1 = describe(
     _w.DNMA1, listing="VII.6", lines="L5272-5318",
-    messages={SIGNIFICANCE: _NEAR, SINGULAR: "links 2 and 3 are aligned (FI2 parallel to FI3): the reactions have no "
+    messages={ST_SIGNIFICANCE: _NEAR, ST_SINGULAR: "links 2 and 3 are aligned (FI2 parallel to FI3): the reactions have no "
                  "finite value"},
     doc=f"""Reactions in a group of the first kind (RRR), vector method.
 
@@ -257,7 +254,7 @@ DNMA1 = describe(
 
 DNMA2 = describe(
     _w.DNMA2, listing="VII.7", lines="L5320-5368",
-    messages={SIGNIFICANCE: _NEAR, SINGULAR: "AB is perpendicular to the guide: the reactions have no finite value"},
+    messages={ST_SIGNIFICANCE: _NEAR, ST_SINGULAR: "AB is perpendicular to the guide: the reactions have no finite value"},
     doc=f"""Reactions in a group of the second kind (RRP), vector method.
 
     Sense: the vector family (DNMA1-DNMA5) returns the reactions ON the group's links
@@ -281,7 +278,7 @@ DNMA2 = describe(
 
 DNMA3 = describe(
     _w.DNMA3, listing="VII.8", lines="L5372-5413",
-    messages={SIGNIFICANCE: _NEAR, SINGULAR: "AC is perpendicular to the guide of link 3: the reactions have no finite "
+    messages={ST_SIGNIFICANCE: _NEAR, ST_SINGULAR: "AC is perpendicular to the guide of link 3: the reactions have no finite "
                  "value"},
     doc=f"""Reactions in a group of the third kind (RPR), vector method.
 
@@ -310,7 +307,7 @@ DNMA3 = describe(
 
 DNMA4 = describe(
     _w.DNMA4, listing="VII.9", lines="L5415-5460",
-    messages={SIGNIFICANCE: _NEAR, SINGULAR: "the guides FIM and FIN are parallel: the reactions have no finite "
+    messages={ST_SIGNIFICANCE: _NEAR, ST_SINGULAR: "the guides FIM and FIN are parallel: the reactions have no finite "
                  "value"},
     doc=f"""Reactions in a group of the fourth kind (PRP), vector method.
 
@@ -337,7 +334,7 @@ DNMA4 = describe(
 
 DNMA5 = describe(
     _w.DNMA5, listing="VII.10", lines="L5464-5513",
-    messages={SIGNIFICANCE: _NEAR, SINGULAR: "the inner guide is parallel to the outer one (ETA3 = 0 or pi): the "
+    messages={ST_SIGNIFICANCE: _NEAR, ST_SINGULAR: "the inner guide is parallel to the outer one (ETA3 = 0 or pi): the "
                  "reactions have no finite value"},
     doc=f"""Reactions in a group of the fifth kind (RPP), vector method.
 
