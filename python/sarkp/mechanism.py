@@ -297,6 +297,34 @@ class Mechanism:
                     (L2, L3),
                     [(K, L2, lm, "P"), (C, L3, L2, "P"), (C, L3, self._owner[C], "R")])
 
+    # Where each kind keeps its branch among its reals (rrr, rrp, rpr); the seam between
+    # the description and code that follows a motion through toggles (issue 26).
+    _BRANCH_SLOT = {1: 2, 2: 1, 3: 1}
+
+    def branch(self, B):
+        """The branch (+1 or -1) of the group that places joint ``B``; None for a group
+        kind with one position (prp, rpp)."""
+        for kind, _, reals, name in self._steps:
+            if name == B and 1 <= kind <= 5:
+                slot = self._BRANCH_SLOT.get(kind)
+                return None if slot is None else int(reals[slot])
+        raise ValueError(f"branch({B!r}): no group places joint {B!r}")
+
+    def set_branch(self, B, branch):
+        """Set the branch (+1 or -1) of the group that places joint ``B``."""
+        who = f"set_branch({B!r})"
+        q = _branch(who, branch)
+        for kind, _, reals, name in self._steps:
+            if name == B and 1 <= kind <= 5:
+                slot = self._BRANCH_SLOT.get(kind)
+                if slot is None:
+                    raise ValueError(f"{who}: a {('prp', 'rpp')[kind - 4]} group has one "
+                                     f"position, no branch")
+                reals[slot] = q
+                self._cache = None
+                return
+        raise ValueError(f"{who}: no group places joint {B!r}")
+
     def _link(self, who, spec):
         """The link named by two joints on it (or one joint: a slider block)."""
         if isinstance(spec, str):
