@@ -960,6 +960,35 @@ class _MechanismBase(Result):
         plt.close(fig)
         return path
 
+    # -- what every course asks of a linkage (sarkp.linkage; issue 27) ------------------
+    def extremes(self, point=None, *, link=None, along=None):
+        """The extreme positions of a point (its coordinate along ``along``: an angle,
+        rad, or a vector; default the principal axis of its path, for a slider the
+        guide) or of a link (``link=(P, Q)``: its angle, rad), located between the grid
+        points: a :class:`sarkp.linkage.Extremes` (``low``, ``high``, the crank angles
+        ``phi_low``, ``phi_high``, ``stroke = high - low``, for a point its (x, y) there)."""
+        from . import linkage
+        return linkage.result_extremes(self, point, link, along)
+
+    def stroke(self, point=None, *, link=None, along=None):
+        """The stroke of a point or slider (m), or a rocker's swing (``link=``, rad):
+        ``extremes(...).stroke``."""
+        return self.extremes(point, link=link, along=along).stroke
+
+    def time_ratio(self, point=None, *, link=None, along=None):
+        """The time ratio K >= 1 (coefficient of the change of the mean velocity) of a
+        point's or a link's strokes over a full turn of the crank: the crank angle of the
+        slower stroke over that of the faster one (:func:`sarkp.linkage.time_ratio`)."""
+        from . import linkage
+        return linkage.result_time_ratio(self, point, link, along)
+
+    def transmission_angle(self, joint):
+        """The transmission angle (rad) at the new joint of a rrr or rrp group over the
+        sweep, with its worst acute value and where: a
+        :class:`sarkp.linkage.Transmission` (:func:`sarkp.linkage.transmission_angle`)."""
+        from . import linkage
+        return linkage.transmission_angle(self, joint)
+
 
 MechanismResult = result_type(
     "MechanismResult",
