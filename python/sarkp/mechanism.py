@@ -925,40 +925,15 @@ class _MechanismBase(Result):
         return plot.mechanism(pts, links, fixed=pivots, highlight=position, every=every,
                               paths=paths, title=title, ax=ax)
 
-    def animate(self, path, *, fps=20, every=1, paths=()):
+    def animate(self, path, *, fps=20, every=1, paths=(), title=""):
         """An animation over the sweep written to ``path`` (.gif through Pillow, .mp4
-        through ffmpeg: matplotlib's writers)."""
-        import matplotlib.pyplot as plt
-        from matplotlib import animation
-        if not str(path).endswith(".gif") and not animation.FFMpegWriter.isAvailable():
-            raise RuntimeError(f"animate: writing {str(path)!r} needs ffmpeg (matplotlib's "
-                               f"FFMpegWriter), which is not installed (Debian: apt-get "
-                               f"install ffmpeg); a .gif path needs only Pillow")
+        through ffmpeg: matplotlib's writers), each frame drawn as :meth:`plot` draws
+        (the joints' names, the title, the frame pivots): sarkp.plot.animate."""
+        from . import plot
         pts, links, fixed = self._drawing()
-        xs = np.concatenate([np.ravel(x) for x, _ in pts.values()])
-        ys = np.concatenate([np.ravel(y) for _, y in pts.values()])
-        fig, ax = plt.subplots(figsize=(6, 5))
-        pad = 0.05 * max(np.nanmax(xs) - np.nanmin(xs), np.nanmax(ys) - np.nanmin(ys), 1e-9)
-        ax.set_xlim(np.nanmin(xs) - pad, np.nanmax(xs) + pad)
-        ax.set_ylim(np.nanmin(ys) - pad, np.nanmax(ys) + pad)
-        ax.set_aspect("equal")
-        lines = [ax.plot([], [], "o-", lw=2)[0] for _ in links]
-        for name in paths:
-            ax.plot(np.ravel(pts[name][0]), np.ravel(pts[name][1]), "-", alpha=0.4)
-        frames = range(0, int(np.size(self.phi)), max(1, every))
-
-        def draw(k):
-            for line, link in zip(lines, links):
-                line.set_data([np.ravel(pts[q][0])[k] for q in link],
-                              [np.ravel(pts[q][1])[k] for q in link])
-            return lines
-        anim = animation.FuncAnimation(fig, draw, frames=frames, blit=True)
-        path = str(path)
-        writer = animation.PillowWriter(fps=fps) if path.endswith(".gif") else \
-            animation.FFMpegWriter(fps=fps)
-        anim.save(path, writer=writer)
-        plt.close(fig)
-        return path
+        pivots = [f for f in fixed if any(f in link for link in links)]
+        return plot.animate(pts, links, path, fixed=pivots, paths=paths, title=title,
+                            fps=fps, every=every)
 
     # -- what every course asks of a linkage (sarkp.linkage; issue 27) ------------------
     def extremes(self, point=None, *, link=None, along=None):
