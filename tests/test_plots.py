@@ -467,6 +467,17 @@ def test_program_x_hodographs_are_drawn_from_a_dense_sweep(pictures, name):
     gaps = np.flatnonzero(~ok)
     jumps = [line for line in ax.lines if line.get_linestyle() == ":"]
     assert len(jumps) == len(gaps)
+    # F43's two pieces between the jumps are each under a fifth of the drawing: each is
+    # drawn again enlarged in an inset, with its positions numbered there (not in the main)
+    pieces = len(gaps) if abs(x[ok][-1] - x[ok][0]) < 1e-9 * scale else len(gaps) + 1
+    insets = ax.child_axes
+    if name == "43":
+        assert pieces == 2 and len(insets) == 2
+        inset_numbers = [{t.get_text() for t in inset.texts} - {""} for inset in insets]
+        assert set().union(*inset_numbers) == {str(k) for k in range(1, 37)}
+        assert not {t.get_text() for t in ax.texts} & set().union(*inset_numbers)
+    else:
+        assert insets == [] or all(c.get_xlabel().startswith("enlarged") for c in insets)
 
 
 def test_vii10_two_panels_keep_their_labels_apart():

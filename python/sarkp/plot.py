@@ -983,19 +983,81 @@ def reaction_hodograph(F, G, *, sweep=None, label=None, mark_every=None, title="
             label="arrows: order of the positions")
     labels = [_label(ax, "O", (0.0, 0.0))]
     same = np.hypot(x - x[0], y - y[0]) < 1e-9 * max(np.max(F), 1e-300)
-    for k in range(0, F.size, every):
-        if k > 0 and same[k]:
-            continue                  # the last position closes the turn on the first
-        labels.append(_label(ax, str(numbers[k]), (x[k], y[k]), color="C0", fontsize=7,
-                             optional=k > 0))
+    shown = [k for k in range(0, F.size, every) if not (k > 0 and same[k])]
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel("reaction, x component, N")
     ax.set_ylabel("reaction, y component, N")
     ax.grid(True, lw=0.3)
     _legend(ax)
     _title(figure, [ax], title)
+    zoomed = _zoom(figure, ax, cx, cy, jumps, x, y, shown, numbers, labels) \
+        if sweep is not None and getattr(figure, "_sarkp_own", False) else set()
+    for k in shown:
+        if k not in zoomed:         # the last position closes the turn on the first
+            labels.append(_label(ax, str(numbers[k]), (x[k], y[k]), color="C0", fontsize=7,
+                                 optional=k > 0))
     _place_labels(figure, labels)
     return figure
+
+
+# the insets' corners (axes fractions; their tick labels stay inside the Axes) and size
+_INSETS = tuple((fx, fy, w, h) for w, h in ((0.32, 0.30), (0.32, 0.20))
+                for fy in (0.64, 0.40, 0.14) for fx in (0.14, 0.40, 0.64))
+
+
+def _zoom(figure, ax, cx, cy, jumps, x, y, shown, numbers, labels):
+    """Where the dense curve falls into pieces between its jumps, each too small to read
+    (under a fifth of the drawing), each piece is drawn again enlarged in an inset at a
+    free corner of the Axes (no line there), with its positions numbered there; returns
+    the positions numbered in the insets (``labels`` gets their labels)."""
+    n = cx.size
+    bounds = [0, *(jumps + 1), n]
+    pieces = [np.arange(a, b) for a, b in zip(bounds[:-1], bounds[1:]) if b > a]
+    span = max(np.ptp(np.append(cx, 0.0)), np.ptp(np.append(cy, 0.0)), 1e-300)
+    if len(pieces) > 1 and math.hypot(cx[-1] - cx[0], cy[-1] - cy[0]) < 1e-9 * span:
+        pieces = [np.concatenate([pieces[-1], pieces[0]])] + pieces[1:-1]  # the turn closes
+    size = lambda p: max(np.ptp(cx[p]), np.ptp(cy[p]))
+    if len(pieces) < 2 or len(pieces) > 4 or max(map(size, pieces)) > 0.2 * span:
+        return set()
+    figure.draw_without_rendering()
+    renderer = _renderer(figure)
+    from matplotlib.transforms import Bbox
+    ink = _ink(ax, renderer)
+    free = []
+    for fx, fy, w, h in _INSETS:
+        # the inset with its tick labels and its label: 0.12 more to the left and below
+        bbox = Bbox(ax.transAxes.transform([(fx - 0.12, fy - 0.12), (fx + w, fy + h)]))
+        if _covered(bbox.padded(2), ink) == 0:
+            free.append(((fx, fy, w, h), bbox))
+    # each position's piece: the piece of the dense point where it lies
+    at = [int(np.argmin(np.hypot(cx - x[k], cy - y[k]))) for k in range(len(x))]
+    done = set()
+    for j, piece in enumerate(pieces):
+        if not free:
+            break
+        centre = ax.transData.transform([(np.mean(cx[piece]), np.mean(cy[piece]))])[0]
+        rect, bbox = min(free, key=lambda f: math.hypot(
+            (f[1].x0 + f[1].x1) / 2 - centre[0], (f[1].y0 + f[1].y1) / 2 - centre[1]))
+        free = [f for f in free if not f[1].overlaps(bbox)]
+        order = {int(i): j for j, i in enumerate(piece)}
+        members = sorted((k for k in shown if at[k] in order), key=lambda k: order[at[k]])
+        if not members:
+            continue
+        inset = ax.inset_axes(rect)
+        inset.plot(cx[piece], cy[piece], "-", color="C0", lw=1.2)
+        inset.plot(x[members], y[members], ".", color="C0", ms=4)
+        inset.set_aspect("equal", adjustable="datalim")
+        inset.margins(0.25)
+        inset.tick_params(labelsize=6)
+        inset.grid(True, lw=0.3)
+        inset.set_xlabel(f"enlarged: positions {numbers[members[0]]} to "
+                         f"{numbers[members[-1]]}, N", fontsize=7)
+        ax.indicate_inset_zoom(inset, edgecolor="0.5", alpha=0.6)
+        for k in members:
+            labels.append(_label(inset, str(numbers[k]), (x[k], y[k]), color="C0",
+                                 fontsize=7, optional=k > 0))
+        done.update(members)
+    return done
 
 
 def speed_diagram(phi, WPR, WPRM=None, *, W1=None, title="", caveat=None, positions=None,
