@@ -110,7 +110,7 @@ contains
   ! the left of the directed line A -> C; P = +1 the mirror branch (only the sign of P is
   ! used).  FI2 = direction A->B, FI3 = direction C->B, both DUGOL'd: in [0, 2*pi) for P = +1,
   ! up to 3*pi for P = -1, as printed (Fig. 91 prints FICB = 3.14..3.84).
-  ! ERRATA: none in the code.  Cosine-law ARCOS replaced by tri_angles (same angles).
+  ! ERRATA: E-DPRM1-1 (corrected mode): the cosine-law ARCOS replaced by the apex of tri_apex.
   subroutine dprm1(xa, ya, xc, yc, rz2, rz3, p, aaa, fi2, fi3, xb, yb, ier)
     !: XA, YA : real -- Centre of the external revolute A (link 2), m.
     !: XC, YC : real -- Centre of the external revolute C (link 3), m.

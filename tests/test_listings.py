@@ -338,10 +338,10 @@ def test_every_test_an_errata_row_cites_exists():
 
 @pytest.mark.parametrize("name", ["DPRM1", "DSKOR1"])
 def test_diff_shows_every_statement_of_sarkps_routine(name):
-    """``sarkp listing NAME --diff`` is faithful to sarkp's routine: every executable
-    statement of the Fortran 90 source appears on its side, statements joined by ``;``
-    one by one and one-line IFs as written (no empty IF blocks)."""
-    source = L.listing(name, modern=True)
+    """``sarkp listing NAME --diff`` is faithful to sarkp's routine as corrected mode runs
+    it: every executable statement of that view appears on its side, statements joined by
+    ``;`` one by one and one-line IFs as written (no empty IF blocks)."""
+    source = L.listing(name, corrected=True)
     statements, pending = [], ""
     for line in source.splitlines()[1:]:
         code = re.sub(r"!.*$", "", line).strip()
@@ -365,3 +365,110 @@ def test_diff_shows_every_statement_of_sarkps_routine(name):
                 or s.lower().startswith(("subroutine", "end subroutine"))), s
     for a, b in zip(added, added[1:]):
         assert not (a.lower().endswith("then") and b.lower() == "end if"), (a, b)
+
+
+def _modern_names():
+    return [i.name for i in L.listings() if i.kind != "program"
+            and re.search(rf"subroutine\s+{i.name}\b|function\s+{i.name}\b",
+                          "".join(p.read_text() for p in FORTRAN), re.I)]
+
+
+FORTRAN = sorted((Path(__file__).resolve().parents[1] / "fortran").glob("*.f90"))
+
+
+def _side_columns(text):
+    """The left and right cells of ``--diff side``'s rows (hunk and note lines aside)."""
+    left, right = [], []
+    for line in text.splitlines():
+        if len(line) > 2 and line[0] in " !~" and line[1] == " " and line[66:68] == " |":
+            left.append(line[2:66].rstrip())          # two columns of 64 characters
+            right.append(line[69:].rstrip())
+    return left, right
+
+
+@pytest.mark.parametrize("name", _modern_names())
+def test_diff_errata_lines_agree_with_the_hunks(name):
+    """The ids the first lines list are every id a hunk is labelled with (DPRM1 said
+    "ERRATA ids the routine cites: none" and then labelled a hunk E-DPRM1-1)."""
+    for style in ("side", "unified"):
+        text = L.listing(name, diff=style)
+        head = next(line for line in text.splitlines() if line.startswith("ERRATA"))
+        listed = set(L.errata_ids_of(head))
+        labels = {i for line in text.splitlines() if line.startswith("@@")
+                  for i in L.errata_ids_of(line)}
+        assert labels <= listed, (name, head, labels - listed)
+        if not listed:
+            assert "none" in head
+
+
+@pytest.mark.parametrize("name", ["DPRM1", "DUSKR1", "DKNMA1", "DGMZPC", "DSNTZ3"])
+def test_diff_side_cuts_no_statement(name):
+    """Every statement of both sides is shown whole (wrapped, never cut at 64
+    characters), and no line of the output is wider than the two columns."""
+    text = L.listing(name, diff="side")
+    left, right = _side_columns(text)
+    shown = (L._normal("".join(left)), L._normal("".join(right)))
+    book = L._statements(L._book_statements(L.listing(name)))
+    modern = L._statements(L._modern_statements(L.listing(name, corrected=True)))
+    for side, statements in zip(shown, (book, modern)):
+        for s in statements:
+            assert L._normal(s) in side, s
+    assert max(len(line) for line in text.splitlines()
+               if not line.startswith(("@@", "ERRATA", name))) <= 2 + 2 * 64 + 3
+
+
+def _if_depth_ok(text):
+    depth = 0
+    for line in text.splitlines():
+        code = re.sub(r"!.*$", "", line).strip().lower()
+        if re.match(r"(\w+\s*:\s*)?if\s*\(.*\)\s*then$", code):
+            depth += 1
+        elif re.match(r"end\s*if\b", code):
+            depth -= 1
+            if depth < 0:
+                return False
+    return depth == 0
+
+
+@pytest.mark.parametrize("name", _modern_names())
+def test_corrected_view_leaves_out_the_as_printed_branches(name):
+    """``listing(NAME, corrected=True)``: the routine as corrected mode runs it, without
+    its as-printed branches; every line of it is a line of the whole routine, its IF
+    blocks balanced."""
+    whole = L.listing(name, modern=True)
+    clean = L.listing(name, corrected=True)
+    assert "printed_mode" not in re.sub(r"!.*", "", clean)
+    assert _if_depth_ok(clean), clean
+    body = {line.strip() for line in whole.splitlines()}
+    for line in clean.splitlines()[1:]:
+        s = line.strip()
+        # a line not in the routine is an IF whose condition lost its printed_mode term
+        assert s in body or s.lower().startswith(("if (", "else if (")), s
+
+
+def test_corrected_view_of_dprm1():
+    clean = L.listing("DPRM1", corrected=True)
+    code = [re.sub(r"!.*", "", x).strip() for x in clean.splitlines()]
+    assert "call apex_vectors(xc - xa, yc - ya, rzac, pa, h, pc, -q, r2x, r2y, r3x, r3y)" \
+        in code
+    assert "rzac = norm2d(xc - xa, yc - ya)" in code
+    # the as-printed branch (the book's DVKT and angles) is gone, its else kept
+    assert not any(c.startswith(("call dvkt", "ugbac =")) for c in code)
+    assert code.count("else") == 1                   # the IF on rz2 == rz3 only
+    assert "as-printed branches left out" in clean.splitlines()[0]
+    # the diff is against this view: the book's cosine law against the apex
+    left, right = _side_columns(L.listing("DPRM1", diff="side"))
+    assert any(x.startswith("call apex_vectors") for x in right)
+    assert not any("dvkt" in x for x in right) and any("DVKT" in x for x in left)
+    r = run_cli("listing", "DPRM1", "--corrected")
+    assert r.returncode == 0 and r.stdout.rstrip("\n") == clean.rstrip("\n")
+
+
+def test_dprm1_header_cites_its_erratum_and_names_tri_apex():
+    """The Fortran header of DPRM1 cites E-DPRM1-1 and the routine it calls (tri_apex,
+    as the ERRATA row says), not tri_angles."""
+    whole = L.listing("DPRM1", modern=True)
+    header = whole.split("subroutine dprm1")[0]
+    assert "E-DPRM1-1" in L.errata_ids_of(header)
+    assert "tri_apex" in header and "tri_angles" not in header
+    assert "tri_apex" in L.errata("E-DPRM1-1")

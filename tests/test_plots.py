@@ -301,7 +301,8 @@ def test_printout_as_printed_pictures_corrected_by_default(tmp_path, capsys):
 # ---- sarkp.plot as a matplotlib user expects it ------------------------------------------------
 
 def test_public_names():
-    assert set(plot.__all__) == {"mechanism", "diagrams", "cam_profile", "cam_diagrams",
+    assert set(plot.__all__) == {"mechanism", "animate", "diagrams", "cam_profile",
+                                 "cam_diagrams",
                                  "reaction_hodograph", "speed_diagram", "gear_mesh",
                                  "internal_mesh", "save",
                                  "mode_title", "FORMATS"}
@@ -378,9 +379,227 @@ def test_save_writes_the_format_asked(tmp_path, fmt):
     (lambda: plot.mechanism({"O": (0.0, 0.0), "A": ([0.0, 1.0], [0.0])}, [("O", "A")]),
      ValueError, "points\\['A'\\]"),
     (lambda: plot.mechanism({"O": (0.0, 0.0)}, [("O", "B")]), ValueError, "'B' is not"),
-    (lambda: plot.cam_profile([1.0], [1.0], [0.0], follower="roller"), ValueError,
+    (lambda: plot.cam_profile([1.0], [1.0], [0.0], follower="spring"), ValueError,
      "follower"),
+    (lambda: plot.cam_profile([1.0], [1.0], [0.0], follower="roller"), ValueError,
+     "roller_radius must be a number > 0"),
+    (lambda: plot.cam_profile([1.0], [1.0], [0.0], roller_radius=0.1), ValueError,
+     "for follower='roller'"),
 ])
 def test_bad_input_names_the_argument(draw, error, message):
     with pytest.raises(error, match=message):
         draw()
+
+
+# ---- issue 27: hodographs from a dense sweep, labels clear, bands, animation, rollers ---------
+
+def _label_problems(figure):
+    """The labels sarkp placed (joint names, position numbers) that are hidden or cover
+    a drawn line (the lines' vertices and points every 2 pixels along their segments,
+    in the renderer's pixels), computed here independently of sarkp.plot's own check."""
+    figure.draw_without_rendering()
+    renderer = figure.canvas.get_renderer()
+    problems = []
+    for label in getattr(figure, "_sarkp_labels", []):
+        if not label.get_visible():
+            problems.append(f"label {label.get_text()!r} hidden")
+            continue
+        box = label.get_window_extent(renderer)
+        for line in label.axes.get_lines():
+            if not line.get_visible() or line.get_linestyle() in ("None", "", " "):
+                continue
+            xy = np.column_stack([line.get_xdata(), line.get_ydata()]).astype(float)
+            d = line.get_transform().transform(xy)
+            d = d[np.all(np.isfinite(d), axis=1)]
+            if len(d) > 1:
+                t = np.linspace(0.0, 1.0, 8)[:, None, None]
+                d = (d[:-1] + t * (d[1:] - d[:-1])).reshape(-1, 2)
+            inside = ((d[:, 0] > box.x0 + 1) & (d[:, 0] < box.x1 - 1)
+                      & (d[:, 1] > box.y0 + 1) & (d[:, 1] < box.y1 - 1))
+            if inside.any():
+                problems.append(f"label {label.get_text()!r} covers {line.get_label()!r}")
+    return problems
+
+
+def test_sarkp_plot_is_an_attribute_and_matplotlib_stays_optional():
+    code = ("import sys, sarkp; assert 'matplotlib' not in sys.modules; "
+            "f = sarkp.plot.mechanism; assert 'matplotlib' not in sys.modules; "
+            "print(f.__module__, 'plot' in dir(sarkp))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True,
+                         cwd=tempfile.gettempdir())
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.split() == ["sarkp.plot", "True"]
+
+
+@pytest.mark.parametrize("name", ["21", "23", "30", "43"])
+def test_program_x_hodographs_are_drawn_from_a_dense_sweep(pictures, name):
+    """The curve passes through the 37 positions with DENSE - 1 points between each two
+    (the forces stage run over the dense sweep); the 37 positions are marked; every
+    position number 1-36 is shown (37 closes the turn on 1), clear of every text and of
+    the drawn lines; a jump (FS switching) is dotted, not part of the curve."""
+    from sarkp.book import prog_x, x_plots
+    figure = pictures["X", "corrected"][f"x_hodograph_{name}"]
+    ax = figure.axes[0]
+    curve = ax.lines[0]
+    x, y = np.asarray(curve.get_xdata()), np.asarray(curve.get_ydata())
+    ok = np.isfinite(x)
+    with sarkp.mode("corrected"):
+        f = prog_x.run(["forces"])["forces"]
+    px, py = f["F" + name] * np.cos(f["G" + name]), f["F" + name] * np.sin(f["G" + name])
+    assert ok.sum() == 36 * x_plots.DENSE + 1
+    scale = np.max(f["F" + name])
+    assert np.allclose(x[ok][::x_plots.DENSE], px, atol=1e-9 * scale)
+    assert np.allclose(y[ok][::x_plots.DENSE], py, atol=1e-9 * scale)
+    # between two positions the dense points are the forces at the crank angles between
+    with sarkp.mode("corrected"):
+        kin = prog_x.kinematics(prog_x.run(["synthesis"])["synthesis"],
+                                [f["FI1"][3] + 0.5 * (f["FI1"][4] - f["FI1"][3])])
+        mid = prog_x.forces(prog_x.run(["synthesis"])["synthesis"], kin)
+    k = 3 * x_plots.DENSE + x_plots.DENSE // 2
+    assert x[ok][k] == pytest.approx(float(mid["F" + name][0] * np.cos(mid["G" + name][0])),
+                                     abs=1e-9 * scale)
+    marks = [line for line in ax.lines if line.get_marker() == "."]
+    assert len(marks) == 1 and len(marks[0].get_xdata()) == 37
+    numbers = {t.get_text() for t in _texts(figure)}
+    assert {str(k) for k in range(1, 37)} <= numbers
+    assert sheet_problems(figure) == []
+    assert _label_problems(figure) == []
+    gaps = np.flatnonzero(~ok)
+    jumps = [line for line in ax.lines if line.get_linestyle() == ":"]
+    assert len(jumps) == len(gaps)
+    # F43's two pieces between the jumps are each under a fifth of the drawing: each is
+    # drawn again enlarged in an inset, with its positions numbered there (not in the main)
+    pieces = len(gaps) if abs(x[ok][-1] - x[ok][0]) < 1e-9 * scale else len(gaps) + 1
+    insets = ax.child_axes
+    if name == "43":
+        assert pieces == 2 and len(insets) == 2
+        inset_numbers = [{t.get_text() for t in inset.texts} - {""} for inset in insets]
+        assert set().union(*inset_numbers) == {str(k) for k in range(1, 37)}
+        assert not {t.get_text() for t in ax.texts} & set().union(*inset_numbers)
+    else:
+        assert insets == [] or all(c.get_xlabel().startswith("enlarged") for c in insets)
+
+
+def test_vii10_two_panels_keep_their_labels_apart():
+    """The docs' two hodographs side by side (ax= of our own): labels of both panels
+    placed together after the second panel is drawn, none hidden, none on a text or a
+    line (the right panel's numbers sat on each other and on the curve)."""
+    from matplotlib.figure import Figure
+    from sarkp.book import prog_vii_10
+    t = prog_vii_10.compute()
+    pair = Figure(figsize=(11, 6.5), layout="constrained")
+    left, right = pair.subplots(1, 2)
+    plot.reaction_hodograph(t["F21"], t["G21"], label="F21", ax=left, title="F21")
+    plot.reaction_hodograph(t["F81"], t["G81"], label="F81", ax=right, title="F81")
+    assert sheet_problems(pair) == []
+    assert len(pair._sarkp_labels) == 2 * (1 + 24)
+    assert _label_problems(pair) == []
+
+
+@pytest.mark.parametrize("name", ["x_gear_mesh", "x_internal_mesh"])
+def test_mesh_pictures_have_no_empty_band(pictures, name):
+    """The drawing starts right under the title and the caption right under the legend
+    (an equal-aspect drawing left a band of an inch and more under the title)."""
+    figure = pictures["X", "corrected"][name]
+    figure.draw_without_rendering()
+    renderer = figure.canvas.get_renderer()
+    ax = figure.axes[0]
+    title = figure._suptitle.get_window_extent(renderer)
+    drawing = ax.get_tightbbox(renderer)
+    legend = ax.get_legend().get_window_extent(renderer)
+    caption = figure._supxlabel.get_window_extent(renderer)
+    inch = figure.dpi
+    assert (title.y0 - drawing.y1) / inch < 0.3
+    assert (legend.y0 - caption.y1) / inch < 0.3
+    assert sheet_problems(figure) == []
+
+
+def _four_bar(n=37):
+    m = sarkp.Mechanism()
+    m.fixed("O", 0.0, 0.0)
+    m.fixed("C", 0.32, 0.0)
+    m.crank("A", "O", 0.1)
+    m.rrr("B", "A", "C", 0.35, 0.3)
+    return m.solve(np.linspace(0.0, 2 * np.pi, n), need="positions")
+
+
+def test_animation_frames_are_drawn_as_the_plot():
+    """Each frame has r.plot()'s joint names (at the joints of that frame), its title and
+    its frame pivots, and is a drawing sheet (no overlapping texts, labels clear)."""
+    r = _four_bar()
+    still = r.plot(title="a four-bar")
+    pts, links, fixed = r._drawing()
+    pivots = [f for f in fixed if any(f in link for link in links)]
+    figure, update, frames = plot._animation(pts, links, fixed=pivots, title="a four-bar")
+    assert list(frames) == list(range(37))
+    hatched = lambda fig: sum(1 for p in fig.axes[0].patches if p.get_hatch())
+    for k in (0, 9, 20, 31):
+        update(k)
+        assert _title(figure) == _title(still)
+        assert hatched(figure) == hatched(still) == 2
+        names = {t.get_text(): t for t in _texts(figure)}
+        for joint in ("O", "A", "B", "C"):
+            assert np.allclose(names[joint].xy, r.position(joint)[k]), (joint, k)
+        assert sheet_problems(figure) == [], k
+        assert _label_problems(figure) == [], k
+
+
+def test_animate_writes_a_gif_of_its_frames(tmp_path):
+    from PIL import Image
+    r = _four_bar(25)
+    path = r.animate(tmp_path / "a.gif", every=8, title="four-bar")
+    with Image.open(path) as gif:
+        assert gif.format == "GIF" and gif.n_frames == 4          # positions 0, 8, 16, 24
+
+
+def _roller_cam(n):
+    from sarkp import cams
+    law = cams.motion_law("cycloidal", 0.02, np.radians(120), np.radians(60),
+                          np.radians(120), W=10.0, N=n)
+    return law, cams.roller_translating(n, 0.05, 0.0, 10.0, law.FI, law.A, law.V, law.S,
+                                        0.01)
+
+
+def test_cam_profile_draws_a_roller_follower():
+    """The pitch curve, the working profile (sarkp.cams.roller_translating's XW, YW), the
+    rollers along the pitch curve and the follower's roller at the highest lift, tangent
+    to the working profile there."""
+    from matplotlib.patches import Circle
+    law, p = _roller_cam(181)
+    figure = plot.cam_profile(p.XA, p.YA, law.FI, follower="roller", roller_radius=0.01,
+                              working=(p.XW, p.YW))
+    ax = figure.axes[0]
+    k = int(np.argmax(np.hypot(p.XA, p.YA)))
+    c, s = np.cos(law.FI[k]), np.sin(law.FI[k])
+    turn = lambda x, y: (c * x - s * y, s * x + c * y)
+    by_label = {line.get_label(): line for line in ax.lines}
+    working = next(v for n, v in by_label.items() if n.startswith("working profile"))
+    pitch = by_label["pitch curve (the roller's centre)"]
+    assert np.allclose(working.get_xdata(), turn(p.XW, p.YW)[0], atol=1e-15)
+    assert np.allclose(pitch.get_ydata(), turn(p.XA, p.YA)[1], atol=1e-15)
+    rollers = [q for q in ax.patches if isinstance(q, Circle)]
+    assert len(rollers) > 20 and all(q.get_radius() == 0.01 for q in rollers)
+    follower = next(q for q in rollers if q.get_edgecolor()[:3] != (0.6, 0.6, 0.6))
+    centre = np.array(follower.center)
+    assert np.allclose(centre, turn(p.XA[k], p.YA[k]), atol=1e-15)
+    contact = next(t for t in _texts(figure) if t.get_text() == "contact point")
+    assert np.linalg.norm(np.array(contact.xy) - centre) == pytest.approx(0.01, rel=1e-12)
+    assert sheet_problems(figure) == [] and _label_problems(figure) == []
+
+
+def test_cam_profile_roller_default_working_profile():
+    """Without ``working=``, the envelope comes from sarkp.cams' offset of the pitch curve
+    with the tangent by second-order differences: it converges on roller_translating's
+    exact one as h**2 (four times closer for half the step)."""
+    errors = []
+    for n in (181, 361):
+        law, p = _roller_cam(n)
+        figure = plot.cam_profile(p.XA, p.YA, law.FI, follower="roller", roller_radius=0.01)
+        k = int(np.argmax(np.hypot(p.XA, p.YA)))
+        c, s = np.cos(law.FI[k]), np.sin(law.FI[k])
+        line = next(v for v in figure.axes[0].lines
+                    if v.get_label().startswith("working profile"))
+        x = c * p.XW - s * p.YW
+        errors.append(np.max(np.abs(line.get_xdata() - x)))
+    assert errors[1] < errors[0] / 3.0
+    assert errors[1] < 1e-3 * 0.01                      # a thousandth of the roller

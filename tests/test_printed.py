@@ -319,3 +319,47 @@ def test_printed_dkrkt_differs_by_its_errata_only():
         aw = 0.5 * m * (z1 + z2) * rng.uniform(1.0, 1.2)
         assert np.isnan(P.DKRKT(**{**x, "AW": aw}).ALFAW)
     assert n >= 50 and seen == {"E-DKRKT-2", "E-DKRKT-3"}, (n, seen)
+
+
+def test_printed_is_an_attribute_of_sarkp():
+    """``import sarkp; sarkp.printed.DPRM1`` as the README writes it (a fresh interpreter:
+    this module's own ``import sarkp.printed`` would hide a missing attribute)."""
+    import subprocess
+    import sys
+    code = ("import sarkp; r = sarkp.printed.DPRM1(0.0, 0.0, 1.0, 0.0, 0.7, 0.6, 1.0); "
+            "print(repr(r.XB), 'printed' in dir(sarkp))")
+    out = subprocess.run([sys.executable, "-c", code], capture_output=True, text=True)
+    assert out.returncode == 0, out.stderr
+    assert out.stdout.split() == [repr(P.DPRM1(0.0, 0.0, 1.0, 0.0, 0.7, 0.6, 1.0).XB),
+                                  "True"]
+
+
+def test_printed_broadcasts_arrays_like_the_corrected_routines():
+    """An array argument gives arrays of the broadcast shape, each element the printed
+    code's scalar call (never one scalar for the whole array, as before issue 27)."""
+    xa = np.array([0.1, 0.2])
+    r = P.DPRM1(xa, 0, 0.4, 0, 0.35, 0.3, 1)
+    assert np.shape(r.FI2) == (2,) and np.shape(r.XB) == (2,)
+    for k, x in enumerate(xa):
+        one = P.DPRM1(float(x), 0, 0.4, 0, 0.35, 0.3, 1)
+        assert [np.asarray(v)[k] for v in r] == list(one)
+    # the same shape as sarkp's corrected routine, which broadcasts the same way
+    grid = P.DPRM1(np.array([[0.0], [0.05]]), 0.0, 0.4, np.array([0.0, 0.01, 0.02]),
+                   0.35, 0.3, 1)
+    ref = sarkp.DPRM1(np.array([[0.0], [0.05]]), 0.0, 0.4, np.array([0.0, 0.01, 0.02]),
+                      0.35, 0.3, 1)
+    for name in ref._fields if hasattr(ref, "_fields") else ():
+        if name in type(grid)._fields and np.ndim(getattr(ref, name)):
+            assert np.shape(getattr(grid, name)) == np.shape(getattr(ref, name)) == (2, 3)
+    assert np.allclose(grid.XB, ref.XB, rtol=1e-5, atol=1e-6)
+    # a FUNCTION gives an array too
+    assert np.shape(P.DUGOL(np.array([-1.0, 0.5, 7.0]))) == (3,)
+    assert P.DUGOL(np.array([-1.0]))[0] == P.DUGOL(-1.0)
+
+
+def test_printed_refuses_arrays_where_it_cannot_broadcast():
+    """A routine with tables counted by an argument takes one call at a time: an array
+    for one of its numbers is refused by name, not truncated."""
+    y = np.linspace(0.0, 1.0, 7) ** 2
+    with pytest.raises(ValueError, match="H"):
+        P.DINTGR(7, np.array([0.5, 0.25]), 2, y)

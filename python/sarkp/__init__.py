@@ -21,6 +21,22 @@ from .mechanism import Mechanism, MechanismResult   # a whole mechanism (issue 1
 
 __version__ = "0.1.0"
 
+#: Submodules imported on first use, as attributes (``sarkp.printed.DPRM1``, ``sarkp.plot``):
+#: the printed code connects Fortran units when imported, plot needs matplotlib only when
+#: it draws, and linkage is plain NumPy.
+_LAZY = ("printed", "plot", "linkage")
+
+
+def __getattr__(name):
+    if name in _LAZY:
+        import importlib
+        return importlib.import_module(f".{name}", __name__)
+    raise AttributeError(f"module 'sarkp' has no attribute {name!r}")
+
+
+def __dir__():
+    return sorted(set(globals()) | set(_LAZY))
+
 __all__ = [
     "SarkpError", "AssemblyError", "SingularError", "RequirementError", "RangeError",
     "SignificanceWarning", "Status", "MODES", "set_mode", "get_mode", "mode", "as_printed",

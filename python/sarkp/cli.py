@@ -16,7 +16,10 @@
                                           arithmetic, differing with its cause shown or
                                           not; status 0 when every difference has an
                                           ERRATA id)
-    sarkp listing [NAME] [--modern|--diff [side]]   the book's code; sarkp's routine; both
+    sarkp listing [NAME] [--modern|--corrected|--diff [side]]
+                                          the book's code; sarkp's routine; that routine
+                                          without its as-printed branches; the book's
+                                          against it
     sarkp errata ID|NAME                  a row of docs/ERRATA.md, or every row of a routine
     sarkp book run PROGRAM --printed      the program compiled as printed (says why not)
 
@@ -248,8 +251,12 @@ def _main(argv=None) -> int:
     listing.add_argument("name", nargs="?", help="e.g. DPRM1 or IV.1; none lists them all")
     shown = listing.add_mutually_exclusive_group()
     shown.add_argument("--modern", action="store_true", help="sarkp's Fortran 90 routine")
+    shown.add_argument("--corrected", action="store_true",
+                       help="sarkp's Fortran 90 routine as corrected mode runs it: the "
+                            "as-printed branches left out")
     shown.add_argument("--diff", nargs="?", const="unified", choices=("unified", "side"),
-                       help="book against sarkp, each deviation with its ERRATA ids")
+                       help="book against sarkp's corrected routine, each deviation with "
+                            "its ERRATA ids (side: two columns, long statements wrapped)")
     errata = sub.add_parser("errata", help="rows of docs/ERRATA.md")
     errata.add_argument("key", help="an id (E-DUSKR1-1) or a routine (DUSKR1)")
     args = parser.parse_args(argv)
@@ -261,7 +268,8 @@ def _main(argv=None) -> int:
             elif args.name is None:
                 text = listings.table()
             else:
-                text = listings.listing(args.name, modern=args.modern, diff=args.diff)
+                text = listings.listing(args.name, modern=args.modern, diff=args.diff,
+                                        corrected=args.corrected)
         except ValueError as exc:
             raise UsageError(str(exc)) from None
         print(text.rstrip("\n"))

@@ -14,6 +14,7 @@ import csv
 import difflib
 import io
 import re
+import textwrap
 from dataclasses import dataclass
 from functools import lru_cache
 from importlib import resources
@@ -186,6 +187,126 @@ def _modern(item: Listing) -> str:
     raise ValueError(f"{item.name} has no Fortran 90 routine in this build of sarkp")
 
 
+# --- the corrected routine: the as-printed branches left out -----------------------------
+
+def _split_if(code: str):
+    """(indent, condition, rest) of a statement ``if (condition) rest``, else None."""
+    m = re.match(r"^(\s*)if\s*\(", code, re.I)
+    if not m:
+        return None
+    depth, start = 0, m.end() - 1
+    for k in range(start, len(code)):
+        depth += {"(": 1, ")": -1}.get(code[k], 0)
+        if depth == 0:
+            return m.group(1), code[start + 1:k].strip(), code[k + 1:].strip()
+    return None
+
+
+def _simplify(condition: str) -> str:
+    """The condition in corrected mode: printed_mode = 0."""
+    c = re.sub(r"printed_mode\s*/=\s*0", ".false.", condition, flags=re.I)
+    c = re.sub(r"printed_mode\s*==\s*0", ".true.", c, flags=re.I)
+    before = None
+    while before != c:
+        before = c
+        c = re.sub(r"\.true\.\s*\.and\.\s*|\s*\.and\.\s*\.true\.", "", c, flags=re.I)
+        c = re.sub(r"\.false\.\s*\.or\.\s*|\s*\.or\.\s*\.false\.", "", c, flags=re.I)
+        c = re.sub(r"\(\s*(\.true\.|\.false\.)\s*\)", r"\1", c, flags=re.I)
+        c = c.replace(".not. .true.", ".false.").replace(".not. .false.", ".true.")
+    return c.strip()
+
+
+def _dedent(lines: list[str], by: int) -> list[str]:
+    return [x[min(by, len(x) - len(x.lstrip(" "))):] for x in lines]
+
+
+def _comment(line: str) -> str:
+    at = line.find("!")
+    return line[at:] if at >= 0 else ""
+
+
+def _strip_printed(lines: list[str]) -> tuple[list[str], int]:
+    """The lines with every IF on printed_mode settled for corrected mode (its kept
+    branch dedented, its dropped branches gone) and the number of IFs settled."""
+    out, count, i = [], 0, 0
+    while i < len(lines):
+        line = lines[i]
+        code = re.sub(r"!.*$", "", line).rstrip()
+        parts = _split_if(code) if "printed_mode" in code.lower() else None
+        if parts is None:
+            out.append(line)
+            i += 1
+            continue
+        count += 1
+        indent, condition, rest = parts
+        c = _simplify(condition)
+        note = _comment(line)
+        if rest.lower() != "then":                       # a one-line IF
+            if c == ".true.":
+                out.append(f"{indent}{rest}")
+            elif c != ".false.":
+                out.append(f"{indent}if ({c}) {rest}")
+            i += 1
+            continue
+        clauses, depth, end = [], 0, None               # (line index, kind, condition)
+        for j in range(i + 1, len(lines)):
+            s = re.sub(r"!.*$", "", lines[j]).strip().lower()
+            if re.match(r"if\s*\(.*\)\s*then$", s):
+                depth += 1
+            elif re.match(r"end\s*if\b", s):
+                if depth == 0:
+                    end = j
+                    break
+                depth -= 1
+            elif depth == 0 and re.match(r"else\s*if\b", s):
+                clauses.append((j, "elseif"))
+            elif depth == 0 and s == "else":
+                clauses.append((j, "else"))
+        if end is None:
+            raise ValueError("an IF block on printed_mode without its END IF")
+        first = clauses[0][0] if clauses else end
+        body = lines[i + 1:first]
+
+        def inner(chunk):                     # how much deeper than the IF a branch sits
+            lead = [len(x) - len(x.lstrip(" ")) for x in chunk if x.strip()]
+            return max(0, min(lead, default=len(indent)) - len(indent))
+        if c == ".true.":
+            kept, n = _strip_printed(_dedent(body, inner(body)))
+            out += kept
+        elif c == ".false.":
+            if clauses and clauses[0][1] == "elseif":
+                k = clauses[0][0]
+                tail = re.sub(r"^\s*else\s*", "", lines[k], flags=re.I)
+                kept, n = _strip_printed([indent + tail] + lines[k + 1:end + 1])
+                out += kept
+            elif clauses:
+                k = clauses[0][0]
+                if _comment(lines[k]):
+                    out.append(indent + _comment(lines[k]))
+                chunk = lines[k + 1:end]
+                kept, n = _strip_printed(_dedent(chunk, inner(chunk)))
+                out += kept
+            else:
+                n = 0
+        else:
+            kept, n = _strip_printed([f"{indent}if ({c}) then" + (f"  {note}" if note else "")]
+                                     + lines[i + 1:end + 1])
+            out += kept
+        count += n
+        i = end + 1
+    return out, count
+
+
+def _corrected(item: Listing) -> str:
+    """sarkp's routine as corrected mode runs it: the as-printed branches left out."""
+    lines = _modern(item).rstrip("\n").split("\n")
+    body, count = _strip_printed(lines[1:])
+    head = (f"{lines[0]}; as corrected mode runs it, the as-printed branches left out "
+            f"({count} IF on printed_mode settled; `sarkp listing {item.name} --modern` "
+            "shows them)" if count else f"{lines[0]}; it has no as-printed branches")
+    return "\n".join([head] + body) + "\n"
+
+
 # --- the diff -----------------------------------------------------------------------------
 
 def _book_statements(text: str) -> list[str]:
@@ -315,8 +436,21 @@ def _pair(left: list[str], right: list[str]) -> list[tuple[str, str, str]]:
     return rows
 
 
+def _wrap(text: str, width: int) -> list[str]:
+    """A statement in lines of at most ``width`` characters (never cut: wrapped)."""
+    return textwrap.wrap(text, width, subsequent_indent="    ", break_on_hyphens=False,
+                         break_long_words=True) or [""]
+
+
+def _side(mark: str, left: str, right: str, width: int) -> list[str]:
+    a, b = _wrap(left, width), _wrap(right, width)
+    a += [""] * (len(b) - len(a))
+    b += [""] * (len(a) - len(b))
+    return [f"{mark} {x:<{width}} | {y}".rstrip() for x, y in zip(a, b)]
+
+
 def _diff(item: Listing, style: str) -> str:
-    book_text, modern_text = item.text(), _modern(item)
+    book_text, modern_text = item.text(), _corrected(item)
     ocr = [pair for line in book_text.splitlines() if line.startswith("C OCR:")
            for pair in re.findall(r'"([^"]*)"\s*->\s*"([^"]*)"', line)]
     cited = errata_ids_of(modern_text)
@@ -333,10 +467,14 @@ def _diff(item: Listing, style: str) -> str:
         headers, a, b = (a[0], b[0]), a[1:], b[1:]
     matcher = difflib.SequenceMatcher(None, [_key(s) for s in a], [_key(s) for s in b],
                                       autojunk=False)
+    listed = list(dict.fromkeys([r.id for r in rows] + cited))
     out = [f"{item.name}: the book's listing {item.listing} ({item.lines}) against sarkp's "
-           "Fortran 90 routine: executable statements, compared without case, blanks and "
-           "kind suffixes (declarations differ by design: double precision, IER).",
-           f"ERRATA ids the routine cites: {', '.join(cited) if cited else 'none'}", ""]
+           "Fortran 90 routine as corrected mode runs it (its as-printed branches left out: "
+           f"`sarkp listing {item.name} --modern` shows them): executable statements, "
+           "compared without case, blanks and kind suffixes (declarations differ by design: "
+           "double precision, IER).",
+           f"ERRATA rows of {item.name} (docs/ERRATA.md, and the ids its Fortran 90 cites): "
+           f"{', '.join(listed) if listed else 'none'}", ""]
     used: set[str] = set()
     width = 64
     if headers and _key(headers[0]) != _key(headers[1]):
@@ -348,14 +486,14 @@ def _diff(item: Listing, style: str) -> str:
             if plain == _key(headers[0]) else "no ERRATA row matches")
         out.append(f"@@ the header: {note}")
         if style == "side":
-            out.append(f"! {headers[0][:width]:<{width}} | {headers[1][:width]}")
+            out += _side("!", headers[0], headers[1], width)
         else:
             out += [f"- {headers[0]}", f"+ {headers[1]}"]
     for tag, i1, i2, j1, j2 in matcher.get_opcodes():
         if tag == "equal":
             if style == "side":
                 for s, t in zip(a[i1:i2], b[j1:j2]):
-                    out.append(f"  {s[:width]:<{width}} | {t[:width]}")
+                    out += _side(" ", s, t, width)
             continue
         ids = _annotate(a[i1:i2], b[j1:j2], rows, ocr)
         used.update(ids)
@@ -365,7 +503,7 @@ def _diff(item: Listing, style: str) -> str:
                    f"{note}")
         if style == "side":
             for mark, s, t in _pair(a[i1:i2], b[j1:j2]):
-                out.append(f"{mark} {s[:width]:<{width}} | {t[:width]}")
+                out += _side(mark, s, t, width)
         else:
             out += [f"- {s}" for s in a[i1:i2]] + [f"+ {t}" for t in b[j1:j2]]
     kinds = {r.id: r.kind for r in rows}
@@ -388,7 +526,8 @@ def _diff(item: Listing, style: str) -> str:
     return "\n".join(out) + "\n"
 
 
-def listing(name: str, modern: bool = False, diff: str | bool | None = None) -> str:
+def listing(name: str, modern: bool = False, diff: str | bool | None = None,
+            corrected: bool = False) -> str:
     """The book's listing of a routine or program, as printed (OCR misreadings corrected,
     each marked ``C OCR:``).
 
@@ -399,8 +538,13 @@ def listing(name: str, modern: bool = False, diff: str | bool | None = None) -> 
     modern : bool
         Give sarkp's Fortran 90 routine instead (with its header comment and ERRATA ids).
     diff : {None, False, True, "unified", "side"}
-        Compare the two statement by statement: ``True`` or ``"unified"`` for a unified diff,
-        ``"side"`` for side by side.  Each differing hunk names the ERRATA ids it matches.
+        Compare the book's listing with sarkp's routine as corrected mode runs it (``corrected``)
+        statement by statement: ``True`` or ``"unified"`` for a unified diff, ``"side"`` for
+        side by side (long statements wrapped, never cut).  Each differing hunk names the
+        ERRATA ids it matches; the second line lists every id of the routine.
+    corrected : bool
+        Give sarkp's Fortran 90 routine as corrected mode runs it: every IF on
+        ``printed_mode`` settled, the as-printed branches left out (clean code to read).
 
     Raises
     ------
@@ -413,6 +557,8 @@ def listing(name: str, modern: bool = False, diff: str | bool | None = None) -> 
         if diff not in (True, "unified", "side"):
             raise ValueError(f"diff must be 'unified' or 'side', not {diff!r}")
         return _diff(item, style)
+    if corrected:
+        return _corrected(item)
     if modern:
         return _modern(item)
     return item.text()

@@ -925,40 +925,44 @@ class _MechanismBase(Result):
         return plot.mechanism(pts, links, fixed=pivots, highlight=position, every=every,
                               paths=paths, title=title, ax=ax)
 
-    def animate(self, path, *, fps=20, every=1, paths=()):
+    def animate(self, path, *, fps=20, every=1, paths=(), title=""):
         """An animation over the sweep written to ``path`` (.gif through Pillow, .mp4
-        through ffmpeg: matplotlib's writers)."""
-        import matplotlib.pyplot as plt
-        from matplotlib import animation
-        if not str(path).endswith(".gif") and not animation.FFMpegWriter.isAvailable():
-            raise RuntimeError(f"animate: writing {str(path)!r} needs ffmpeg (matplotlib's "
-                               f"FFMpegWriter), which is not installed (Debian: apt-get "
-                               f"install ffmpeg); a .gif path needs only Pillow")
+        through ffmpeg: matplotlib's writers), each frame drawn as :meth:`plot` draws
+        (the joints' names, the title, the frame pivots): sarkp.plot.animate."""
+        from . import plot
         pts, links, fixed = self._drawing()
-        xs = np.concatenate([np.ravel(x) for x, _ in pts.values()])
-        ys = np.concatenate([np.ravel(y) for _, y in pts.values()])
-        fig, ax = plt.subplots(figsize=(6, 5))
-        pad = 0.05 * max(np.nanmax(xs) - np.nanmin(xs), np.nanmax(ys) - np.nanmin(ys), 1e-9)
-        ax.set_xlim(np.nanmin(xs) - pad, np.nanmax(xs) + pad)
-        ax.set_ylim(np.nanmin(ys) - pad, np.nanmax(ys) + pad)
-        ax.set_aspect("equal")
-        lines = [ax.plot([], [], "o-", lw=2)[0] for _ in links]
-        for name in paths:
-            ax.plot(np.ravel(pts[name][0]), np.ravel(pts[name][1]), "-", alpha=0.4)
-        frames = range(0, int(np.size(self.phi)), max(1, every))
+        pivots = [f for f in fixed if any(f in link for link in links)]
+        return plot.animate(pts, links, path, fixed=pivots, paths=paths, title=title,
+                            fps=fps, every=every)
 
-        def draw(k):
-            for line, link in zip(lines, links):
-                line.set_data([np.ravel(pts[q][0])[k] for q in link],
-                              [np.ravel(pts[q][1])[k] for q in link])
-            return lines
-        anim = animation.FuncAnimation(fig, draw, frames=frames, blit=True)
-        path = str(path)
-        writer = animation.PillowWriter(fps=fps) if path.endswith(".gif") else \
-            animation.FFMpegWriter(fps=fps)
-        anim.save(path, writer=writer)
-        plt.close(fig)
-        return path
+    # -- what every course asks of a linkage (sarkp.linkage; issue 27) ------------------
+    def extremes(self, point=None, *, link=None, along=None):
+        """The extreme positions of a point (its coordinate along ``along``: an angle,
+        rad, or a vector; default the principal axis of its path, for a slider the
+        guide) or of a link (``link=(P, Q)``: its angle, rad), located between the grid
+        points: a :class:`sarkp.linkage.Extremes` (``low``, ``high``, the crank angles
+        ``phi_low``, ``phi_high``, ``stroke = high - low``, for a point its (x, y) there)."""
+        from . import linkage
+        return linkage.result_extremes(self, point, link, along)
+
+    def stroke(self, point=None, *, link=None, along=None):
+        """The stroke of a point or slider (m), or a rocker's swing (``link=``, rad):
+        ``extremes(...).stroke``."""
+        return self.extremes(point, link=link, along=along).stroke
+
+    def time_ratio(self, point=None, *, link=None, along=None):
+        """The time ratio K >= 1 (coefficient of the change of the mean velocity) of a
+        point's or a link's strokes over a full turn of the crank: the crank angle of the
+        slower stroke over that of the faster one (:func:`sarkp.linkage.time_ratio`)."""
+        from . import linkage
+        return linkage.result_time_ratio(self, point, link, along)
+
+    def transmission_angle(self, joint):
+        """The transmission angle (rad) at the new joint of a rrr or rrp group over the
+        sweep, with its worst acute value and where: a
+        :class:`sarkp.linkage.Transmission` (:func:`sarkp.linkage.transmission_angle`)."""
+        from . import linkage
+        return linkage.transmission_angle(self, joint)
 
 
 MechanismResult = result_type(

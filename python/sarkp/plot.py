@@ -12,6 +12,7 @@ Linkages (chapter 4, program X):
 
 * :func:`mechanism`: a planar linkage drawn in several positions, with the paths of
   chosen points, its frame pivots hatched and its slider drawn as a block;
+* :func:`animate`: the same picture in motion, one frame per position (GIF or MP4);
 * :func:`diagrams`: quantities against the crank angle, one panel per unit.
 
 Cams (chapter 5):
@@ -43,7 +44,7 @@ import textwrap
 
 import numpy as np
 
-__all__ = ["mechanism", "diagrams", "cam_profile", "cam_diagrams", "reaction_hodograph",
+__all__ = ["mechanism", "animate", "diagrams", "cam_profile", "cam_diagrams", "reaction_hodograph",
            "speed_diagram", "gear_mesh", "internal_mesh", "save", "mode_title", "FORMATS"]
 
 #: The file formats :func:`save` writes (the file's suffix is set to the format).
@@ -173,34 +174,142 @@ def _texts(figure):
             if t.get_visible() and t.get_text().strip() and t.figure is not None]
 
 
-def _place_labels(figure, labels):
-    """Move each label of ``labels`` (Annotations with offsets in points) to the first
-    candidate offset where it overlaps no other text and stays inside its Axes; a label
-    marked ``_sarkp_optional`` that finds no place is hidden.  Needs the layout done."""
-    if not labels:
+def _ink(ax, renderer, step=2.0):
+    """Display points (pixels) along every drawn line of ``ax`` (its vertices and points
+    every ``step`` pixels along its segments; markers' centres too): where the drawing
+    is, which a label should not cover."""
+    pts = []
+    for line in ax.get_lines():
+        if not line.get_visible():
+            continue
+        xy = np.column_stack([np.asarray(line.get_xdata(), float),
+                              np.asarray(line.get_ydata(), float)])
+        if xy.size == 0:
+            continue
+        d = line.get_transform().transform(xy)
+        ok = np.all(np.isfinite(d), axis=1)
+        if line.get_linestyle() not in ("None", "", " ") and len(d) > 1:
+            a, b = d[:-1], d[1:]
+            good = ok[:-1] & ok[1:]
+            a, b = a[good], b[good]
+            n = np.maximum(1, np.ceil(np.hypot(*(b - a).T) / step)).astype(int)
+            t = np.concatenate([np.arange(k) / k for k in n])
+            start = np.repeat(a, n, axis=0)
+            pts.append(start + (np.repeat(b, n, axis=0) - start) * t[:, None])
+        pts.append(d[ok])
+    return np.concatenate(pts) if pts else np.empty((0, 2))
+
+
+def _covered(box, ink):
+    """How many ink points lie inside ``box`` (a Bbox, pixels)."""
+    if not len(ink):
+        return 0
+    return int(np.count_nonzero((ink[:, 0] > box.x0) & (ink[:, 0] < box.x1)
+                                & (ink[:, 1] > box.y0) & (ink[:, 1] < box.y1)))
+
+
+def _candidates():
+    """Offsets (points) of a label from its point: near ones first, then rings further
+    out (joined to the point by a leader line), each ring round the compass."""
+    out = list(_OFFSETS)
+    for radius in (18, 26, 36, 48, 62):
+        for k in range(16):
+            a = 2 * math.pi * k / 16 + math.pi / 4
+            out.append((radius * math.cos(a) - 4, radius * math.sin(a) - 4))
+    return out
+
+
+_CANDIDATES = _candidates()
+
+
+def _place_labels(figure, labels, redraw=True):
+    """Place every label registered on ``figure`` (this call's ``labels`` and those of
+    earlier calls on the same figure, e.g. other panels), each at the first candidate
+    offset where it overlaps no other text, covers none of the drawing's lines and stays
+    inside its Axes; failing that, where it overlaps no text and covers the least.  A
+    label further than its near ring gets a leader line to its point.  A label marked
+    ``_sarkp_optional`` that finds no place free of text is hidden.  Needs the layout
+    done; all labels are placed again, so a later panel never spoils an earlier one.
+    ``redraw=False``: the layout and the limits have not changed since the last draw (an
+    animation's frames)."""
+    everything = getattr(figure, "_sarkp_labels", [])
+    everything += [a for a in labels if a not in everything]
+    figure._sarkp_labels = everything
+    if not everything:
         return
-    figure.draw_without_rendering()
+    for label in everything:
+        label.set_visible(True)
+        label.set_position(_OFFSETS[0])
+        label._sarkp_leader.set_visible(False)
+    if redraw:
+        figure.draw_without_rendering()
     renderer = _renderer(figure)
-    movable = set(map(id, labels))
+    movable = set(map(id, everything))
     placed = [t.get_window_extent(renderer) for t in _texts(figure) if id(t) not in movable]
-    for label in labels:
-        box_ax = label.axes.get_window_extent(renderer)
-        best = None
-        for dx, dy in _OFFSETS:
+    inks = {}
+    for label in everything:
+        ax = label.axes
+        if id(ax) not in inks:
+            inks[id(ax)] = _ink(ax, renderer)
+        ink = inks[id(ax)]
+        box_ax = ax.get_window_extent(renderer)
+        best, fallback = None, None
+        for dx, dy in _CANDIDATES:
             label.set_position((dx, dy))
             box = label.get_window_extent(renderer)
             inside = (box.x0 >= box_ax.x0 and box.x1 <= box_ax.x1 and box.y0 >= box_ax.y0
                       and box.y1 <= box_ax.y1)
-            if inside and not any(box.padded(3).overlaps(p) for p in placed):
-                best = box
+            if not inside or any(box.padded(3).overlaps(p) for p in placed):
+                continue
+            covered = _covered(box.padded(1), ink)
+            if covered == 0:
+                best = (dx, dy)
                 break
+            if fallback is None or covered < fallback[0]:
+                fallback = (covered, (dx, dy))
+        if best is None and fallback is not None:
+            best = fallback[1]
         if best is None:
             if getattr(label, "_sarkp_optional", False):
                 label.set_visible(False)
                 continue
-            label.set_position(_OFFSETS[0])
-            best = label.get_window_extent(renderer)
-        placed.append(best)
+            best = _OFFSETS[0]
+        label.set_position(best)
+        box = label.get_window_extent(renderer)
+        placed.append(box)
+        if math.hypot(*best) > 20:                  # a leader from the box's edge
+            scale = 72.0 / figure.dpi
+            px, py = ax.transData.transform(label.xy)
+            cx, cy = (box.x0 + box.x1) / 2 - px, (box.y0 + box.y1) / 2 - py
+            half = min(box.width / abs(cx) if cx else math.inf,
+                       box.height / abs(cy) if cy else math.inf) / 2
+            leader = label._sarkp_leader
+            keep = 1 - min(half, 1.0)
+            leader.set_position((cx * scale * keep, cy * scale * keep))
+            leader.set_visible(True)
+
+
+def _fit_height(figure, ax, rounds=3):
+    """On a figure of sarkp's own, the sheet's height cut to the drawing: an Axes of equal
+    aspect is lower than the layout gives it, which left an empty band under the title.
+    The Axes goes to the top of its place, and the figure loses the height left between
+    the legend below the Axes and the caption."""
+    if not getattr(figure, "_sarkp_own", False):
+        return
+    ax.set_anchor("N")
+    for _ in range(rounds):
+        figure.draw_without_rendering()
+        renderer = _renderer(figure)
+        boxes = [ax.get_tightbbox(renderer)]
+        if ax.get_legend() is not None:
+            boxes.append(ax.get_legend().get_window_extent(renderer))
+        low = min(b.y0 for b in boxes)
+        caption = figure._supxlabel
+        floor = caption.get_window_extent(renderer).y1 if caption is not None else 0.0
+        spare = (low - floor) / figure.dpi - 0.15
+        if spare < 0.05:
+            return
+        figure.set_size_inches(figure.get_figwidth(), figure.get_figheight() - spare)
 
 
 def _label(ax, text, xy, color="k", optional=False, **kw):
@@ -208,6 +317,13 @@ def _label(ax, text, xy, color="k", optional=False, **kw):
                     color=color, **{**_LABEL, **kw})
     a.set_in_layout(False)
     a._sarkp_optional = optional
+    # its leader line, shown when the label sits away from its point: an annotation
+    # without text (so no text box), its arrow from the label towards the point
+    a._sarkp_leader = ax.annotate("", xy, xytext=(0, 0), textcoords="offset points",
+                                  arrowprops=dict(arrowstyle="-", color=color, lw=0.6,
+                                                  alpha=0.8, shrinkA=0, shrinkB=1.5))
+    a._sarkp_leader.set_visible(False)
+    a._sarkp_leader.set_in_layout(False)
     return a
 
 
@@ -348,11 +464,14 @@ def mechanism(points, links, *, fixed=(), guide=None, highlight=0, every=1, path
             if k < len(positions) and x.size > 1 and not closes:
                 labels.append(_label(ax, str(positions[k]), (x[k], y[k]), color="0.35",
                                      optional=k != highlight, fontsize=7))
+    moving = {"links": [], "labels": [], "slider": None, "at": at}
     for i, link in enumerate(links):
         c = [at(n, highlight) for n in link]
         number = f" {positions[highlight]}" if positions is not None else ""
-        ax.plot([p[0] for p in c], [p[1] for p in c], "o-", color="C0", lw=2.2, ms=4,
-                label=f"position{number or ' ' + str(highlight + 1)}" if i == 0 else None)
+        line, = ax.plot([p[0] for p in c], [p[1] for p in c], "o-", color="C0", lw=2.2,
+                        ms=4, label=f"position{number or ' ' + str(highlight + 1)}"
+                        if i == 0 else None)
+        moving["links"].append((line, link))
     for name in fixed:
         _pivot(ax, *at(name, 0), size)
     if guide is not None:
@@ -363,12 +482,14 @@ def mechanism(points, links, *, fixed=(), guide=None, highlight=0, every=1, path
         ax.plot([], [], "-", color="k", lw=1.0, label="guide of the slider")
         name = slider if slider is not None else links[-1][-1]
         sx, sy = at(name, highlight)
-        ax.add_patch(Rectangle((sx - 1.4 * size, guide), 2.8 * size, 1.6 * size, fc="white",
-                               ec="C0", lw=1.8, zorder=4))
-        ax.plot([sx], [sy], "o", color="C0", ms=4, zorder=5)
+        block = ax.add_patch(Rectangle((sx - 1.4 * size, guide), 2.8 * size, 1.6 * size,
+                                       fc="white", ec="C0", lw=1.8, zorder=4))
+        pin, = ax.plot([sx], [sy], "o", color="C0", ms=4, zorder=5)
+        moving["slider"] = (block, pin, name, size)
     for name in xy:
         labels.insert(0, _label(ax, name, at(name, highlight), color="C0",
                                 fontweight="bold", fontsize=10))
+        moving["labels"].append((labels[0], name))
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel("x, m")
     ax.set_ylabel("y, m")
@@ -376,7 +497,95 @@ def mechanism(points, links, *, fixed=(), guide=None, highlight=0, every=1, path
     _legend(ax)
     _title(figure, [ax], title or "mechanism in its positions")
     _place_labels(figure, labels)
+    figure._sarkp_moving = moving
     return figure
+
+
+def _animation(points, links, *, fixed=(), paths=(), title="", guide=None, slider=None,
+               every=1):
+    """(figure, update, frames): the picture of :func:`mechanism` at the first position
+    (its labels, title, frame pivots and guide) over the extent of every position, and
+    ``update(k)`` that moves the links, the slider and the joints' labels to position k."""
+    count = max(np.atleast_1d(np.asarray(x, float)).size for x, _ in points.values())
+    figure = mechanism(points, links, fixed=fixed, guide=guide, highlight=0,
+                       every=count + 1, paths=paths, slider=slider,
+                       title=title or "mechanism in motion")
+    ax = figure.axes[0]
+    allx = np.concatenate([np.atleast_1d(np.asarray(x, float)) for x, _ in points.values()])
+    ally = np.concatenate([np.atleast_1d(np.asarray(y, float)) for _, y in points.values()])
+    span = max(np.nanmax(allx) - np.nanmin(allx), np.nanmax(ally) - np.nanmin(ally), 1e-9)
+    pad = 0.12 * span
+    ax.set_xlim(np.nanmin(allx) - pad, np.nanmax(allx) + pad)
+    ax.set_ylim(np.nanmin(ally) - pad, np.nanmax(ally) + pad)
+    ax.set_aspect("equal", adjustable="box")
+    moving = figure._sarkp_moving
+    at = moving["at"]
+    legend = ax.get_legend()
+    if legend is not None:                # "position 1" would name the first frame only
+        legend.remove()
+    moving["links"][0][0].set_label("the links, position by position")
+    _legend(ax)
+    _place_labels(figure, [])
+    figure.set_layout_engine("none")     # the layout of the first frame, kept
+
+    def update(k):
+        changed = []
+        for line, link in moving["links"]:
+            c = [at(n, k) for n in link]
+            line.set_data([p[0] for p in c], [p[1] for p in c])
+            changed.append(line)
+        for label, name in moving["labels"]:
+            label.xy = at(name, k)
+            label._sarkp_leader.xy = label.xy
+            changed.append(label)
+        if moving["slider"] is not None:
+            block, pin, name, size = moving["slider"]
+            sx, sy = at(name, k)
+            block.set_x(sx - 1.4 * size)
+            pin.set_data([sx], [sy])
+            changed += [block, pin]
+        _place_labels(figure, [], redraw=False)   # the names placed again, clear
+        return changed
+    return figure, update, range(0, count, max(1, int(every)))
+
+
+def animate(points, links, path, *, fixed=(), paths=(), title="", guide=None,
+            slider=None, fps=20, every=1):
+    """An animation of a linkage over its positions written to ``path`` (``.gif``
+    through Pillow; ``.mp4`` through ffmpeg): each frame is :func:`mechanism`'s picture
+    at that position -- the joints' names, the title, the frame pivots hatched, the
+    guide and the slider block -- the paths of ``paths`` drawn throughout.
+
+    Parameters
+    ----------
+    points, links, fixed, paths, title, guide, slider
+        As for :func:`mechanism`.
+    path : str or path-like
+        The file written.
+    fps : float
+        Frames per second.
+    every : int
+        One frame every ``every`` positions.
+
+    Returns
+    -------
+    str
+        ``path``.
+    """
+    from matplotlib import animation
+    path = str(path)
+    if not path.endswith(".gif") and not animation.FFMpegWriter.isAvailable():
+        raise RuntimeError(f"animate: writing {path!r} needs ffmpeg (matplotlib's "
+                           f"FFMpegWriter), which is not installed (Debian: apt-get "
+                           f"install ffmpeg); a .gif path needs only Pillow")
+    figure, update, frames = _animation(points, links, fixed=fixed, paths=paths,
+                                        title=title, guide=guide, slider=slider,
+                                        every=every)
+    anim = animation.FuncAnimation(figure, update, frames=frames, blit=False)
+    writer = animation.PillowWriter(fps=fps) if path.endswith(".gif") else \
+        animation.FFMpegWriter(fps=fps)
+    anim.save(path, writer=writer)
+    return path
 
 
 def diagrams(x, panels, *, xlabel="crank angle φ1, rad", title="", degrees=False,
@@ -447,7 +656,7 @@ def _rotate(x, y, angle):
 
 
 def cam_profile(XA, YA, FI, *, position=None, follower="knife", offset=0.0,
-                base_radius=None, title="", ax=None):
+                base_radius=None, roller_radius=None, working=None, title="", ax=None):
     """The cam profile turned to the cam angle ``FI[position]``, with its base circle,
     the cam centre, and the follower touching it there.
 
@@ -459,13 +668,21 @@ def cam_profile(XA, YA, FI, *, position=None, follower="knife", offset=0.0,
         The cam angles of the points, rad.
     position : int, optional
         The index of the position drawn (default: the highest lift).
-    follower : {"knife", "flat"}
-        A translating knife-edge on the line x = ``offset`` (as DPRFLP), or a flat face
-        perpendicular to the y axis (as DPRFPL).
+    follower : {"knife", "flat", "roller"}
+        A translating knife-edge on the line x = ``offset`` (as DPRFLP), a flat face
+        perpendicular to the y axis (as DPRFPL), or a translating roller on the line
+        x = ``offset`` whose centre follows ``XA, YA`` (the pitch curve, as
+        :func:`sarkp.cams.roller_translating` gives it).
     offset : float
-        The knife-edge follower's offset e, m.
+        The knife-edge's or the roller's offset e, m.
     base_radius : float, optional
-        The radius of the base circle (default: the smallest radius of the profile).
+        The radius of the base circle (default: the smallest radius of the profile; for
+        a roller, of the pitch curve: the prime circle).
+    roller_radius : float, optional
+        The roller's radius RR, m (> 0): needed for ``follower="roller"``.
+    working : (array_like, array_like), optional
+        The working profile XW, YW of a roller cam (default: the envelope of the rollers
+        on the pitch curve, by :mod:`sarkp.cams`' offset of the pitch curve).
     title : str
     ax : matplotlib.axes.Axes, optional
 
@@ -473,10 +690,26 @@ def cam_profile(XA, YA, FI, *, position=None, follower="knife", offset=0.0,
     -------
     matplotlib.figure.Figure
     """
-    from matplotlib.patches import Rectangle
-    if follower not in ("knife", "flat"):
-        raise ValueError(f"follower must be 'knife' or 'flat', not {follower!r}")
+    from matplotlib.patches import Circle, Rectangle
+    if follower not in ("knife", "flat", "roller"):
+        raise ValueError(f"follower must be 'knife', 'flat' or 'roller', not {follower!r}")
     XA, YA, FI = _curves(XA=XA, YA=YA, FI=FI)
+    if follower == "roller":
+        if roller_radius is None or not (isinstance(roller_radius, (int, float))
+                                         and math.isfinite(roller_radius)
+                                         and roller_radius > 0):
+            raise ValueError(f"roller_radius must be a number > 0 for a roller follower, "
+                             f"not {roller_radius!r}")
+        rr = float(roller_radius)
+        if working is None:
+            XW, YW = _working(XA, YA, FI, rr)
+        else:
+            XW, YW = _curves(**{"working profile XW": working[0],
+                                "working profile YW": working[1]})
+            if XW.size != XA.size:
+                raise ValueError(f"working has {XW.size} points, XA has {XA.size}")
+    elif roller_radius is not None or working is not None:
+        raise ValueError("roller_radius and working are for follower='roller'")
     radius = np.hypot(XA, YA)
     k = int(np.argmax(radius)) if position is None else int(position)
     x, y = _rotate(XA, YA, FI[k])                      # the fixed frame: the cam turned
@@ -485,7 +718,16 @@ def cam_profile(XA, YA, FI, *, position=None, follower="knife", offset=0.0,
     figure, (ax,) = _axes(ax, size=(6.5, 7.2))
     step = abs(FI[-1] - FI[-2]) if FI.size > 1 else 0.0
     gap = 2 * math.pi - abs(FI[-1] - FI[0])
-    ax.plot(x, y, "-", color="C0", lw=1.8, label="cam profile (the table's points)")
+    if follower == "roller":
+        wx, wy = _rotate(XW, YW, FI[k])
+        ax.plot(wx, wy, "-", color="C0", lw=1.8, label=f"working profile (rollers' "
+                                                        f"envelope, RR = {rr * 1000:.2f} mm)")
+        ax.plot(x, y, "--", color="C0", lw=0.9, label="pitch curve (the roller's centre)")
+        for j in range(0, XA.size, max(1, XA.size // 24)):   # rollers along the pitch curve
+            ax.add_patch(Circle((x[j], y[j]), rr, fc="none", ec="0.6", lw=0.5, zorder=1))
+        ax.plot([], [], "-", color="0.6", lw=0.5, label="the roller at other angles")
+    else:
+        ax.plot(x, y, "-", color="C0", lw=1.8, label="cam profile (the table's points)")
     if gap > 1.5 * step:
         # the table stops before the turn is complete (V.5: 250 of 360 degrees): the rest
         # is a dwell at the last radius, an arc back to the first point
@@ -498,14 +740,26 @@ def cam_profile(XA, YA, FI, *, position=None, follower="knife", offset=0.0,
                 label=f"rest of the turn ({math.degrees(gap):.0f}°): follower at rest, "
                       "arc of constant radius")
     t = np.linspace(0.0, 2 * math.pi, 361)
+    circle = "prime circle (of the pitch curve)" if follower == "roller" else "base circle"
     ax.plot(r0 * np.cos(t), r0 * np.sin(t), "--", color="0.5", lw=0.9,
-            label=f"base circle, r0 = {r0 * 1000:.2f} mm")
+            label=f"{circle}, r0 = {r0 * 1000:.2f} mm")
     ax.plot([-0.08 * size, 0.08 * size], [0, 0], "-", color="k", lw=0.8)
     ax.plot([0, 0], [-0.08 * size, 0.08 * size], "-", color="k", lw=0.8)
     labels = [_label(ax, "O (cam centre)", (0.0, 0.0))]
     tip_x, tip_y = float(x[k]), float(y[k])
     lift = math.degrees(FI[k])
-    if follower == "knife":
+    if follower == "roller":
+        ax.axvline(offset, color="C3", lw=0.6, ls=":")
+        ax.add_patch(Rectangle((offset - 0.05 * size, tip_y + rr + 0.25 * size),
+                               0.1 * size, 0.2 * size, fc="none", ec="k", lw=0.8,
+                               hatch="////"))
+        ax.plot([offset, offset], [tip_y, tip_y + rr + 0.6 * size], "-", color="C3", lw=3,
+                solid_capstyle="butt", label=f"roller follower at {lift:.0f}° "
+                                             "(guide hatched)")
+        ax.add_patch(Circle((tip_x, tip_y), rr, fc="white", ec="C3", lw=1.6, zorder=4))
+        ax.plot([tip_x], [tip_y], "o", color="C3", ms=3, zorder=5)
+        tip_x, tip_y = float(wx[k]), float(wy[k])        # the contact: on the working profile
+    elif follower == "knife":
         ax.axvline(offset, color="C3", lw=0.6, ls=":")
         ax.add_patch(Rectangle((offset - 0.05 * size, tip_y + 0.25 * size), 0.1 * size,
                                0.2 * size, fc="none", ec="k", lw=0.8, hatch="////"))
@@ -530,6 +784,18 @@ def cam_profile(XA, YA, FI, *, position=None, follower="knife", offset=0.0,
     _title(figure, [ax], title or f"cam turned by {lift:.1f}°")
     _place_labels(figure, labels)
     return figure
+
+
+def _working(XA, YA, FI, rr):
+    """The working profile of a roller cam from its pitch curve: sarkp.cams' offset of
+    the pitch curve by the roller radius towards the cam centre, with the tangent
+    d(XA, YA)/dFI taken by central differences (one-sided at the ends)."""
+    from .cams import _working_profile
+    dx, dy = np.gradient(XA, FI, edge_order=2), np.gradient(YA, FI, edge_order=2)
+    n = XA.size
+    p = _working_profile(XA, YA, dx, dy, np.full(n, np.inf), np.zeros(n), rr, "flag",
+                         "cam_profile")
+    return p.XW, p.YW
 
 
 def _clip(values, spread=3.0):
@@ -625,23 +891,42 @@ def cam_diagrams(FI, ROK, ALFA=None, *, ALD=None, title="", positions=None, ax=N
 
 # ---- forces and dynamics ---------------------------------------------------------------------
 
-def reaction_hodograph(F, G, *, label=None, mark_every=None, title="", positions=None,
-                       ax=None):
+def _jumps(x, y):
+    """Indices k where the curve jumps between k and k + 1 (a step far longer than its
+    neighbours': a load that switches), for a curve sampled densely."""
+    step = np.hypot(np.diff(x), np.diff(y))
+    if step.size < 8:
+        return np.array([], dtype=int)
+    typical = np.median(step)
+    return np.flatnonzero(step > 12 * max(typical, 1e-300))
+
+
+def reaction_hodograph(F, G, *, sweep=None, label=None, mark_every=None, title="",
+                       positions=None, jump_label=None, ax=None):
     """The hodograph of a joint reaction over a crank turn.
 
     Parameters
     ----------
     F, G : array_like
         The modulus (N, >= 0) and direction (rad) of the reaction at each crank
-        position, in order (e.g. ``F21``, ``G21`` of :func:`sarkp.book.prog_vii_10.compute`).
+        position, in order (e.g. ``F21``, ``G21`` of :func:`sarkp.book.prog_vii_10.compute`):
+        marked and numbered.
+    sweep : (array_like, array_like), optional
+        The same reaction (modulus, direction) over a dense sweep of the same turn: the
+        curve is drawn from it (without it, through the positions).  Where it jumps (a
+        load that switches: a step twelve times its median or longer) the jump is drawn
+        dotted, not as part of the curve.
     label : str, optional
         The curve's name in the legend.
     mark_every : int, optional
         Mark and number every n-th position (default: every position up to 40 of them,
-        every second of 80, ...; a number that finds no room is left out).
+        every second of 80, ...).  Numbers sit beside their points, or further out with
+        a leader line, never on another text nor, where there is room, on the curve.
     title : str
     positions : sequence of int, optional
         The number of each position (default 1, 2, ...).
+    jump_label : str, optional
+        The legend's words for the jumps of ``sweep`` (default: "jump: a load switches").
     ax : matplotlib.axes.Axes, optional
 
     Returns
@@ -656,39 +941,123 @@ def reaction_hodograph(F, G, *, label=None, mark_every=None, title="", positions
         raise ValueError(f"F and G must be 1-D arrays of the same length, not {F.shape} "
                          f"and {G.shape}")
     numbers = list(range(1, F.size + 1)) if positions is None else list(positions)
+    if len(numbers) != F.size:
+        raise ValueError(f"positions has {len(numbers)} numbers for {F.size} positions")
     figure, (ax,) = _axes(ax, size=(6.8, 7.0))
     x, y = F * np.cos(G), F * np.sin(G)
-    ax.plot(x, y, "-", color="C0", lw=1.4, label=label or "hodograph of the reaction")
+    if sweep is not None:
+        fd, gd = (np.asarray(v, dtype=float) for v in sweep)
+        if fd.shape != gd.shape or fd.ndim != 1 or fd.size < 2:
+            raise ValueError("sweep must be two 1-D arrays (modulus, direction) of the "
+                             "same length")
+        cx, cy = fd * np.cos(gd), fd * np.sin(gd)
+    else:
+        cx, cy = x, y
+    jumps = _jumps(cx, cy) if sweep is not None else np.array([], dtype=int)
+    bx, by = cx.copy(), cy.copy()
+    if jumps.size:                               # break the curve at each jump
+        bx = np.insert(bx, jumps + 1, np.nan)
+        by = np.insert(by, jumps + 1, np.nan)
+    ax.plot(bx, by, "-", color="C0", lw=1.4, label=label or "hodograph of the reaction")
+    for j, k in enumerate(jumps):
+        ax.plot(cx[k:k + 2], cy[k:k + 2], ":", color="0.45", lw=1.0,
+                label=(jump_label or "jump: a load switches") if j == 0 else None)
     every = mark_every or max(1, math.ceil(F.size / 40))   # at most about 40 numbers
-    ax.plot(x[::every], y[::every], ".", color="C0", ms=4)
-    # arrows along the curve, in the order of the positions
-    for k in range(0, F.size - 1, max(1, F.size // 8)):
-        if math.hypot(x[k + 1] - x[k], y[k + 1] - y[k]) > 0:
-            ax.annotate("", (0.5 * (x[k] + x[k + 1]), 0.5 * (y[k] + y[k + 1])), (x[k], y[k]),
-                        arrowprops=dict(arrowstyle="-|>", color="C0", lw=1.0,
-                                        mutation_scale=12))
+    ax.plot(x[::every], y[::every], ".", color="C0", ms=5,
+            label=f"the {len(x[::every])} positions, numbered" if sweep is not None else None)
+    # arrows along the curve, in the order of the positions (not across a jump)
+    n = cx.size
+    for k in range(0, n - 1, max(1, n // 8)):
+        if k in jumps:
+            k += 1
+        if k < n - 1 and math.hypot(cx[k + 1] - cx[k], cy[k + 1] - cy[k]) > 0:
+            ax.annotate("", (0.5 * (cx[k] + cx[k + 1]), 0.5 * (cy[k] + cy[k + 1])),
+                        (cx[k], cy[k]), arrowprops=dict(arrowstyle="-|>", color="C0", lw=1.0,
+                                                        mutation_scale=12))
     ax.annotate("", (x[0], y[0]), (0.0, 0.0),
                 arrowprops=dict(arrowstyle="-|>", color="C3", lw=1.2, mutation_scale=14))
-    ax.plot([], [], "-", color="C3", label=f"reaction at position {numbers[0]}, "
-                                           f"{F[0]:.0f} N")
+    ax.plot([0.0, x[0]], [0.0, y[0]], "-", color="C3", lw=1.2,
+            label=f"reaction at position {numbers[0]}, {F[0]:.0f} N")
     ax.plot([0.0], [0.0], "o", color="k", ms=4, label="pole O (zero force)")
     ax.plot([], [], "-", color="C0", marker=r"$\rightarrow$", ms=10, lw=0,
             label="arrows: order of the positions")
     labels = [_label(ax, "O", (0.0, 0.0))]
     same = np.hypot(x - x[0], y - y[0]) < 1e-9 * max(np.max(F), 1e-300)
-    for k in range(0, F.size, every):
-        if k > 0 and same[k]:
-            continue                  # the last position closes the turn on the first
-        labels.append(_label(ax, str(numbers[k]), (x[k], y[k]), color="C0", fontsize=7,
-                             optional=k > 0))
+    shown = [k for k in range(0, F.size, every) if not (k > 0 and same[k])]
     ax.set_aspect("equal", adjustable="datalim")
     ax.set_xlabel("reaction, x component, N")
     ax.set_ylabel("reaction, y component, N")
     ax.grid(True, lw=0.3)
     _legend(ax)
     _title(figure, [ax], title)
+    zoomed = _zoom(figure, ax, cx, cy, jumps, x, y, shown, numbers, labels) \
+        if sweep is not None and getattr(figure, "_sarkp_own", False) else set()
+    for k in shown:
+        if k not in zoomed:         # the last position closes the turn on the first
+            labels.append(_label(ax, str(numbers[k]), (x[k], y[k]), color="C0", fontsize=7,
+                                 optional=k > 0))
     _place_labels(figure, labels)
     return figure
+
+
+# the insets' corners (axes fractions; their tick labels stay inside the Axes) and size
+_INSETS = tuple((fx, fy, w, h) for w, h in ((0.32, 0.30), (0.32, 0.20))
+                for fy in (0.64, 0.40, 0.14) for fx in (0.14, 0.40, 0.64))
+
+
+def _zoom(figure, ax, cx, cy, jumps, x, y, shown, numbers, labels):
+    """Where the dense curve falls into pieces between its jumps, each too small to read
+    (under a fifth of the drawing), each piece is drawn again enlarged in an inset at a
+    free corner of the Axes (no line there), with its positions numbered there; returns
+    the positions numbered in the insets (``labels`` gets their labels)."""
+    n = cx.size
+    bounds = [0, *(jumps + 1), n]
+    pieces = [np.arange(a, b) for a, b in zip(bounds[:-1], bounds[1:]) if b > a]
+    span = max(np.ptp(np.append(cx, 0.0)), np.ptp(np.append(cy, 0.0)), 1e-300)
+    if len(pieces) > 1 and math.hypot(cx[-1] - cx[0], cy[-1] - cy[0]) < 1e-9 * span:
+        pieces = [np.concatenate([pieces[-1], pieces[0]])] + pieces[1:-1]  # the turn closes
+    size = lambda p: max(np.ptp(cx[p]), np.ptp(cy[p]))
+    if len(pieces) < 2 or len(pieces) > 4 or max(map(size, pieces)) > 0.2 * span:
+        return set()
+    figure.draw_without_rendering()
+    renderer = _renderer(figure)
+    from matplotlib.transforms import Bbox
+    ink = _ink(ax, renderer)
+    free = []
+    for fx, fy, w, h in _INSETS:
+        # the inset with its tick labels and its label: 0.12 more to the left and below
+        bbox = Bbox(ax.transAxes.transform([(fx - 0.12, fy - 0.12), (fx + w, fy + h)]))
+        if _covered(bbox.padded(2), ink) == 0:
+            free.append(((fx, fy, w, h), bbox))
+    # each position's piece: the piece of the dense point where it lies
+    at = [int(np.argmin(np.hypot(cx - x[k], cy - y[k]))) for k in range(len(x))]
+    done = set()
+    for j, piece in enumerate(pieces):
+        if not free:
+            break
+        centre = ax.transData.transform([(np.mean(cx[piece]), np.mean(cy[piece]))])[0]
+        rect, bbox = min(free, key=lambda f: math.hypot(
+            (f[1].x0 + f[1].x1) / 2 - centre[0], (f[1].y0 + f[1].y1) / 2 - centre[1]))
+        free = [f for f in free if not f[1].overlaps(bbox)]
+        order = {int(i): j for j, i in enumerate(piece)}
+        members = sorted((k for k in shown if at[k] in order), key=lambda k: order[at[k]])
+        if not members:
+            continue
+        inset = ax.inset_axes(rect)
+        inset.plot(cx[piece], cy[piece], "-", color="C0", lw=1.2)
+        inset.plot(x[members], y[members], ".", color="C0", ms=4)
+        inset.set_aspect("equal", adjustable="datalim")
+        inset.margins(0.25)
+        inset.tick_params(labelsize=6)
+        inset.grid(True, lw=0.3)
+        inset.set_xlabel(f"enlarged: positions {numbers[members[0]]} to "
+                         f"{numbers[members[-1]]}, N", fontsize=7)
+        ax.indicate_inset_zoom(inset, edgecolor="0.5", alpha=0.6)
+        for k in members:
+            labels.append(_label(inset, str(numbers[k]), (x[k], y[k]), color="C0",
+                                 fontsize=7, optional=k > 0))
+        done.update(members)
+    return done
 
 
 def speed_diagram(phi, WPR, WPRM=None, *, W1=None, title="", caveat=None, positions=None,
@@ -870,13 +1239,11 @@ def _draw_mesh(figure, ax, M, wheels, alfaw, teeth, title, caption):
     heights = np.concatenate(shown_y + [np.array([0.0, a_point[1], b_point[1]])]
                              + [np.array([n[1]]) for n in (n1, n2) if abs(n[0]) <= width])
     ax.set_ylim(heights.min() - M, heights.max() + M)
-    if getattr(figure, "_sarkp_own", False):     # the sheet's height follows the drawing
-        ratio = (heights.max() - heights.min() + 2 * M) / (2 * width)
-        figure.set_size_inches(7.5, min(10.0, 6.4 * ratio + 3.6))
     ax.set_xlabel("x, mm (along the common tangent at P)")
-    ax.set_ylabel("y, mm (along the centre line)")
+    ax.set_ylabel("y, mm\n(along the centre line)")
     _legend(ax, ncols=2, prop={"size": 7})
     _title(figure, [ax], title, caption=caption.format(active=active))
+    _fit_height(figure, ax)
     _place_labels(figure, labels)
     return {"N1": n1, "N2": n2, "A": a_point, "B": b_point, "active": active}
 

@@ -10,9 +10,11 @@ and a scratch file.
 
 Each routine takes sarkp's Python signature (``sarkp.printed.DPRM1(XA, YA, XC, YC, RZ2,
 RZ3, P, AAA=1.0)``) and returns the same named tuple (a FUNCTION, a float), computed by the
-printed code (COMMON results: the words of the listing's COMMON block, in order):
-scalars only, no checks, no errors; whatever the printed code does with bad
-input, it does here.  A routine whose printed code cannot run as printed raises
+printed code (COMMON results: the words of the listing's COMMON block, in order).
+Arrays broadcast as in sarkp's routines (one printed call per element; the results are
+arrays of the broadcast shape); a routine with tables takes numbers only and refuses an
+array by name.  No checks, no errors: whatever the printed code does with bad input, it
+does here.  A routine whose printed code cannot run as printed raises
 :class:`PrintedCodeError` saying why (``listings/printed.csv``).
 """
 
@@ -91,6 +93,35 @@ def _make(name: str):
         missing = [a for a in inputs if a not in values]
         if missing:
             raise TypeError(f"{name}() missing {', '.join(missing)}")
+        arrays = [a for a in inputs if a not in spec.tables and np.ndim(values[a])]
+        if arrays:
+            return sweep(values, arrays)
+        return one(values)
+
+    def sweep(values, arrays):
+        """Arrays broadcast as sarkp's routines do: one printed call per element."""
+        if spec.tables:
+            raise ValueError(f"sarkp.printed.{name}: {', '.join(arrays)} must be a number, "
+                             f"not an array: a routine with tables takes one call at a "
+                             f"time here (call it in a loop)")
+        try:
+            grid = np.broadcast_arrays(*[np.asarray(values[a], dtype=float)
+                                         for a in arrays])
+        except ValueError:
+            raise ValueError(f"sarkp.printed.{name}: the shapes of "
+                             f"{', '.join(arrays)} do not broadcast") from None
+        shape = grid[0].shape
+        results = []
+        for index in np.ndindex(shape):
+            results.append(one({**values, **{a: float(g[index])
+                                             for a, g in zip(arrays, grid)}}))
+        if spec.function:
+            return np.array(results, dtype=float).reshape(shape)
+        fields = zip(*results) if results else [[]] * len(spec.outputs)
+        return spec.result(*[np.array(f, dtype=float).reshape(shape + np.shape(f[0]))
+                             if len(f) else np.empty(shape) for f in fields])
+
+    def one(values):
         call = {}
         for a in inputs:
             v = values[a]

@@ -35,6 +35,24 @@ def _positions(fi1):
     return np.arange(1, len(fi1) + 1)
 
 
+#: Every crank angle of the program's 37 positions split into this many steps: the
+#: hodographs' curves are drawn from this sweep (10 degrees / 20 = half a degree).
+DENSE = 20
+
+#: What the hodographs' jumps are (L7551: FS = 2000 N while W3 < 0, 400 N otherwise).
+JUMP = "jump: the resistance FS switches between 2000 and 400 N (ω3 changes sign)"
+
+
+def sweep(links: dict, fi1) -> dict:
+    """The kinematics and forces stages (:func:`prog_x.kinematics`, :func:`prog_x.forces`,
+    in the current mode) over a dense sweep of the turn of ``fi1`` (the program's
+    positions, each step split into :data:`DENSE`): what the hodographs are drawn from."""
+    fi1 = np.asarray(fi1, dtype=float)
+    parts = fi1[:-1, None] + np.diff(fi1)[:, None] * (np.arange(DENSE) / DENSE)
+    dense = np.append(parts.ravel(), fi1[-1])
+    return prog_x.forces(links, prog_x.kinematics(links, dense))
+
+
 def plots(directory, stage: str | None = None, *, format: str = "png",
           dpi: float | None = None) -> list:
     """Write the pictures of the stages run (``stage``, or every stage this build can run)
@@ -125,12 +143,15 @@ def plots(directory, stage: str | None = None, *, format: str = "png",
              "x_cam_curvature")
     if "forces" in stages:
         f = done["forces"]
+        dense = sweep(done["synthesis"], f["FI1"])
         for name, where in (("21", "A (crank OA on coupler AB), F21"),
                             ("23", "B (coupler AB on lever CBD), F23"),
                             ("30", "C (lever CBD on the frame), F30"),
                             ("43", "D (rod DE on lever CBD), F43")):
             save(plot.reaction_hodograph(f["F" + name], f["G" + name],
+                                         sweep=(dense["F" + name], dense["G" + name]),
                                          label=f"reaction at {where}",
+                                         jump_label=JUMP,
                                          positions=_positions(f["FI1"]),
                                          title=title(f"Program X: hodograph of the reaction "
                                                      f"at {where.split(' (')[0]}")),
