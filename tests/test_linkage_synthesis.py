@@ -204,3 +204,168 @@ def test_slider_three_positions_exact():
     assert abs(L["e"] - e) <= 1e-12
     assert sg.grashof == "crank-slider"
     assert sg.error <= 1e-12
+
+
+# ---- motion generation: three positions -------------------------------------------------
+
+CRANK_ROCKER = np.array([0.0, 0.0, 0.4, 0.05, 0.1, 0.35, 0.3, 0.2, 0.1, 1.0])
+
+
+def test_motion_generation_three_positions():
+    """Three poses of a known four-bar's coupler give back a four-bar through them; each
+    fixed pivot is the circumcentre of its moving pivot's positions (checked by equal
+    distances here), and the Mechanism puts the coupler on the poses."""
+    design = CRANK_ROCKER
+    phi = np.array([0.2, 1.0, 1.9])
+    P = coupler_point(design, phi)
+    P2 = coupler_point(design + np.r_[np.zeros(7), 0.01, 0.0, 0.0], phi)  # along A->B
+    theta = np.arctan2(P2[:, 1] - P[:, 1], P2[:, 0] - P[:, 0])
+    poses = np.column_stack([P, theta])
+    # the known four-bar's moving pivots in the coupler's frame (origin P, x along A->B)
+    mg = sarkp.motion_generation(poses, moving=((-0.2, -0.1), (0.15, -0.1)))
+    assert mg.error <= 1e-12 and mg.angle_error <= 1e-12
+    np.testing.assert_allclose(mg.design[:4], CRANK_ROCKER[:4], atol=1e-12)
+    r = mg.mechanism.solve(mg.phi, need="positions")
+    np.testing.assert_allclose(r.position("P"), P, atol=1e-12)
+    for joint, pivot in (("A", "O"), ("B", "C")):
+        dist = np.hypot(*(r.position(joint) - r.position(pivot)).T)
+        assert np.ptp(dist) <= 1e-12
+    assert mg.grashof == sarkp.grashof_type(*(mg.lengths[k] for k in "abcd"))
+
+
+def test_motion_generation_collinear_moving_pivot():
+    poses = [(0.0, 0.0, 0.0), (0.1, 0.0, 0.0), (0.2, 0.0, 0.0)]     # pure translation
+    with pytest.raises(sarkp.RequirementError, match="collinear"):
+        sarkp.motion_generation(poses)
+
+
+# ---- path generation -----------------------------------------------------------------
+TWELVE = np.linspace(0, 2 * math.pi, 12, endpoint=False)
+BOUNDS = dict(length=(0.05, 0.5), pivot=((-0.2, 0.5), (-0.2, 0.2)))
+
+
+def test_path_generation_with_timing_recovers_the_coupler_point():
+    T = coupler_point(CRANK_ROCKER, TWELVE)
+    pg = sarkp.path_generation(T, phi=TWELVE, bounds=BOUNDS, seed=0, popsize=8,
+                               maxiter=40)
+    assert pg.error <= 1e-8
+    r = pg.mechanism.solve(TWELVE, need="positions")
+    assert np.max(np.hypot(*(r.position("P") - T).T)) <= 1e-8
+    # with timing the four-bar is unique: the known one
+    L = pg.lengths
+    assert abs(L["a"] - 0.1) <= 1e-6 and abs(L["b"] - 0.35) <= 1e-6
+    assert abs(L["c"] - 0.3) <= 1e-6
+    assert pg.grashof == "crank-rocker"
+
+
+def straight_line():
+    """Eight points on the segment y = 0.3, x in [0, 0.2]."""
+    return np.column_stack([np.linspace(0.0, 0.2, 8), np.full(8, 0.3)])
+
+
+def test_straight_line_honours_min_transmission_over_the_whole_turn():
+    T = straight_line()
+    bounds = dict(length=(0.05, 0.6), pivot=((-0.3, 0.5), (-0.3, 0.2)))
+    pg = sarkp.path_generation(T, bounds=bounds, min_transmission=40.0, seed=3,
+                               popsize=8, maxiter=30)
+    # the whole turn, every 0.1 degree, through the Mechanism: it assembles and the
+    # transmission angle (angle ABC) stays in [40, 140] degrees
+    phi = np.linspace(0, 2 * math.pi, 3600, endpoint=False)
+    r = pg.mechanism.solve(phi, need="positions")
+    assert (r.status == 0).all()
+    A, B, C = r.position("A"), r.position("B"), r.position("C")
+    u, v = A - B, C - B
+    mu = np.degrees(np.arccos((u * v).sum(1) / np.hypot(*u.T) / np.hypot(*v.T)))
+    assert mu.min() >= 40.0 - 1e-9 and mu.max() <= 140.0 + 1e-9
+    lo, hi = pg.transmission
+    assert lo <= mu.min() + 1e-9 and hi >= mu.max() - 1e-9 and lo >= 40.0 - 1e-9
+    # the reported error is the largest distance of a target from the path at pg.phi
+    P = pg.mechanism.solve(pg.phi, need="positions").position("P")
+    assert abs(pg.error - np.max(np.hypot(*(P - T).T))) <= 1e-15
+    assert pg.error < 0.02          # a usable approximate straight line (0.2 long)
+
+
+def test_impossible_transmission_is_a_requirement_error():
+    """A frame shorter than the crank's reach cannot keep 89 degrees."""
+    T = straight_line()
+    with pytest.raises(sarkp.RequirementError, match="min_transmission") as info:
+        sarkp.path_generation(T, min_transmission=89.5, seed=0, popsize=5, maxiter=5)
+    assert "best design reaches" in str(info.value)
+
+
+def test_same_seed_same_design_with_workers():
+    """The same seed gives the same design in this process, over 2 processes and on a
+    dask LocalCluster (threads, to keep CI light)."""
+    T = coupler_point(CRANK_ROCKER, TWELVE)
+    kw = dict(phi=TWELVE, bounds=BOUNDS, seed=7, popsize=5, maxiter=8, refine=False)
+    one = sarkp.path_generation(T, **kw)
+    two = sarkp.path_generation(T, workers=2, **kw)
+    np.testing.assert_array_equal(one.design, two.design)
+    distributed = pytest.importorskip("distributed")
+    with distributed.LocalCluster(n_workers=2, processes=False, dashboard_address=None) \
+            as cluster, distributed.Client(cluster) as client:
+        three = sarkp.path_generation(T, workers=client, **kw)
+    np.testing.assert_array_equal(one.design, three.design)
+    assert one.evaluations == two.evaluations == three.evaluations
+
+
+def reach_objective(population):
+    """A user's objective: make P's path 0.3 wide in x, its lowest y 0.2 (cost per
+    design, from the batched result)."""
+    P = population.position("P")
+    width = np.nanmax(P[..., 0], axis=1) - np.nanmin(P[..., 0], axis=1)
+    low = np.nanmin(P[..., 1], axis=1)
+    return np.abs(width - 0.3) + np.abs(low - 0.2)
+
+
+def test_user_objective_over_a_batched_result():
+    phi = np.linspace(0, 2 * math.pi, 72, endpoint=False)
+    res = sarkp.fourbar_search(reach_objective, phi, BOUNDS, seed=1, popsize=8,
+                               maxiter=60)
+    # the objective, recomputed from the returned mechanism's own solve
+    P = res.mechanism.solve(phi, need="positions").position("P")
+    cost = abs(np.ptp(P[:, 0]) - 0.3) + abs(P[:, 1].min() - 0.2)
+    assert abs(cost - res.objective) <= 1e-12
+    assert res.objective < 0.01
+    assert res.grashof in ("crank-rocker", "double-crank")
+
+
+# ---- bad input -------------------------------------------------------------------------
+
+@pytest.mark.parametrize("call, match", [
+    (lambda: sarkp.function_generation([0.1, 0.2], [0.3, 0.4]), "phi: 2 values"),
+    (lambda: sarkp.function_generation([0.1, 0.2, np.nan], [0.3, 0.4, 0.5]), "finite"),
+    (lambda: sarkp.function_generation([0.1, 0.3, 0.2], [0.3, 0.4, 0.5]), "monotone"),
+    (lambda: sarkp.function_generation([0.1, 0.2, 0.3], [0.3, 0.4]), "psi: 2 values"),
+    (lambda: sarkp.function_generation([0.1, 0.2, 0.3], [0.3, 0.4, 0.5], ground=-1),
+     "ground"),
+    (lambda: sarkp.function_generation([0.1, 0.2, 0.3], [0.3, 0.4, 0.5],
+                                       offsets="both"), "3 points for 5 unknowns"),
+    (lambda: sarkp.function_generation([0.1, 0.2, 0.3], [0.3, 0.4, 0.5],
+                                       offsets="x"), "offsets"),
+    (lambda: sarkp.path_generation(np.zeros((4, 2))), "at least 5"),
+    (lambda: sarkp.path_generation(np.zeros((6, 3))), "shape"),
+    (lambda: sarkp.path_generation(np.r_[straight_line(), [[np.inf, 0]]]), "finite"),
+    (lambda: sarkp.path_generation(straight_line(), phi=np.zeros(3)), "phi"),
+    (lambda: sarkp.path_generation(straight_line(), bounds=dict(length=(0.5, 0.1))),
+     "length"),
+    (lambda: sarkp.path_generation(straight_line(), bounds=dict(size=1)), "unknown"),
+    (lambda: sarkp.path_generation(straight_line(), bounds=dict(
+        length=(1.0, 2.0), pivot=((0, 0.1), (0, 0.1)))), "cannot hold"),
+    (lambda: sarkp.path_generation(straight_line(), min_transmission=95), "min_trans"),
+    (lambda: sarkp.path_generation(straight_line(), workers=0), "workers"),
+    (lambda: sarkp.motion_generation(np.zeros((2, 3))), "poses"),
+    (lambda: sarkp.slider_function_generation([0.1, 0.2, 0.3], [1, 2]), "s: 2 values"),
+])
+def test_bad_input_names_it(call, match):
+    with pytest.raises(ValueError, match=match):
+        call()
+
+
+def test_results_pickle():
+    x = chebyshev(3)
+    fg = sarkp.function_generation(phi_of(x), psi_of(x))
+    back = pickle.loads(pickle.dumps(fg))
+    assert back.lengths == fg.lengths and back.offsets == fg.offsets
+    r = back.mechanism.solve(back.phi, need="positions")
+    assert np.max(np.abs(wrap(r.angle("C", "B") - psi_of(x)))) <= 1e-12

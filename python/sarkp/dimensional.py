@@ -237,21 +237,38 @@ def _evaluate(designs, phi):
     """Solve a population of four-bars (designs (D, 10)) at the crank angles phi (n,).
 
     The one place where designs meet the Mechanism: today a loop of compiled solves,
-    one per design (the batched solve over designs replaces it in one call)."""
+    one per design, over one description whose numbers (the pivots, the lengths, the
+    branch, the coupler point) are set per design in its tables, so that the
+    description is not rebuilt each time; the batched solve over designs replaces the
+    loop with one call."""
     designs = np.atleast_2d(np.asarray(designs, dtype=float))
     phi = np.asarray(phi, dtype=float)
     D, n = designs.shape[0], phi.size
     pts = {k: np.full((D, n, 2), np.nan) for k in ("A", "B", "P")}
     ok = np.zeros((D, n), dtype=bool)
+    valid = np.isfinite(designs).all(axis=1) & (designs[:, 4:7] > 0).all(axis=1)
+    if not valid.any():
+        return FourBarPopulation(designs, phi, ok, pts)
+    m = _fourbar(designs[np.argmax(valid)])
+    tables = m._tables()
+    gr0, x0 = tables["gr"], tables["x0"]
+    iO, iC = m._points["O"], m._points["C"]
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", SignificanceWarning)
-        for i, x in enumerate(designs):
-            if not (np.all(np.isfinite(x)) and x[4] > 0 and x[5] > 0 and x[6] > 0):
-                continue
-            r = _fourbar(x).solve(phi, need="positions", on_error="nan")
-            ok[i] = r.status == 0
+        for i in np.flatnonzero(valid):
+            xO, yO, xC, yC, a, b, c, p, q, br = designs[i]
+            gr, xy = gr0.copy(order="F"), x0.copy(order="F")
+            xy[:, iO], xy[:, iC] = (xO, yO), (xC, yC)
+            gr[0, 0] = a                                      # the crank (step 1)
+            gr[:5, 1] = b, c, (1.0 if br >= 0 else -1.0), 1.0 / b, 1.0 / c   # rrr
+            r = math.hypot(p, q)                              # the point P on A-B
+            gr[:3, 2] = r, (p / r if r else 1.0), (q / r if r else 0.0)
+            tables["gr"], tables["x0"] = gr, xy
+            m._cache = tables
+            res = m.solve(phi, need="positions", on_error="nan")
+            ok[i] = res.status == 0
             for k in pts:
-                pts[k][i] = r.position(k)
+                pts[k][i] = res.position(k)
     return FourBarPopulation(designs, phi, ok, pts)
 
 
@@ -379,13 +396,13 @@ def _freudenstein_solve(phi, psi, d, a, c, free):
         k, *_ = np.linalg.lstsq(M, rhs, rcond=None)
         return M @ k - rhs
 
-    grid = np.linspace(-math.pi, math.pi, 12, endpoint=False)
+    grid = np.linspace(-math.pi, math.pi, 12 if nfree == 1 else 7, endpoint=False)
     starts = ([(g,) for g in grid] if nfree == 1 else
               [(g, h) for g in grid for h in grid])
     found = []
     for s0 in starts:
         r = least_squares(residual, np.array(s0, dtype=float), xtol=1e-15, ftol=1e-15,
-                          gtol=1e-15)
+                          gtol=1e-15, max_nfev=60)
         if np.max(np.abs(r.fun)) > 1e-11:
             continue
         M, rhs, al, be = system(r.x)
@@ -949,7 +966,8 @@ class _Problem:
             if self.objective is not None:
                 cost[good] = np.asarray(self.objective(pop), dtype=float)
             else:
-                cost[good] = _deviations(pop, self.targets, self.phi is None).max(axis=1)
+                dev = _deviations(pop, self.targets, self.phi is None)
+                cost[good] = np.sqrt(np.mean(dev * dev, axis=1))
         bad = ~np.isfinite(cost)
         cost[bad] = 10.0 * self.scale * (1.0 + v[bad] / self.scale)
         return cost
@@ -1012,51 +1030,53 @@ def _bounds_of(targets, bounds):
     return sb, (lo, hi), span
 
 
-def _refine(problem, x, free_timing, phi0):
-    """least_squares from the best design found: the design's 9 continuous variables
-    (the branch kept) and, for free timing, the crank angles of the targets."""
+def _refine(problem, x, free_timing, phi0, sb):
+    """least_squares from a design found by the search: the design's 9 continuous
+    variables (the branch kept) and, for free timing, the crank angles of the targets.
+    The Jacobian by forward differences is one batched evaluation of the perturbed
+    designs (and, for free timing, one of the design at the perturbed angles: each
+    target depends on its own angle only)."""
     from scipy.optimize import least_squares
     br = 1.0 if x[9] >= 0 else -1.0
     T = problem.targets
     n = T.shape[0]
     w = math.sqrt(1e3)
 
-    def split(z):
-        design = np.append(z[:9], br)
-        phi = z[9:] if free_timing else problem.phi
-        return design, phi
-
-    def residuals_many(Z):
-        out = []
-        for z in Z:          # free timing: each design has its own crank angles
-            design, phi = split(z)
-            pop = _evaluate([design], phi)
-            P = pop.position("P")[0]
-            r = np.where(pop.ok[0][:, None], P - T, problem.scale).ravel()
-            v = problem.violation(design[None, :])[0]
-            out.append(np.append(r, w * v))
-        return np.array(out)
-
-    def residuals_batch(Z):
-        if free_timing:
-            return residuals_many(Z)
-        designs = np.column_stack([Z[:, :9], np.full(len(Z), br)])
-        pop = _evaluate(designs, problem.phi)
+    def residuals(designs, phi):
+        pop = _evaluate(designs, phi)
         P = pop.position("P")
-        r = np.where(pop.ok[:, :, None], P - T, problem.scale).reshape(len(Z), -1)
+        r = np.where(pop.ok[:, :, None], P - T, problem.scale).reshape(len(designs), -1)
         return np.column_stack([r, w * problem.violation(designs)])
 
+    def split(z):
+        return np.append(z[:9], br), (z[9:] if free_timing else problem.phi)
+
+    def fun(z):
+        design, phi = split(z)
+        return residuals(design[None, :], phi)[0]
+
     def jac(z):
-        h = 1e-7 * np.maximum(problem.scale, np.abs(z))
-        Z = np.vstack([z] + [z + h[i] * np.eye(z.size)[i] for i in range(z.size)])
-        R = residuals_batch(Z)
-        return ((R[1:] - R[0]) / h[:, None]).T
+        design, phi = split(z)
+        h = 1e-7 * np.maximum(problem.scale, np.abs(z[:9]))
+        designs = np.vstack([design] + [design + np.append(h[i] * np.eye(9)[i], 0.0)
+                                        for i in range(9)])
+        R = residuals(designs, phi)
+        J = np.zeros((R.shape[1], z.size))
+        J[:, :9] = ((R[1:] - R[0]) / h[:, None]).T
+        if free_timing:
+            hp = 1e-7 * np.maximum(1.0, np.abs(phi))
+            Rp = residuals(design[None, :], phi + hp)[0]
+            d = (Rp - R[0])[:2 * n].reshape(n, 2) / hp[:, None]
+            J[2 * np.arange(n), 9 + np.arange(n)] = d[:, 0]
+            J[2 * np.arange(n) + 1, 9 + np.arange(n)] = d[:, 1]
+        return J
 
     z0 = np.concatenate([x[:9], phi0]) if free_timing else np.array(x[:9])
-    r = least_squares(lambda z: residuals_batch(z[None, :])[0], z0, jac=jac,
-                      xtol=1e-15, ftol=1e-15, gtol=1e-15, max_nfev=200)
-    design, phi = split(r.x)
-    return design, phi
+    lo = np.array([b[0] for b in sb[:9]] + [-np.inf] * (z0.size - 9))
+    hi = np.array([b[1] for b in sb[:9]] + [np.inf] * (z0.size - 9))
+    r = least_squares(fun, np.clip(z0, lo, hi), jac=jac, bounds=(lo, hi), xtol=1e-13,
+                      ftol=1e-13, gtol=1e-13, max_nfev=60)
+    return split(r.x)
 
 
 def _search(problem, bounds, seed, workers, popsize, maxiter, tol=1e-12):
@@ -1065,17 +1085,21 @@ def _search(problem, bounds, seed, workers, popsize, maxiter, tol=1e-12):
     with _Pool(workers) as pool:
         chunks = workers if isinstance(workers, int) else 4
 
+        count = [0]
+
         def cost(Xt):                  # scipy passes (N, S): one column per design
+            count[0] += np.shape(Xt)[1]
             return _chunked(problem, np.asarray(Xt).T, pool, chunks)
         res = differential_evolution(cost, bounds, popsize=popsize, maxiter=maxiter,
                                      seed=np.random.default_rng(seed), tol=tol,
                                      polish=False, vectorized=True, updating="deferred",
                                      init="sobol" if popsize * len(bounds) >= 16 else
                                      "latinhypercube")
+    res.designs = count[0]
     return res
 
 
-def _finish(problem, design, phi, targets, free_timing, method, evaluations):
+def _finish(problem, design, phi, targets, method, evaluations):
     m = _fourbar(design)
     with warnings.catch_warnings():
         warnings.simplefilter("ignore", SignificanceWarning)
@@ -1201,40 +1225,51 @@ def path_generation(targets, phi=None, bounds=None, min_transmission=None, seed=
         if not isinstance(v, (int, np.integer)) or v < 1:
             raise ValueError(f"{name} must be a positive int, not {v!r}")
     problem = _Problem(T, phi, length, gamma, span)
-    return _run(problem, sb, seed, workers, popsize, maxiter, refine, "path")
+    return _run(problem, sb, seed, workers, popsize, maxiter, refine, "path_generation")
 
 
-def _run(problem, sb, seed, workers, popsize, maxiter, refine, what):
+def _phi_on_curve(problem, design):
+    """The crank angles where the design's coupler curve comes closest to each target."""
+    P = _evaluate(design[None, :], TURN).position("P")[0]
+    j = np.argmin(np.hypot(P[None, :, 0] - problem.targets[:, None, 0],
+                           P[None, :, 1] - problem.targets[:, None, 1]), axis=1)
+    return TURN[j]
+
+
+def _run(problem, sb, seed, workers, popsize, maxiter, refine, what, candidates=3):
     free = problem.phi is None
     res = _search(problem, sb, seed, workers, popsize, maxiter)
     best = np.array(res.x)
     if problem.violation(best[None, :])[0] > 0:
-        raise RequirementError(f"{what}_generation: no design in the search meets the "
+        raise RequirementError(f"{what}: no design in the search meets the "
                                f"requirements: " + _requirement_report(problem, res))
-    # the crank angles of the targets on the best design's coupler curve
-    if free:
-        pop = _evaluate(best[None, :], TURN)
-        P = pop.position("P")[0]
-        j = np.argmin(np.hypot(P[None, :, 0] - problem.targets[:, None, 0],
-                               P[None, :, 1] - problem.targets[:, None, 1]), axis=1)
-        phi0 = TURN[j]
-    else:
-        phi0 = problem.phi
-    design, phi = best, phi0
+    phi0 = _phi_on_curve(problem, best) if free else problem.phi
+    out = _finish(problem, best, phi0, problem.targets, "differential_evolution",
+                  int(res.designs))
     if refine and problem.objective is None:
-        d2, p2 = _refine(problem, best, free, phi0)
-        ok = problem.violation(d2[None, :])[0] == 0
-        if ok:
-            new = _finish(problem, d2, p2, problem.targets, free, "", 0)
-            old = _finish(problem, best, phi0, problem.targets, free, "", 0)
-            if new.extra["turn_ok"] and new.error <= old.error:
-                design, phi = d2, p2
-    out = _finish(problem, design, phi, problem.targets, free,
-                  "differential_evolution" + ("+least_squares" if design is not best
-                                              else ""), int(res.nfev))
+        # least_squares from the best few distinct designs of the last population
+        order = np.argsort(res.population_energies)
+        starts = [best]
+        for k in order:
+            x = res.population[k]
+            if len(starts) >= candidates:
+                break
+            if problem.violation(x[None, :])[0] == 0 and not any(
+                    np.allclose(x, y, rtol=1e-3, atol=1e-3 * problem.scale)
+                    for y in starts):
+                starts.append(x)
+        for x in starts:
+            p0 = _phi_on_curve(problem, x) if free else problem.phi
+            d2, p2 = _refine(problem, x, free, p0, sb)
+            if problem.violation(d2[None, :])[0] > 0:
+                continue
+            new = _finish(problem, d2, p2, problem.targets,
+                          "differential_evolution+least_squares", int(res.designs))
+            if new.extra["turn_ok"] and new.error < out.error:
+                out = new
     if not out.extra["turn_ok"]:
-        raise RequirementError(f"{what}_generation: the best design does not assemble over "
-                               f"the whole turn (best deviation {out.error:.3g})")
+        raise RequirementError(f"{what}: the best design does not assemble over the "
+                               f"whole turn (best deviation {out.error:.3g})")
     if problem.objective is not None:
         out.extra["objective"] = float(res.fun)
     if free:
