@@ -43,7 +43,7 @@ module mechanism
                       unscale, angle_sensitivity, policy, failed
   implicit none
   private
-  public :: mech_solve
+  public :: mech_solve, mech_solve_many
 
 contains
 
@@ -54,11 +54,12 @@ contains
   subroutine mech_solve(need, n, np, nl, ns, gi, gr, phi, omega, epsil, inc_w, inc_e, &
                         nm, mlink, mpoint, mval, gravity, &
                         nf, fpoint, flink, nfv, fval, nt, tlink, ntv, tval, &
-                        nsp, spp, spl, spv, npair, powner, lbase, x0, nop, outp, nol, outl, &
-                        nv, na, nr, pos, vel, acc, th, om, ep, react, mbal, jred, mred, &
+                        nsp, spp, spl, nspv, spv, npair, powner, lbase, x0, nop, outp, nol, &
+                        outl, nv, na, nr, pos, vel, acc, th, om, ep, react, mbal, jred, mred, &
                         status, fgroup)
     !f2py threadsafe
-    integer, intent(in) :: need, n, np, nl, ns, nm, nf, nfv, nt, ntv, nsp, npair, nv, na, nr
+    integer, intent(in) :: need, n, np, nl, ns, nm, nf, nfv, nt, ntv, nsp, nspv, npair
+    integer, intent(in) :: nv, na, nr
     integer, intent(in) :: inc_w, inc_e, nop, nol, outp(nop), outl(nol)
     integer, intent(in) :: gi(8, ns)
     real(dp), intent(in) :: gr(8, ns), phi(n), omega(*), epsil(*)
@@ -71,7 +72,7 @@ contains
     integer, intent(in) :: tlink(nt)
     real(dp), intent(in) :: tval(nt, ntv)
     integer, intent(in) :: spp(2, nsp), spl(2, nsp)
-    real(dp), intent(in) :: spv(2, nsp)
+    real(dp), intent(in) :: spv(2, nsp, nspv)
     real(dp), intent(inout) :: pos(2, nop, n), vel(2, nop, nv), acc(2, nop, na)
     real(dp), intent(inout) :: th(2, nol, n), om(nol, nv), ep(nol, na)
     real(dp), intent(inout) :: react(3, npair, nr), mbal(nr), jred(nv), mred(nr)
@@ -80,7 +81,7 @@ contains
     real(dp), allocatable :: x(:, :), v(:, :), a(:, :), c(:), s(:), w(:), e(:)
     real(dp), allocatable :: fl(:, :), ml(:), aa(:, :), ee(:)
     integer, allocatable :: gslot(:)
-    integer :: i, k, kind, st, worst, jf, jt, fg, g, p, l
+    integer :: i, k, kind, st, worst, jf, jt, js, fg, g, p, l
     real(dp) :: est, maxest, wi, ei, w2, px, py
     logical :: masses
 
@@ -155,6 +156,13 @@ contains
       end do
       if (need >= 2) then
         wi = omega(1 + (i - 1)*inc_w)
+        ! velocities and accelerations (and the loads they make) within the range of
+        ! doubles: else the position is st_range (the caller raises RangeError)
+        if (.not. in_range(wi, epsil(1 + (i - 1)*inc_e))) then
+          status(i) = st_range
+          fgroup(i) = 0
+          cycle
+        end if
         do k = 1, nop
           p = outp(k)
           vel(1, k, i) = v(1, p)*wi
@@ -197,6 +205,20 @@ contains
   contains
 
     ! ------------------------------------------------------------------ kinematics
+
+    ! Whether the velocities x' omega and accelerations x'' omega**2 + x' epsilon of
+    ! every point and link stay below huge/16 (room for the sums of the force step)
+    logical function in_range(wi, ei)
+      real(dp), intent(in) :: wi, ei
+      real(dp) :: vm, am, lim
+      lim = huge(1.0_dp)/16.0_dp
+      vm = max(maxval(abs(v)), maxval(abs(w)))
+      in_range = abs(wi)*vm <= lim
+      if (need < 3 .or. .not. in_range) return
+      am = max(maxval(abs(a)), maxval(abs(e)))
+      in_range = wi*wi <= lim .and. (wi*wi)*am <= lim .and. abs(ei)*vm <= lim .and. &
+                 (wi*wi)*am + abs(ei)*vm <= lim
+    end function in_range
 
     ! A link's direction (cosine cl, sine sl): the angle itself is not computed here (the
     ! Python layer takes it, continuous along the sweep, only for the links asked for)
@@ -636,12 +658,13 @@ contains
         ml(l) = ml(l) + tval(j, jt)
         mr = mr + tval(j, jt)*w(l)
       end do
+      js = 1 + (i - 1)*min(nspv - 1, 1)
       do j = 1, nsp
         p = spp(1, j); q = spp(2, j)
         dl = x(:, q) - x(:, p)
         dn = norm2d(dl(1), dl(2))
         if (dn == 0.0_dp) cycle
-        ff = spv(1, j)*(dn - spv(2, j))           ! tension > 0 pulls P towards Q
+        ff = spv(1, j, js)*(dn - spv(2, j, js))   ! tension > 0 pulls P towards Q
         dl = dl/dn
         call load(spl(1, j), p, ff*dl(1), ff*dl(2))
         call load(spl(2, j), q, -ff*dl(1), -ff*dl(2))
@@ -822,6 +845,50 @@ contains
     end subroutine pairs
 
   end subroutine mech_solve
+
+  ! D designs in one call (issue 25): every numeric table of the description carries a
+  ! last axis over the designs, the outputs too; the designs share phi, omega, epsilon,
+  ! the kinds, the joints and the selection.  Each design is one mech_solve over its
+  ! slices (contiguous: no copies).
+  subroutine mech_solve_many(need, n, np, nl, ns, nd, gi, gr, phi, omega, epsil, inc_w, &
+                             inc_e, nm, mlink, mpoint, mval, gravity, &
+                             nf, fpoint, flink, nfv, fval, nt, tlink, ntv, tval, &
+                             nsp, spp, spl, nspv, spv, npair, powner, lbase, x0, nop, outp, &
+                             nol, outl, nv, na, nr, pos, vel, acc, th, om, ep, react, mbal, &
+                             jred, mred, status, fgroup)
+    !f2py threadsafe
+    integer, intent(in) :: need, n, np, nl, ns, nd, nm, nf, nfv, nt, ntv, nsp, nspv, npair
+    integer, intent(in) :: nv, na, nr
+    integer, intent(in) :: inc_w, inc_e, nop, nol, outp(nop), outl(nol)
+    integer, intent(in) :: gi(8, ns)
+    real(dp), intent(in) :: gr(8, ns, nd), phi(n), omega(*), epsil(*)
+    integer, intent(in) :: powner(np), lbase(0:nl)
+    real(dp), intent(in) :: x0(2, np, nd)
+    integer, intent(in) :: mlink(nm), mpoint(nm)
+    real(dp), intent(in) :: mval(2, nm, nd), gravity
+    integer, intent(in) :: fpoint(nf), flink(nf)
+    real(dp), intent(in) :: fval(2, nf, nfv, nd)
+    integer, intent(in) :: tlink(nt)
+    real(dp), intent(in) :: tval(nt, ntv, nd)
+    integer, intent(in) :: spp(2, nsp), spl(2, nsp)
+    real(dp), intent(in) :: spv(2, nsp, nspv, nd)
+    real(dp), intent(inout) :: pos(2, nop, n, nd), vel(2, nop, nv, nd), acc(2, nop, na, nd)
+    real(dp), intent(inout) :: th(2, nol, n, nd), om(nol, nv, nd), ep(nol, na, nd)
+    real(dp), intent(inout) :: react(3, npair, nr, nd), mbal(nr, nd), jred(nv, nd)
+    real(dp), intent(inout) :: mred(nr, nd)
+    integer, intent(inout) :: status(n, nd), fgroup(n, nd)
+    integer :: d
+    do d = 1, nd
+      call mech_solve(need, n, np, nl, ns, gi, gr(:, :, d), phi, omega, epsil, inc_w, inc_e, &
+                      nm, mlink, mpoint, mval(:, :, d), gravity, &
+                      nf, fpoint, flink, nfv, fval(:, :, :, d), nt, tlink, ntv, &
+                      tval(:, :, d), nsp, spp, spl, nspv, spv(:, :, :, d), npair, powner, &
+                      lbase, x0(:, :, d), nop, outp, nol, outl, nv, na, nr, &
+                      pos(:, :, :, d), vel(:, :, :, d), acc(:, :, :, d), th(:, :, :, d), &
+                      om(:, :, d), ep(:, :, d), react(:, :, :, d), mbal(:, d), jred(:, d), &
+                      mred(:, d), status(:, d), fgroup(:, d))
+    end do
+  end subroutine mech_solve_many
 
   ! A 2x2 system by Cramer's rule (forward stable for n = 2), for the whole-mechanism
   ! solver's velocities and accelerations, with solve2f's error bound (bound2), so that
