@@ -25,7 +25,7 @@ def blocks():
 @pytest.fixture(scope="module")
 def run():
     ns = {}
-    for block in blocks()[:2]:          # the third needs a cluster
+    for block in blocks():
         exec(compile(block, "README.md", "exec"), ns)
     return ns
 

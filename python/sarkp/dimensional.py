@@ -236,39 +236,32 @@ class FourBarPopulation:
 def _evaluate(designs, phi):
     """Solve a population of four-bars (designs (D, 10)) at the crank angles phi (n,).
 
-    The one place where designs meet the Mechanism: today a loop of compiled solves,
-    one per design, over one description whose numbers (the pivots, the lengths, the
-    branch, the coupler point) are set per design in its tables, so that the
-    description is not rebuilt each time; the batched solve over designs replaces the
-    loop with one call."""
+    The one place where designs meet the Mechanism: one description whose pivots,
+    lengths and coupler point are arrays over the designs, solved in one compiled call
+    per branch (the branch is a choice of the description, not a number)."""
     designs = np.atleast_2d(np.asarray(designs, dtype=float))
     phi = np.asarray(phi, dtype=float)
     D, n = designs.shape[0], phi.size
     pts = {k: np.full((D, n, 2), np.nan) for k in ("A", "B", "P")}
     ok = np.zeros((D, n), dtype=bool)
     valid = np.isfinite(designs).all(axis=1) & (designs[:, 4:7] > 0).all(axis=1)
-    if not valid.any():
-        return FourBarPopulation(designs, phi, ok, pts)
-    m = _fourbar(designs[np.argmax(valid)])
-    tables = m._tables()
-    gr0, x0 = tables["gr"], tables["x0"]
-    iO, iC = m._points["O"], m._points["C"]
-    with warnings.catch_warnings():
-        warnings.simplefilter("ignore", SignificanceWarning)
-        for i in np.flatnonzero(valid):
-            xO, yO, xC, yC, a, b, c, p, q, br = designs[i]
-            gr, xy = gr0.copy(order="F"), x0.copy(order="F")
-            xy[:, iO], xy[:, iC] = (xO, yO), (xC, yC)
-            gr[0, 0] = a                                      # the crank (step 1)
-            gr[:5, 1] = b, c, (1.0 if br >= 0 else -1.0), 1.0 / b, 1.0 / c   # rrr
-            r = math.hypot(p, q)                              # the point P on A-B
-            gr[:3, 2] = r, (p / r if r else 1.0), (q / r if r else 0.0)
-            tables["gr"], tables["x0"] = gr, xy
-            m._cache = tables
-            res = m.solve(phi, need="positions", on_error="nan")
-            ok[i] = res.status == 0
-            for k in pts:
-                pts[k][i] = res.position(k)
+    for branch in (1, -1):
+        idx = np.flatnonzero(valid & ((designs[:, 9] >= 0) == (branch == 1)))
+        if idx.size == 0:
+            continue
+        xO, yO, xC, yC, a, b, c, p, q = designs[idx, :9].T
+        m = Mechanism()
+        m.fixed("O", xO, yO)
+        m.fixed("C", xC, yC)
+        m.crank("A", "O", a)
+        m.rrr("B", "A", "C", b, c, branch=branch)
+        m.point("P", "A", "B", np.hypot(p, q), np.arctan2(q, p))
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", SignificanceWarning)
+            r = m.solve(phi, need="positions", on_error="nan", points=("A", "B", "P"))
+        ok[idx] = r.status == 0
+        for k in pts:
+            pts[k][idx] = r.position(k)
     return FourBarPopulation(designs, phi, ok, pts)
 
 
