@@ -160,7 +160,7 @@ def pylinkage_de(phi, T, seed, maxiter):
 
     def fitness(lk, dims, init):
         try:
-            lk.set_num_constraints(dims)
+            lk.set_constraints(dims)
             lk.set_coords(init)
             loci = np.array([step[-1] for step in lk.step(iterations=12)], dtype=float)
         except Exception:
@@ -253,13 +253,14 @@ def pictures():
             res = sarkp.path_generation(targets, min_transmission=40.0, seed=3,
                                         bounds=dict(length=(0.05, 0.6),
                                                     pivot=((-0.3, 0.5), (-0.3, 0.2))),
-                                        popsize=8, maxiter=30)
+                                        popsize=15, maxiter=150)
             title = (f"straight line, transmission >= 40 deg: worst deviation "
                      f"{res.error * 1000:.1f} mm")
         r = res.mechanism.solve(res.phi[:1], need="positions")
-        fig = r.plot(0, paths=("P",), title=title)
+        fig = r.plot(0, title=title)
         ax = fig.axes[0]
-        curve = res.mechanism.solve(TURN, need="positions").position("P")
+        curve = res.mechanism.solve(np.linspace(0, 2 * math.pi, 721),
+                                    need="positions").position("P")
         ax.plot(*curve.T, color="C0", lw=1, label="coupler curve of P")
         ax.plot(*targets.T, "rx", ms=8, label="targets")
         ax.legend(loc="best")

@@ -291,6 +291,7 @@ def test_impossible_transmission_is_a_requirement_error():
     with pytest.raises(sarkp.RequirementError, match="min_transmission") as info:
         sarkp.path_generation(T, min_transmission=89.5, seed=0, popsize=5, maxiter=5)
     assert "best design reaches" in str(info.value)
+    assert "largest deviation from the targets" in str(info.value)
 
 
 def test_same_seed_same_design_with_workers():

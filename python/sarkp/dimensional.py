@@ -611,10 +611,10 @@ def _fg_fit(phi, psi, d, a, c, free, method):
     a0, c0 = (d / K1 if K1 else 1.0), (d / K2 if K2 else 1.0)
     b2 = a0 * a0 + c0 * c0 + d * d - 2 * a0 * c0 * K3
     al0 = be0 = 0.0
-    if a0 < 0:
-        a0, al0 = -a0, math.pi
+    if a0 < 0:          # the crank half a turn on, where its zero is free
+        a0, al0 = -a0, (math.pi if free[0] else 0.0)
     if c0 < 0:
-        c0, be0 = -c0, math.pi
+        c0, be0 = -c0, (math.pi if free[1] else 0.0)
     if b2 <= 0:
         raise RequirementError("function_generation: the least-squares solution of "
                                "Freudenstein's equation has no real coupler; no start "
@@ -719,15 +719,32 @@ def slider_function_generation(phi, s, *, offset=None):
     DSNTZR's crank-slider gives it), the crank's dial zero is free instead, and
     ``phi`` holds the crank angles met.
 
+    Parameters
+    ----------
+    phi : array_like
+        Three crank angles (rad), strictly monotone.
+    s : array_like
+        The slider's three positions along the guide (x).
+    offset : float, optional
+        The guide's offset e (y of the guide); free when not given.
+
     Returns
     -------
     Synthesis
         ``mechanism`` (O, the guide's point K, A, slider B), ``error`` the largest
         slider error (length unit), ``phi`` the crank angles met, ``lengths`` a, b,
         e, ``offsets`` (alpha,), ``grashof`` "crank-slider" when the crank turns fully
-        (b >= a + |e|), else "rocking-slider", ``transmission`` the angle between
-        the rod and the guide's normal... (degrees, the angle at B between rod B->A
-        and the guide, folded to [0, 90]: 90 is best).
+        (b >= a + |e|), else "rocking-slider", ``transmission`` the smallest and
+        largest transmission angle (degrees: 90 minus the angle between the rod and
+        the guide, so 90 when the rod pushes along the guide).
+
+    Raises
+    ------
+    ValueError
+        Not three positions, values not finite, phi not monotone.
+    RequirementError
+        No crank-slider with a positive crank and rod, or every one changes branch or
+        fails to assemble between the positions.
     """
     phi = _angles("phi", phi, 3)
     s = _angles("s", s, 3)
@@ -1133,7 +1150,13 @@ def _requirement_report(problem, res):
         if worst < math.degrees(problem.gamma):
             parts.append(f"min_transmission {math.degrees(problem.gamma):.3g} deg: the "
                          f"best design reaches {worst:.3g} deg")
-    return "; ".join(parts) or "no design assembles"
+    text = "; ".join(parts) or "no design assembles"
+    if problem.objective is None:
+        phi = TURN if problem.phi is None else problem.phi
+        dev = _deviations(_evaluate(x[None, :], phi), problem.targets, problem.phi is None)
+        if np.isfinite(dev).all():
+            text += f" (that design's largest deviation from the targets: {dev.max():.3g})"
+    return text
 
 
 def path_generation(targets, phi=None, bounds=None, min_transmission=None, seed=None,
