@@ -274,11 +274,7 @@ def _map(func, chunks, workers):
         return [func(c) for c in chunks]
     if hasattr(workers, "map") and hasattr(workers, "gather"):        # dask Client
         return workers.gather(workers.map(func, chunks, pure=False))
-    if hasattr(workers, "map"):                                       # an executor/pool
-        return list(workers.map(func, chunks))
-    from concurrent.futures import ProcessPoolExecutor
-    with ProcessPoolExecutor(max_workers=int(workers)) as pool:
-        return list(pool.map(func, chunks))
+    return list(workers.map(func, chunks))                            # an executor
 
 
 def _workers(workers):
@@ -324,7 +320,7 @@ def _freudenstein_solve(phi, psi, d, a, c, free):
         K1 = d/a, K2 = d/c, K3 = (a^2 - b^2 + c^2 + d^2)/(2 a c),
 
     linear in the K of the free lengths; the offsets flagged in ``free`` (alpha, beta)
-    and found by a multistart Gauss-Newton on the projected residual.  Returns a list
+    are found by a multistart Gauss-Newton on the projected residual.  Returns a list
     of (a, b, c, alpha, beta)."""
     def system(off):
         it = iter(off)
@@ -1093,7 +1089,12 @@ def _search(problem, bounds, seed, workers, popsize, maxiter, tol=1e-12):
     from scipy.optimize import differential_evolution
     workers = _workers(workers)
     with _Pool(workers) as pool:
-        chunks = workers if isinstance(workers, int) else 4
+        if isinstance(workers, int):
+            chunks = workers
+        elif hasattr(workers, "scheduler_info"):                      # dask Client
+            chunks = max(1, len(workers.scheduler_info().get("workers", ())))
+        else:
+            chunks = getattr(workers, "_max_workers", 4)
 
         count = [0]
 
