@@ -376,9 +376,8 @@ def test_path_generation_without_timing_recovers_the_coupler_curve():
     """Without timing, the targets' crank angles are unknowns too; the result passes
     through the 12 targets (any of the three Roberts-Chebyshev cognates would).  The
     search is global but small here (80 designs a generation, 60 generations): with
-    this budget about half of the seeds reach the curve exactly (see
-    benchmarks/bench_synthesis.py), the others stop near 1e-3 m; seed 3 is one that
-    does."""
+    this budget 3 of seeds 0-7 reach the curve exactly (docs/synthesis.md), the others
+    stop between 1e-4 and 1.4e-3 m; seed 3 is one that does."""
     T = coupler_point(CRANK_ROCKER, TWELVE)
     pg = sarkp.path_generation(T, bounds=BOUNDS, seed=3, popsize=8, maxiter=60)
     assert pg.error <= 1e-8
