@@ -385,3 +385,18 @@ def test_path_generation_without_timing_recovers_the_coupler_curve():
     P = coupler_point(pg.design, pg.phi)
     assert np.max(np.hypot(*(P - T).T)) <= 1e-8
     assert pg.grashof in ("crank-rocker", "double-crank")
+
+
+def test_fit_with_free_dial_zeros():
+    """Freeing both dial zeros can only help the fit; the reported angles met and the
+    error agree with the circles' intersection at phi + alpha."""
+    xs = np.linspace(X0, X1, 21)
+    phi, psi = phi_of(xs), psi_of(xs)
+    fixed = sarkp.function_generation(phi, psi, method="minimax")
+    free = sarkp.function_generation(phi, psi, method="minimax", offsets="both")
+    al, be = free.offsets
+    np.testing.assert_allclose(free.phi, phi + al, atol=1e-15)
+    L = free.lengths
+    e = wrap(rocker_angle(L["a"], L["b"], L["c"], L["d"], phi + al, free.branch) - psi - be)
+    assert abs(free.error - np.max(np.abs(e))) <= 1e-12
+    assert free.error <= fixed.error

@@ -638,21 +638,19 @@ def _fg_fit(phi, psi, d, a, c, free, method):
         ([be0] if free[1] else [])
 
     def errors_many(X):
-        """Rocker-angle errors of several designs (rows of X), through _evaluate."""
-        designs, shift = [], []
-        for x in X:
-            aa, bb, cc, al, be = lengths(x)
-            designs.append([0.0, 0.0, d, 0.0, aa, bb, cc, 0.0, 0.0, branch])
-            shift.append((al, be))
-        shift = np.array(shift)
-        # the crank angle differs per design by its offset: solve at phi + alpha each
-        out = np.empty((len(X), phi.size))
-        for i, (dsg, (al, be)) in enumerate(zip(designs, shift)):
-            pop = _evaluate([dsg], phi + al)
-            B = pop.position("B")[0]
-            e = _wrap(np.arctan2(B[:, 1], B[:, 0] - d) - (psi + be))
-            out[i] = np.where(pop.ok[0], e, math.pi)
-        return out
+        """Rocker-angle errors of several designs (rows of X), in one batched
+        evaluation: a design's crank offset alpha is taken out by turning its frame by
+        -alpha (C at d e(-alpha)), so that every design is solved at phi itself."""
+        L = np.array([lengths(x) for x in X])          # a, b, c, alpha, beta per row
+        al, be = L[:, 3], L[:, 4]
+        designs = np.column_stack([np.zeros(len(X)), np.zeros(len(X)), d * np.cos(al),
+                                   -d * np.sin(al), L[:, :3], np.zeros((len(X), 2)),
+                                   np.full(len(X), float(branch))])
+        pop = _evaluate(designs, phi)
+        B = pop.position("B")
+        rock = np.arctan2(B[..., 1] - designs[:, 3:4], B[..., 0] - designs[:, 2:3])
+        e = _wrap(rock + al[:, None] - (psi + be[:, None]))
+        return np.where(pop.ok, e, math.pi)
 
     def jac(x, e0=None):
         h = 1e-7 * np.maximum(1.0, np.abs(x))
