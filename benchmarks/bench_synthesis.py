@@ -156,7 +156,6 @@ def pylinkage_de(phi, T, seed, maxiter):
     Tl = T @ rot.T
     linkage = fourbar_from_lengths(0.12, 0.3, 0.32, d, initial_crank_angle=-g,
                                    iterations=12)
-    pos = tuple(linkage.get_coords())
 
     def fitness(lk, dims, init):
         try:

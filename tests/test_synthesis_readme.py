@@ -10,8 +10,6 @@ import re
 import numpy as np
 import pytest
 
-import sarkp
-
 README = pathlib.Path(__file__).resolve().parents[1] / "README.md"
 
 
