@@ -1038,6 +1038,9 @@ class Mechanism:
             if code == Status.ASSEMBLY:
                 raise AssemblyError(f"{what} does not assemble {text}: the links do not "
                                     f"reach", index=index)
+            if code == Status.MISSING:
+                raise ValueError(f"{what}: unknown group kind (a description this "
+                                 f"version cannot solve)")
             if code == Status.RANGE:
                 raise RangeError(f"{what}: a result overflows {text}", index=index)
             raise SingularError(f"{what} is at a dead centre {text}: no significant "
