@@ -51,7 +51,7 @@ module mechanism
   ! the estimate is that of the unit-free system and the same in any length unit.
   type :: cram
     real(dp) :: a11, a12, a21, a22, rdet, na, nadet, s1, s2
-    integer :: st
+    integer :: st, e
   end type cram
 
 contains
@@ -663,6 +663,7 @@ contains
       integer, intent(in) :: i
       integer :: j, p, l, q, k
       real(dp) :: fx, fy, mr, dl(2), dn, ff
+      logical :: ok
       fl = 0.0_dp
       ml = 0.0_dp
       mr = 0.0_dp
@@ -707,6 +708,17 @@ contains
       ! reaction on it -F_1
       react(:, 1, i) = [-fl(1, 1), -fl(2, 1), 0.0_dp]
       mbal(i) = -ml(1)
+      ! every force and moment a finite double, else the position is st_range
+      ok = abs(mbal(i)) <= huge(1.0_dp) .and. abs(mred(i)) <= huge(1.0_dp)
+      do k = 1, npair
+        do j = 1, 3
+          ok = ok .and. abs(react(j, k, i)) <= huge(1.0_dp)
+        end do
+      end do
+      if (.not. ok) then
+        status(i) = st_range
+        fgroup(i) = 0
+      end if
     end subroutine forces
 
     integer function base(l)
@@ -731,7 +743,7 @@ contains
       integer, intent(in) :: k, kind, slot, i
       integer :: pt(3), ty(3), frl(3), l2, l3, j, st
       real(dp) :: dir(2, 3), n2(2), a(2, 2), b(2), z(2), rel, r(2), c2, d(2), f(2), cp
-      real(dp) :: out(3, 3), mp
+      real(dp) :: out(3, 3), mp, sc
       type(cram) :: sys
       l2 = gi(5, k); l3 = gi(6, k)
       call pairs(k, kind, pt, ty, dir, frl)
@@ -755,7 +767,11 @@ contains
         call coefficients(dir(1, 3), dir(2, 3), 0.0_dp, ty(2), n2, a(2, :))    ! R.u3 = -F3.u3
         b(2) = -(fl(1, l3)*dir(1, 3) + fl(2, l3)*dir(2, 3))
       end if
-      call cramer_set(a(1, 1), a(1, 2), a(2, 1), a(2, 2), sys, 1.0_dp, 1.0_dp)
+      ! column scales: the entries' size (only the singularity test uses the estimate
+      ! here; it must not overflow for a mechanism of 1e200 m)
+      sc = max(abs(a(1, 1)), abs(a(1, 2)), abs(a(2, 1)), abs(a(2, 2)))
+      if (.not. (sc > 0.0_dp .and. sc <= huge(sc))) sc = 1.0_dp
+      call cramer_set(a(1, 1), a(1, 2), a(2, 1), a(2, 2), sys, sc, sc)
       call cramer(sys, b(1), b(2), 0.0_dp, 0.0_dp, 0.0_dp, z(1), z(2), st, rel)
       if (st /= st_ok) then
         status(i) = st
@@ -925,24 +941,43 @@ contains
   ! dead-centre policy is the same in any length unit: cramer_set once per matrix, cramer
   ! each right-hand side.  det A = 0: st_singular.  (Here, beside their one caller, so
   ! that the compiler inlines them.)
+  ! Entries far from 1 (a mechanism of 1e200 m or 1e-200 m) are first scaled by a power
+  ! of 2, 2**-e, so that det neither overflows nor underflows: exact, the same bits
+  ! otherwise; cramer scales the solution back.
   pure subroutine cramer_set(a11, a12, a21, a22, f, s1, s2)
     real(dp), intent(in) :: a11, a12, a21, a22, s1, s2
     type(cram), intent(out) :: f
-    real(dp) :: det
-    f%a11 = a11
-    f%a21 = a21
-    f%a12 = a12
-    f%a22 = a22
-    f%s1 = s1
-    f%s2 = s2
-    f%na = sqrt((a11/s1)**2 + (a21/s1)**2 + (a12/s2)**2 + (a22/s2)**2)
-    det = a11*a22 - a12*a21
+    real(dp) :: det, amax
+    f%e = 0
+    amax = max(abs(a11), abs(a12), abs(a21), abs(a22))
+    if (amax > 2.0_dp**200 .or. (amax < 2.0_dp**(-200) .and. amax > 0.0_dp)) then
+      if (amax <= huge(amax)) f%e = exponent(amax)
+    end if
+    if (f%e == 0) then
+      f%a11 = a11
+      f%a21 = a21
+      f%a12 = a12
+      f%a22 = a22
+      f%s1 = s1
+      f%s2 = s2
+    else
+      f%a11 = scale(a11, -f%e)
+      f%a21 = scale(a21, -f%e)
+      f%a12 = scale(a12, -f%e)
+      f%a22 = scale(a22, -f%e)
+      f%s1 = scale(s1, -f%e)                ! only nadet below uses them so
+      f%s2 = scale(s2, -f%e)
+    end if
+    f%na = sqrt((f%a11/f%s1)**2 + (f%a21/f%s1)**2 + (f%a12/f%s2)**2 + (f%a22/f%s2)**2)
+    det = f%a11*f%a22 - f%a12*f%a21
     f%nadet = 0.0_dp
     f%rdet = 0.0_dp
     if (det /= 0.0_dp) then
       f%rdet = 1.0_dp/det
-      f%nadet = f%na*abs(s1*(s2*f%rdet))
+      f%nadet = f%na*abs(f%s1*(f%s2*f%rdet))
     end if
+    f%s1 = s1
+    f%s2 = s2
     f%st = st_ok
     if (det == 0.0_dp .or. .not. f%nadet <= huge(1.0_dp)) f%st = st_singular
   end subroutine cramer_set
@@ -958,6 +993,10 @@ contains
     if (st /= st_ok) return
     y1 = (b1*f%a22 - f%a12*b2)*f%rdet
     y2 = (f%a11*b2 - f%a21*b1)*f%rdet
+    if (f%e /= 0) then
+      y1 = scale(y1, -f%e)
+      y2 = scale(y2, -f%e)
+    end if
     if (.not. (abs(y1) <= huge(y1) .and. abs(y2) <= huge(y2))) then
       y1 = 0.0_dp; y2 = 0.0_dp
       st = st_range

@@ -154,3 +154,38 @@ def test_the_issue_reproducers():
                      reference(off, off, off + 1.0, off, args[0], args[2], args[3], phi))
         bound = 1e-8 if digits is None else 10.0 ** -digits
         assert err <= bound, (phi, off, err, digits)
+
+
+@pytest.mark.parametrize("k", [-600, -300, 300, 600])
+def test_far_scales_solve_exactly_scaled(k):
+    """A four-bar of 2**600 m (or 2**-600 m) is the same mechanism: its statuses are the
+    same and its results scale exactly (no det over- or underflowing into a RangeError or
+    a SingularError; issue 27)."""
+    phi = np.linspace(0.0, 2 * math.pi, 13)
+    base = fourbar(0.1, 0.3, 0.35, 0.3)
+    big = fourbar(0.1, 0.3, 0.35, 0.3, scale=2.0 ** k)
+    for m in (base, big):
+        m.mass("A", "B", mass=2.0, inertia=0.0, centre=0.1 * 2.0 ** (k if m is big else 0))
+    # the forces' moments scale as 2**(2k): within range for |k| = 300 only (at 600
+    # the balancing moment itself is out of the range of doubles)
+    need = "forces" if abs(k) <= 300 else "accelerations"
+    a = base.solve(phi, omega=3.0, epsilon=1.0, need=need)
+    b = big.solve(phi, omega=3.0, epsilon=1.0, need=need)
+    np.testing.assert_array_equal(a.status, b.status)
+    if need == "forces":
+        np.testing.assert_array_equal(b.reaction("B"), a.reaction("B") * 2.0 ** k)
+        np.testing.assert_array_equal(b.balancing_moment, a.balancing_moment * 4.0 ** k)
+    for name in ("A", "B"):
+        np.testing.assert_array_equal(b.position(name), a.position(name) * 2.0 ** k)
+        np.testing.assert_array_equal(b.velocity(name), a.velocity(name) * 2.0 ** k)
+        np.testing.assert_array_equal(b.acceleration(name), a.acceleration(name) * 2.0 ** k)
+    np.testing.assert_array_equal(b.epsilon("C", "B"), a.epsilon("C", "B"))
+
+
+def test_a_size_out_of_range_raises_range_error():
+    m = fourbar(0.1, 0.3, 0.35, 0.3, scale=1e300)
+    with pytest.raises(sarkp.RangeError, match="overflows"):
+        m.solve([0.3, 1.0], omega=1e10)
+    m.mass("A", "B", mass=1.0)
+    with pytest.raises(sarkp.RangeError, match="overflows"):     # M_b ~ 1e600
+        m.solve([0.3, 1.0], need="forces")

@@ -503,6 +503,9 @@ class Mechanism:
             Q = P
         else:
             self._inputs(who, P, Q)
+            if P in self._fixed and Q in self._fixed:
+                raise ValueError(f"{who}: {P!r} and {Q!r} are frame points: a point rigid "
+                                 f"with the frame is a frame point (m.fixed)")
             link = self._link(who, (P, Q))
             if not self._rigid_name(link, P, Q):
                 raise ValueError(f"{who}: the direction {P}->{Q} does not turn with the "
