@@ -703,6 +703,16 @@ class Mechanism:
         order, for each design separately), its first value in (-pi, pi]; the crank's
         angle is phi as given.
 
+        *Statuses.*  ``r.status`` 0 (OK) promises at least 8 correct significant
+        digits of every result of the position (normwise: a joint's position relative
+        to its link's length, the links' omegas and epsilons as the vector (w l) of the
+        group relative to the larger of its norm and its driving velocity); a
+        SignificanceWarning states the digits left (never too many); SingularError: no
+        digit left.  The estimates are unit-free (the same at every scale 2**k) and
+        allow for the rounding of coordinates far from the origin.
+        tests/test_mechanism_promise.py checks this for the rrr group: seeded random four-bars,
+        positions up to 1e-12 from a toggle, against a 40-digit mpmath reference.
+
         *Modes.*  The Mechanism has no as-printed mode: inside ``sarkp.as_printed()``
         it computes the corrected results (pi to double precision) and warns that it
         does; the book's routines reproduce the printed tables.
