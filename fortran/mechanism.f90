@@ -38,12 +38,21 @@
 ! crank's moment about O gives the balancing moment.  J_red = sum (m v_S'**2 + J w'**2),
 ! M_red = sum (F . v' + M w') over the external loads (no inertia).
 module mechanism
-  use prmtr, only: dp, st_ok, st_assembly, st_singular, st_range, st_digits, norm2d
-  use numerics, only: uround, system2, bound2, solve2e, tri_apex, apex_vectors, &
+  use prmtr, only: dp, st_ok, st_assembly, st_singular, st_range, st_missing, st_digits, &
+                   norm2d
+  use numerics, only: uround, bound2, solve2e, tri_apex, apex_vectors, &
                       unscale, angle_sensitivity, policy, failed
   implicit none
   private
   public :: mech_solve, mech_solve_many
+
+  ! A 2x2 system for Cramer's rule: its entries, 1/det, and for the error estimate the
+  ! scales s1, s2 of its columns (the lengths the columns are unit vectors times), so that
+  ! the estimate is that of the unit-free system and the same in any length unit.
+  type :: cram
+    real(dp) :: a11, a12, a21, a22, rdet, na, nadet, s1, s2
+    integer :: st, e
+  end type cram
 
 contains
 
@@ -263,8 +272,11 @@ contains
         call prp(k, st, est)
       case (5)
         call rpp(k, st, est)
-      case default
+      case (6)
         call rigid(k, st, est)
+      case default
+        st = st_missing                     ! an unknown kind: an error, never skipped
+        est = 0.0_dp
       end select
     end subroutine step
 
@@ -294,8 +306,8 @@ contains
       integer, intent(out) :: st
       real(dp), intent(out) :: est
       integer :: pb, pa, pc, l2, l3, ex
-      real(dp) :: dx, dy, d, pr, h, pq, dang, r2(2), r3(2), len2, len3, y1, y2, rel, sb
-      type(system2) :: f
+      real(dp) :: dx, dy, d, pr, h, pq, dang, r2(2), r3(2), len2, len3, y1, y2, rel, sb, sx, ev
+      type(cram) :: f
       pb = gi(2, k); pa = gi(3, k); pc = gi(4, k); l2 = gi(5, k); l3 = gi(6, k)
       len2 = gr(1, k); len3 = gr(2, k)
       dx = x(1, pc) - x(1, pa)
@@ -315,10 +327,16 @@ contains
       x(:, pb) = x(:, pa) + r2
       call set_link(l2, r2(1)*gr(4, k), r2(2)*gr(4, k))      ! gr(4:5) = 1/l2, 1/l3
       call set_link(l3, r3(1)*gr(5, k), r3(2)*gr(5, k))
+      ! d carries the rounding of the coordinates it is the difference of (far from the
+      ! origin more than that of d itself, which dang allows for): the angles move by
+      ! 2u (sx d + l2**2 + l3**2)/(d h) instead of 2u (d**2 + l2**2 + l3**2)/(d h)
+      sx = abs(x(1, pa)) + abs(x(2, pa)) + abs(x(1, pc)) + abs(x(2, pc))
+      if (sx > d) dang = dang*((sx/d)*(d/len2)*(d/len3) + len2/len3 + len3/len2)/ &
+                             ((d/len2)*(d/len3) + len2/len3 + len3/len2)
       est = dang
       if (need < 2) return
-      ! v_A + w2 k x r2 = v_C + w3 k x r3
-      call cramer_set(-r2(2), r3(2), r2(1), -r3(1), f)
+      ! v_A + w2 k x r2 = v_C + w3 k x r3 (columns: unit vectors times l2, l3)
+      call cramer_set(-r2(2), r3(2), r2(1), -r3(1), f, len2, len3)
       sb = abs(v(1, pa)) + abs(v(2, pa)) + abs(v(1, pc)) + abs(v(2, pc))
       call cramer(f, v(1, pc) - v(1, pa), v(2, pc) - v(2, pa), dang, 4.0_dp*uround*sb, sb, &
                    y1, y2, st, rel)
@@ -328,9 +346,13 @@ contains
       w(l3) = y2
       v(:, pb) = v(:, pa) + y1*[-r2(2), r2(1)]
       if (need < 3) return
+      ! the velocities' error (absolute, in w' l units) enters through w'**2 l
+      ev = abs_err(f, y1, y2, sb, rel)
       call cramer(f, a(1, pc) - a(1, pa) - y2**2*r3(1) + y1**2*r2(1), &
                    a(2, pc) - a(2, pa) - y2**2*r3(2) + y1**2*r2(2), dang, &
-                   4.0_dp*uround*(sb + y1**2*len2 + y2**2*len3), sb, y1, y2, st, rel)
+                   4.0_dp*uround*(sb + y1**2*len2 + y2**2*len3) &
+                   + ev*(2.0_dp*abs(y1) + ev/len2) + ev*(2.0_dp*abs(y2) + ev/len3), &
+                   sb, y1, y2, st, rel)
       if (failed(st)) return
       est = max(est, rel)
       e(l2) = y1
@@ -354,8 +376,8 @@ contains
       real(dp), intent(out) :: est
       integer :: pb, pa, pk, l2, l3, lm
       real(dp) :: u(2), nn(2), wv(2), along, perp, off, len2, cq, root, sl, r2(2), dc, sq
-      real(dp) :: vg(2), ag(2), y1, y2, rel, sb
-      type(system2) :: f
+      real(dp) :: vg(2), ag(2), y1, y2, rel, sb, ev
+      type(cram) :: f
       pb = gi(2, k); pa = gi(3, k); pk = gi(4, k); l2 = gi(5, k); l3 = gi(6, k); lm = gi(7, k)
       len2 = gr(1, k); off = gr(5, k)
       u = guide(lm, gr(3, k), gr(4, k))
@@ -393,7 +415,7 @@ contains
       if (need < 2) return
       ! v_A + w2 k x r2 = v_G(B) + s' u
       call carried(lm, pk, x(:, pb), vg, ag)
-      call cramer_set(-r2(2), -u(1), r2(1), -u(2), f)
+      call cramer_set(-r2(2), -u(1), r2(1), -u(2), f, len2, 1.0_dp)
       sb = abs(v(1, pa)) + abs(v(2, pa)) + abs(vg(1)) + abs(vg(2))
       call cramer(f, vg(1) - v(1, pa), vg(2) - v(2, pa), est + 4.0_dp*uround, &
                    4.0_dp*uround*sb, sb, y1, y2, st, rel)
@@ -403,9 +425,11 @@ contains
       w(l3) = w(lm)
       v(:, pb) = v(:, pa) + y1*[-r2(2), r2(1)]
       if (need < 3) return
+      ev = abs_err(f, y1, y2, sb, rel)
       ag = ag + 2.0_dp*w(lm)*y2*nn - a(:, pa) + y1**2*r2
       call cramer(f, ag(1), ag(2), est + 4.0_dp*uround, &
-                   4.0_dp*uround*(sb + y1**2*len2), sb, y1, y2, st, rel)
+                   4.0_dp*uround*(sb + y1**2*len2) + ev*(2.0_dp*abs(y1) + ev/len2) &
+                   + 2.0_dp*abs(w(lm))*ev, sb, y1, y2, st, rel)
       if (failed(st)) return
       est = max(est, rel)
       e(l2) = y1
@@ -421,8 +445,8 @@ contains
       real(dp), intent(out) :: est
       integer :: pb, pa, pc, l2, l3
       real(dp) :: dx, dy, d, h, sq, cq, u(2), nn(2), fb(2), e3(2), n3(2), sl, ds
-      real(dp) :: rac(2), y1, y2, rel, sb, sd
-      type(system2) :: f
+      real(dp) :: rac(2), y1, y2, rel, sb, sd, ev
+      type(cram) :: f
       pb = gi(2, k); pa = gi(3, k); pc = gi(4, k); l2 = gi(5, k); l3 = gi(6, k)
       h = abs(gr(1, k))
       dx = x(1, pc) - x(1, pa)
@@ -461,7 +485,7 @@ contains
       if (need < 2) return
       ! v_A = v_C + w3 k x (A - C) + s' e3
       rac = x(:, pa) - x(:, pc)
-      call cramer_set(-rac(2), e3(1), rac(1), e3(2), f)
+      call cramer_set(-rac(2), e3(1), rac(1), e3(2), f, d, 1.0_dp)
       sb = abs(v(1, pa)) + abs(v(2, pa)) + abs(v(1, pc)) + abs(v(2, pc))
       call cramer(f, v(1, pa) - v(1, pc), v(2, pa) - v(2, pc), est + 4.0_dp*uround, &
                    4.0_dp*uround*sb, sb, y1, y2, st, rel)
@@ -472,9 +496,11 @@ contains
       sd = y2
       v(:, pb) = v(:, pc) + y1*sl*n3 + sd*e3
       if (need < 3) return
+      ev = abs_err(f, y1, sd, sb, rel)
       call cramer(f, a(1, pa) - a(1, pc) + y1**2*rac(1) - 2.0_dp*y1*sd*n3(1), &
                    a(2, pa) - a(2, pc) + y1**2*rac(2) - 2.0_dp*y1*sd*n3(2), &
-                   est + 4.0_dp*uround, 4.0_dp*uround*(sb + y1**2*d + abs(y1*sd)), sb, &
+                   est + 4.0_dp*uround, 4.0_dp*uround*(sb + y1**2*d + abs(y1*sd)) &
+                   + ev*(2.0_dp*abs(y1) + ev/d) + 2.0_dp*(abs(y1)*ev + abs(sd)*ev/d), sb, &
                    y1, y2, st, rel)
       if (failed(st)) return
       est = max(est, rel)
@@ -491,8 +517,8 @@ contains
       real(dp), intent(out) :: est
       integer :: pb, pa, pc, l2, l3, lm, ln
       real(dp) :: um(2), un(2), nm_(2), nn(2), dca(2), bx, by, sb, rel
-      real(dp) :: vgm(2), agm(2), vgn(2), agn(2), y1, y2, s2, s3
-      type(system2) :: f
+      real(dp) :: vgm(2), agm(2), vgn(2), agn(2), y1, y2, s2, s3, ev
+      type(cram) :: f
       pb = gi(2, k); pa = gi(3, k); pc = gi(4, k); l2 = gi(5, k); l3 = gi(6, k)
       lm = gi(7, k); ln = gi(8, k)
       um = guide(lm, gr(1, k), gr(2, k))
@@ -511,7 +537,7 @@ contains
       if (need < 2) return
       call carried(lm, pa, x(:, pb), vgm, agm)
       call carried(ln, pc, x(:, pb), vgn, agn)
-      call cramer_set(um(1), -un(1), um(2), -un(2), f)
+      call cramer_set(um(1), -un(1), um(2), -un(2), f, 1.0_dp, 1.0_dp)
       sb = abs(vgm(1)) + abs(vgm(2)) + abs(vgn(1)) + abs(vgn(2))
       call cramer(f, vgn(1) - vgm(1), vgn(2) - vgm(2), est + 4.0_dp*uround, &
                    4.0_dp*uround*sb, sb, s2, s3, st, rel)
@@ -521,10 +547,11 @@ contains
       w(l3) = w(ln)
       v(:, pb) = vgm + s2*um
       if (need < 3) return
+      ev = abs_err(f, s2, s3, sb, rel)
       call cramer(f, agn(1) + 2.0_dp*w(ln)*s3*nn(1) - agm(1) - 2.0_dp*w(lm)*s2*nm_(1), &
                    agn(2) + 2.0_dp*w(ln)*s3*nn(2) - agm(2) - 2.0_dp*w(lm)*s2*nm_(2), &
-                   est + 4.0_dp*uround, 4.0_dp*uround*(sb + abs(w(ln)*s3) + abs(w(lm)*s2)), &
-                   sb, y1, y2, st, rel)
+                   est + 4.0_dp*uround, 4.0_dp*uround*(sb + abs(w(ln)*s3) + abs(w(lm)*s2)) &
+                   + 2.0_dp*(abs(w(ln)) + abs(w(lm)))*ev, sb, y1, y2, st, rel)
       if (failed(st)) return
       est = max(est, rel)
       e(l2) = e(lm)
@@ -541,8 +568,8 @@ contains
       real(dp), intent(out) :: est
       integer :: pk, pa, pc, l2, l3, lm
       real(dp) :: um(2), us(2), nm_(2), ns_(2), dca(2), s2, s3, sb, rel
-      real(dp) :: vgc(2), agc(2), vgk(2), agk(2), y1, y2, d2, d3
-      type(system2) :: f
+      real(dp) :: vgc(2), agc(2), vgk(2), agk(2), y1, y2, d2, d3, ev
+      type(cram) :: f
       pk = gi(2, k); pa = gi(3, k); pc = gi(4, k); l2 = gi(5, k); l3 = gi(6, k); lm = gi(7, k)
       um = guide(lm, gr(1, k), gr(2, k))
       us = [um(1)*gr(3, k) - um(2)*gr(4, k), um(2)*gr(3, k) + um(1)*gr(4, k)]
@@ -559,7 +586,7 @@ contains
       if (need < 2) return
       call carried(lm, pa, x(:, pc), vgc, agc)
       call carried(lm, pa, x(:, pk), vgk, agk)
-      call cramer_set(um(1), us(1), um(2), us(2), f)
+      call cramer_set(um(1), us(1), um(2), us(2), f, 1.0_dp, 1.0_dp)
       sb = abs(v(1, pc)) + abs(v(2, pc)) + abs(vgc(1)) + abs(vgc(2))
       call cramer(f, v(1, pc) - vgc(1), v(2, pc) - vgc(2), est + 4.0_dp*uround, &
                    4.0_dp*uround*sb, sb, d2, d3, st, rel)
@@ -569,10 +596,11 @@ contains
       w(l3) = w(lm)
       v(:, pk) = vgk + d2*um
       if (need < 3) return
+      ev = abs_err(f, d2, d3, sb, rel)
       call cramer(f, a(1, pc) - agc(1) - 2.0_dp*w(lm)*(d2*nm_(1) + d3*ns_(1)), &
                    a(2, pc) - agc(2) - 2.0_dp*w(lm)*(d2*nm_(2) + d3*ns_(2)), &
-                   est + 4.0_dp*uround, 4.0_dp*uround*(sb + abs(w(lm))*(abs(d2) + abs(d3))), &
-                   sb, y1, y2, st, rel)
+                   est + 4.0_dp*uround, 4.0_dp*uround*(sb + abs(w(lm))*(abs(d2) + abs(d3))) &
+                   + 4.0_dp*abs(w(lm))*ev, sb, y1, y2, st, rel)
       if (failed(st)) return
       est = max(est, rel)
       e(l2) = e(lm)
@@ -635,6 +663,7 @@ contains
       integer, intent(in) :: i
       integer :: j, p, l, q, k
       real(dp) :: fx, fy, mr, dl(2), dn, ff
+      logical :: ok
       fl = 0.0_dp
       ml = 0.0_dp
       mr = 0.0_dp
@@ -679,6 +708,17 @@ contains
       ! reaction on it -F_1
       react(:, 1, i) = [-fl(1, 1), -fl(2, 1), 0.0_dp]
       mbal(i) = -ml(1)
+      ! every force and moment a finite double, else the position is st_range
+      ok = abs(mbal(i)) <= huge(1.0_dp) .and. abs(mred(i)) <= huge(1.0_dp)
+      do k = 1, npair
+        do j = 1, 3
+          ok = ok .and. abs(react(j, k, i)) <= huge(1.0_dp)
+        end do
+      end do
+      if (.not. ok) then
+        status(i) = st_range
+        fgroup(i) = 0
+      end if
     end subroutine forces
 
     integer function base(l)
@@ -703,8 +743,8 @@ contains
       integer, intent(in) :: k, kind, slot, i
       integer :: pt(3), ty(3), frl(3), l2, l3, j, st
       real(dp) :: dir(2, 3), n2(2), a(2, 2), b(2), z(2), rel, r(2), c2, d(2), f(2), cp
-      real(dp) :: out(3, 3), mp
-      type(system2) :: sys
+      real(dp) :: out(3, 3), mp, sc
+      type(cram) :: sys
       l2 = gi(5, k); l3 = gi(6, k)
       call pairs(k, kind, pt, ty, dir, frl)
       n2 = [-dir(2, 2), dir(1, 2)]
@@ -727,7 +767,11 @@ contains
         call coefficients(dir(1, 3), dir(2, 3), 0.0_dp, ty(2), n2, a(2, :))    ! R.u3 = -F3.u3
         b(2) = -(fl(1, l3)*dir(1, 3) + fl(2, l3)*dir(2, 3))
       end if
-      call cramer_set(a(1, 1), a(1, 2), a(2, 1), a(2, 2), sys)
+      ! column scales: the entries' size (only the singularity test uses the estimate
+      ! here; it must not overflow for a mechanism of 1e200 m)
+      sc = max(abs(a(1, 1)), abs(a(1, 2)), abs(a(2, 1)), abs(a(2, 2)))
+      if (.not. (sc > 0.0_dp .and. sc <= huge(sc))) sc = 1.0_dp
+      call cramer_set(a(1, 1), a(1, 2), a(2, 1), a(2, 2), sys, sc, sc)
       call cramer(sys, b(1), b(2), 0.0_dp, 0.0_dp, 0.0_dp, z(1), z(2), st, rel)
       if (st /= st_ok) then
         status(i) = st
@@ -891,31 +935,55 @@ contains
   end subroutine mech_solve_many
 
   ! A 2x2 system by Cramer's rule (forward stable for n = 2), for the whole-mechanism
-  ! solver's velocities and accelerations, with solve2f's error bound (bound2), so that
-  ! the dead-centre policy is the same: cramer_set once per matrix, cramer each
-  ! right-hand side.  det A = 0: st_singular.  (Here, beside their one caller, so
+  ! solver's velocities and accelerations, with solve2f's error bound (bound2) taken for
+  ! the system whose columns are divided by their scales s1, s2 (unit vectors for the
+  ! kinematics: the estimate is unit-free, as DKNMA1's with its unit vectors), so that the
+  ! dead-centre policy is the same in any length unit: cramer_set once per matrix, cramer
+  ! each right-hand side.  det A = 0: st_singular.  (Here, beside their one caller, so
   ! that the compiler inlines them.)
-  pure subroutine cramer_set(a11, a12, a21, a22, f)
-    real(dp), intent(in) :: a11, a12, a21, a22
-    type(system2), intent(out) :: f
-    f%lu(1, 1) = a11
-    f%lu(2, 1) = a21
-    f%lu(1, 2) = a12
-    f%lu(2, 2) = a22
-    f%na = sqrt(a11**2 + a12**2 + a21**2 + a22**2)
-    f%det = a11*a22 - a12*a21
-    f%nadet = 0.0_dp
-    f%r = 0.0_dp
-    if (f%det /= 0.0_dp) then
-      f%r(1) = 1.0_dp/f%det
-      f%nadet = f%na*abs(f%r(1))
+  ! Entries far from 1 (a mechanism of 1e200 m or 1e-200 m) are first scaled by a power
+  ! of 2, 2**-e, so that det neither overflows nor underflows: exact, the same bits
+  ! otherwise; cramer scales the solution back.
+  pure subroutine cramer_set(a11, a12, a21, a22, f, s1, s2)
+    real(dp), intent(in) :: a11, a12, a21, a22, s1, s2
+    type(cram), intent(out) :: f
+    real(dp) :: det, amax
+    f%e = 0
+    amax = max(abs(a11), abs(a12), abs(a21), abs(a22))
+    if (amax > 2.0_dp**200 .or. (amax < 2.0_dp**(-200) .and. amax > 0.0_dp)) then
+      if (amax <= huge(amax)) f%e = exponent(amax)
     end if
+    if (f%e == 0) then
+      f%a11 = a11
+      f%a21 = a21
+      f%a12 = a12
+      f%a22 = a22
+      f%s1 = s1
+      f%s2 = s2
+    else
+      f%a11 = scale(a11, -f%e)
+      f%a21 = scale(a21, -f%e)
+      f%a12 = scale(a12, -f%e)
+      f%a22 = scale(a22, -f%e)
+      f%s1 = scale(s1, -f%e)                ! only nadet below uses them so
+      f%s2 = scale(s2, -f%e)
+    end if
+    f%na = sqrt((f%a11/f%s1)**2 + (f%a21/f%s1)**2 + (f%a12/f%s2)**2 + (f%a22/f%s2)**2)
+    det = f%a11*f%a22 - f%a12*f%a21
+    f%nadet = 0.0_dp
+    f%rdet = 0.0_dp
+    if (det /= 0.0_dp) then
+      f%rdet = 1.0_dp/det
+      f%nadet = f%na*abs(f%s1*(f%s2*f%rdet))
+    end if
+    f%s1 = s1
+    f%s2 = s2
     f%st = st_ok
-    if (f%det == 0.0_dp .or. .not. f%nadet <= huge(1.0_dp)) f%st = st_singular
+    if (det == 0.0_dp .or. .not. f%nadet <= huge(1.0_dp)) f%st = st_singular
   end subroutine cramer_set
 
   pure subroutine cramer(f, b1, b2, da, db, sb, y1, y2, st, rel)
-    type(system2), intent(in) :: f
+    type(cram), intent(in) :: f
     real(dp), intent(in) :: b1, b2, da, db, sb
     real(dp), intent(out) :: y1, y2, rel
     integer, intent(out) :: st
@@ -923,14 +991,26 @@ contains
     rel = huge(1.0_dp)
     st = f%st
     if (st /= st_ok) return
-    y1 = (b1*f%lu(2, 2) - f%lu(1, 2)*b2)*f%r(1)     ! r(1) = 1/det (cramer_set)
-    y2 = (f%lu(1, 1)*b2 - f%lu(2, 1)*b1)*f%r(1)
+    y1 = (b1*f%a22 - f%a12*b2)*f%rdet
+    y2 = (f%a11*b2 - f%a21*b1)*f%rdet
+    if (f%e /= 0) then
+      y1 = scale(y1, -f%e)
+      y2 = scale(y2, -f%e)
+    end if
     if (.not. (abs(y1) <= huge(y1) .and. abs(y2) <= huge(y2))) then
       y1 = 0.0_dp; y2 = 0.0_dp
       st = st_range
       return
     end if
-    rel = bound2(f%na, f%nadet, y1, y2, da, db, sb)
+    rel = bound2(f%na, f%nadet, y1*f%s1, y2*f%s2, da, db, sb)
   end subroutine cramer
+
+  ! The absolute error (in the units of the scaled unknowns y1 s1, y2 s2) that cramer's
+  ! relative estimate rel stands for: rel times bound2's denominator.
+  pure real(dp) function abs_err(f, y1, y2, sb, rel)
+    type(cram), intent(in) :: f
+    real(dp), intent(in) :: y1, y2, sb, rel
+    abs_err = rel*max(norm2d(y1*f%s1, y2*f%s2), sb/f%na)
+  end function abs_err
 
 end module mechanism

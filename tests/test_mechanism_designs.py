@@ -295,3 +295,9 @@ def test_overflowing_velocities_raise_range_error():
     # large but representable: fine
     r = m.solve([0.3, 1.0], omega=1e100, need="forces")
     assert np.all(np.isfinite(r.acceleration("B"))) and np.all(r.status == 0)
+
+
+def test_a_point_on_the_frame_says_so():
+    m = fourbar()
+    with pytest.raises(ValueError, match="frame points: a point rigid with the frame"):
+        m.point("D", "O", "C", 0.1)

@@ -503,6 +503,9 @@ class Mechanism:
             Q = P
         else:
             self._inputs(who, P, Q)
+            if P in self._fixed and Q in self._fixed:
+                raise ValueError(f"{who}: {P!r} and {Q!r} are frame points: a point rigid "
+                                 f"with the frame is a frame point (m.fixed)")
             link = self._link(who, (P, Q))
             if not self._rigid_name(link, P, Q):
                 raise ValueError(f"{who}: the direction {P}->{Q} does not turn with the "
@@ -699,6 +702,16 @@ class Mechanism:
         *Angles.*  ``r.angle`` is continuous along the positions (phi flattened in C
         order, for each design separately), its first value in (-pi, pi]; the crank's
         angle is phi as given.
+
+        *Statuses.*  ``r.status`` 0 (OK) promises at least 8 correct significant
+        digits of every result of the position (normwise: a joint's position relative
+        to its link's length, the links' omegas and epsilons as the vector (w l) of the
+        group relative to the larger of its norm and its driving velocity); a
+        SignificanceWarning states the digits left (never too many); SingularError: no
+        digit left.  The estimates are unit-free (the same at every scale 2**k) and
+        allow for the rounding of coordinates far from the origin.
+        tests/test_mechanism_promise.py checks this for the rrr group: seeded random four-bars,
+        positions up to 1e-12 from a toggle, against a 40-digit mpmath reference.
 
         *Modes.*  The Mechanism has no as-printed mode: inside ``sarkp.as_printed()``
         it computes the corrected results (pi to double precision) and warns that it
@@ -1038,6 +1051,9 @@ class Mechanism:
             if code == Status.ASSEMBLY:
                 raise AssemblyError(f"{what} does not assemble {text}: the links do not "
                                     f"reach", index=index)
+            if code == Status.MISSING:
+                raise ValueError(f"{what}: unknown group kind (a description this "
+                                 f"version cannot solve)")
             if code == Status.RANGE:
                 raise RangeError(f"{what}: a result overflows {text}", index=index)
             raise SingularError(f"{what} is at a dead centre {text}: no significant "
