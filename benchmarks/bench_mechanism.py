@@ -307,5 +307,84 @@ def main():
     fig.savefig(res / "mechanism.png", dpi=110)
 
 
+def contract():
+    """Issue 25's contract, measured in one interleaved run: D designs in one call against
+    a Python loop of D solves and against the C loop ``fourbar_mech`` called once per
+    design (ctypes: about 2 us of call overhead each, included); points=/links= against
+    storing everything; out= against fresh outputs; a one-position solve against a
+    scalar DVKT call.  ``python benchmarks/bench_mechanism.py contract``."""
+    loops = Loops()
+    D, n = 200, 361
+    phi = np.linspace(0.0, 2 * math.pi, n)
+    rab = np.linspace(0.34, 0.36, D)
+    many = sarkp.Mechanism()
+    many.fixed("O", 0.0, 0.0)
+    many.fixed("C", FOURBAR["xc"], FOURBAR["yc"])
+    many.crank("A", "O", FOURBAR["roa"])
+    many.rrr("B", "A", "C", rab, FOURBAR["rcb"], branch=1)
+    singles = []
+    for d in range(D):
+        m = sarkp.Mechanism()
+        m.fixed("O", 0.0, 0.0)
+        m.fixed("C", FOURBAR["xc"], FOURBAR["yc"])
+        m.crank("A", "O", FOURBAR["roa"])
+        m.rrr("B", "A", "C", rab[d], FOURBAR["rcb"], branch=1)
+        singles.append(m)
+    saved = FOURBAR["rab"]
+
+    def c_loop():
+        out = []
+        for d in range(D):
+            FOURBAR["rab"] = rab[d]
+            out.append(loops.fourbar_mech(phi))
+        FOURBAR["rab"] = saved
+        return out
+    r = many.solve(phi, omega=W1)
+    ref = c_loop()
+    err = max(_max_error(r._replace(**{f: getattr(r, f)[d] for f in (
+        "positions", "velocities", "accelerations", "directions", "omegas", "epsilons")}),
+        ref[d]) for d in range(D))
+    t = best_of({"designs": lambda: many.solve(phi, omega=W1),
+                 "loop": lambda: [m.solve(phi, omega=W1) for m in singles],
+                 "c": c_loop})
+    print(f"| {D} four-bars x {n} positions, full kinematics | C loop (`fourbar_mech`) per "
+          f"design | {t['c'] / (D * n) * 1e9:.1f} ns | | |")
+    print(f"| | Mechanism.solve, {D} designs in one call | {t['designs'] / (D * n) * 1e9:.1f}"
+          f" ns | {t['designs'] / t['c']:.2f} x C | {err:.1e} |")
+    print(f"| | Python loop of {D} solves | {t['loop'] / (D * n) * 1e9:.1f} ns | "
+          f"{t['loop'] / t['designs']:.2f} x designs | |")
+    g = sixbar_geometry()
+    six = sixbar_mechanism(g)
+    for N in (10 ** 5, 360):
+        ph = np.linspace(0.0, 2 * math.pi, N, endpoint=False)
+        sel = dict(points=("E",), links=(("D", "E"),))
+        keep = six.solve(ph, omega=W1, **sel)
+        t = best_of({"full": lambda: six.solve(ph, omega=W1),
+                     "sel": lambda: six.solve(ph, omega=W1, **sel),
+                     "out": lambda: six.solve(ph, omega=W1, out=keep, **sel),
+                     "c": lambda: loops.sixbar(ph, 3, g)})
+        print(f"| six-bar, N = {N} | C loop (`sixbar`), full (44 numbers) | "
+              f"{t['c'] / N * 1e9:.1f} ns | | |")
+        print(f"| | Mechanism.solve, full | {t['full'] / N * 1e9:.1f} ns | "
+              f"{t['full'] / t['c']:.2f} x C | |")
+        print(f"| | Mechanism.solve, points=('E',), links=(('D', 'E'),) (10 numbers) | "
+              f"{t['sel'] / N * 1e9:.1f} ns | {t['sel'] / t['c']:.2f} x C | |")
+        print(f"| | the same with out= | {t['out'] / N * 1e9:.1f} ns | "
+              f"{t['out'] / t['c']:.2f} x C | |")
+    m4 = fourbar_mechanism()
+    R = FOURBAR
+    t = best_of({"solve": lambda: m4.solve(0.3, omega=W1),
+                 "sel": lambda: m4.solve(0.3, omega=W1, points=("B",), links=()),
+                 "dvkt": lambda: sarkp.DVKT(0.0, 0.0, R["roa"], 0.3)})
+    print(f"| one position, four-bar | DVKT (scalar) | {t['dvkt'] * 1e6:.2f} us | | |")
+    print(f"| | Mechanism.solve(0.3) | {t['solve'] * 1e6:.2f} us | "
+          f"{t['solve'] / t['dvkt']:.1f} x DVKT | |")
+    print(f"| | Mechanism.solve(0.3, points=('B',), links=()) | {t['sel'] * 1e6:.2f} us | "
+          f"{t['sel'] / t['dvkt']:.1f} x DVKT | |")
+
+
 if __name__ == "__main__":
-    main()
+    if sys.argv[1:] == ["contract"]:
+        contract()
+    else:
+        main()

@@ -38,12 +38,21 @@
 ! crank's moment about O gives the balancing moment.  J_red = sum (m v_S'**2 + J w'**2),
 ! M_red = sum (F . v' + M w') over the external loads (no inertia).
 module mechanism
-  use prmtr, only: dp, st_ok, st_assembly, st_singular, st_range, st_digits, norm2d
-  use numerics, only: uround, system2, bound2, solve2e, tri_apex, apex_vectors, &
+  use prmtr, only: dp, st_ok, st_assembly, st_singular, st_range, st_missing, st_digits, &
+                   norm2d
+  use numerics, only: uround, bound2, solve2e, tri_apex, apex_vectors, &
                       unscale, angle_sensitivity, policy, failed
   implicit none
   private
-  public :: mech_solve
+  public :: mech_solve, mech_solve_many
+
+  ! A 2x2 system for Cramer's rule: its entries, 1/det, and for the error estimate the
+  ! scales s1, s2 of its columns (the lengths the columns are unit vectors times), so that
+  ! the estimate is that of the unit-free system and the same in any length unit.
+  type :: cram
+    real(dp) :: a11, a12, a21, a22, rdet, na, nadet, s1, s2
+    integer :: st, e
+  end type cram
 
 contains
 
@@ -54,11 +63,12 @@ contains
   subroutine mech_solve(need, n, np, nl, ns, gi, gr, phi, omega, epsil, inc_w, inc_e, &
                         nm, mlink, mpoint, mval, gravity, &
                         nf, fpoint, flink, nfv, fval, nt, tlink, ntv, tval, &
-                        nsp, spp, spl, spv, npair, powner, lbase, x0, nop, outp, nol, outl, &
-                        nv, na, nr, pos, vel, acc, th, om, ep, react, mbal, jred, mred, &
+                        nsp, spp, spl, nspv, spv, npair, powner, lbase, x0, nop, outp, nol, &
+                        outl, nv, na, nr, pos, vel, acc, th, om, ep, react, mbal, jred, mred, &
                         status, fgroup)
     !f2py threadsafe
-    integer, intent(in) :: need, n, np, nl, ns, nm, nf, nfv, nt, ntv, nsp, npair, nv, na, nr
+    integer, intent(in) :: need, n, np, nl, ns, nm, nf, nfv, nt, ntv, nsp, nspv, npair
+    integer, intent(in) :: nv, na, nr
     integer, intent(in) :: inc_w, inc_e, nop, nol, outp(nop), outl(nol)
     integer, intent(in) :: gi(8, ns)
     real(dp), intent(in) :: gr(8, ns), phi(n), omega(*), epsil(*)
@@ -71,7 +81,7 @@ contains
     integer, intent(in) :: tlink(nt)
     real(dp), intent(in) :: tval(nt, ntv)
     integer, intent(in) :: spp(2, nsp), spl(2, nsp)
-    real(dp), intent(in) :: spv(2, nsp)
+    real(dp), intent(in) :: spv(2, nsp, nspv)
     real(dp), intent(inout) :: pos(2, nop, n), vel(2, nop, nv), acc(2, nop, na)
     real(dp), intent(inout) :: th(2, nol, n), om(nol, nv), ep(nol, na)
     real(dp), intent(inout) :: react(3, npair, nr), mbal(nr), jred(nv), mred(nr)
@@ -80,7 +90,7 @@ contains
     real(dp), allocatable :: x(:, :), v(:, :), a(:, :), c(:), s(:), w(:), e(:)
     real(dp), allocatable :: fl(:, :), ml(:), aa(:, :), ee(:)
     integer, allocatable :: gslot(:)
-    integer :: i, k, kind, st, worst, jf, jt, fg, g, p, l
+    integer :: i, k, kind, st, worst, jf, jt, js, fg, g, p, l
     real(dp) :: est, maxest, wi, ei, w2, px, py
     logical :: masses
 
@@ -155,6 +165,13 @@ contains
       end do
       if (need >= 2) then
         wi = omega(1 + (i - 1)*inc_w)
+        ! velocities and accelerations (and the loads they make) within the range of
+        ! doubles: else the position is st_range (the caller raises RangeError)
+        if (.not. in_range(wi, epsil(1 + (i - 1)*inc_e))) then
+          status(i) = st_range
+          fgroup(i) = 0
+          cycle
+        end if
         do k = 1, nop
           p = outp(k)
           vel(1, k, i) = v(1, p)*wi
@@ -197,6 +214,20 @@ contains
   contains
 
     ! ------------------------------------------------------------------ kinematics
+
+    ! Whether the velocities x' omega and accelerations x'' omega**2 + x' epsilon of
+    ! every point and link stay below huge/16 (room for the sums of the force step)
+    logical function in_range(wi, ei)
+      real(dp), intent(in) :: wi, ei
+      real(dp) :: vm, am, lim
+      lim = huge(1.0_dp)/16.0_dp
+      vm = max(maxval(abs(v)), maxval(abs(w)))
+      in_range = abs(wi)*vm <= lim
+      if (need < 3 .or. .not. in_range) return
+      am = max(maxval(abs(a)), maxval(abs(e)))
+      in_range = wi*wi <= lim .and. (wi*wi)*am <= lim .and. abs(ei)*vm <= lim .and. &
+                 (wi*wi)*am + abs(ei)*vm <= lim
+    end function in_range
 
     ! A link's direction (cosine cl, sine sl): the angle itself is not computed here (the
     ! Python layer takes it, continuous along the sweep, only for the links asked for)
@@ -241,8 +272,11 @@ contains
         call prp(k, st, est)
       case (5)
         call rpp(k, st, est)
-      case default
+      case (6)
         call rigid(k, st, est)
+      case default
+        st = st_missing                     ! an unknown kind: an error, never skipped
+        est = 0.0_dp
       end select
     end subroutine step
 
@@ -272,8 +306,8 @@ contains
       integer, intent(out) :: st
       real(dp), intent(out) :: est
       integer :: pb, pa, pc, l2, l3, ex
-      real(dp) :: dx, dy, d, pr, h, pq, dang, r2(2), r3(2), len2, len3, y1, y2, rel, sb
-      type(system2) :: f
+      real(dp) :: dx, dy, d, pr, h, pq, dang, r2(2), r3(2), len2, len3, y1, y2, rel, sb, sx, ev
+      type(cram) :: f
       pb = gi(2, k); pa = gi(3, k); pc = gi(4, k); l2 = gi(5, k); l3 = gi(6, k)
       len2 = gr(1, k); len3 = gr(2, k)
       dx = x(1, pc) - x(1, pa)
@@ -293,10 +327,16 @@ contains
       x(:, pb) = x(:, pa) + r2
       call set_link(l2, r2(1)*gr(4, k), r2(2)*gr(4, k))      ! gr(4:5) = 1/l2, 1/l3
       call set_link(l3, r3(1)*gr(5, k), r3(2)*gr(5, k))
+      ! d carries the rounding of the coordinates it is the difference of (far from the
+      ! origin more than that of d itself, which dang allows for): the angles move by
+      ! 2u (sx d + l2**2 + l3**2)/(d h) instead of 2u (d**2 + l2**2 + l3**2)/(d h)
+      sx = abs(x(1, pa)) + abs(x(2, pa)) + abs(x(1, pc)) + abs(x(2, pc))
+      if (sx > d) dang = dang*((sx/d)*(d/len2)*(d/len3) + len2/len3 + len3/len2)/ &
+                             ((d/len2)*(d/len3) + len2/len3 + len3/len2)
       est = dang
       if (need < 2) return
-      ! v_A + w2 k x r2 = v_C + w3 k x r3
-      call cramer_set(-r2(2), r3(2), r2(1), -r3(1), f)
+      ! v_A + w2 k x r2 = v_C + w3 k x r3 (columns: unit vectors times l2, l3)
+      call cramer_set(-r2(2), r3(2), r2(1), -r3(1), f, len2, len3)
       sb = abs(v(1, pa)) + abs(v(2, pa)) + abs(v(1, pc)) + abs(v(2, pc))
       call cramer(f, v(1, pc) - v(1, pa), v(2, pc) - v(2, pa), dang, 4.0_dp*uround*sb, sb, &
                    y1, y2, st, rel)
@@ -306,9 +346,13 @@ contains
       w(l3) = y2
       v(:, pb) = v(:, pa) + y1*[-r2(2), r2(1)]
       if (need < 3) return
+      ! the velocities' error (absolute, in w' l units) enters through w'**2 l
+      ev = abs_err(f, y1, y2, sb, rel)
       call cramer(f, a(1, pc) - a(1, pa) - y2**2*r3(1) + y1**2*r2(1), &
                    a(2, pc) - a(2, pa) - y2**2*r3(2) + y1**2*r2(2), dang, &
-                   4.0_dp*uround*(sb + y1**2*len2 + y2**2*len3), sb, y1, y2, st, rel)
+                   4.0_dp*uround*(sb + y1**2*len2 + y2**2*len3) &
+                   + ev*(2.0_dp*abs(y1) + ev/len2) + ev*(2.0_dp*abs(y2) + ev/len3), &
+                   sb, y1, y2, st, rel)
       if (failed(st)) return
       est = max(est, rel)
       e(l2) = y1
@@ -332,8 +376,8 @@ contains
       real(dp), intent(out) :: est
       integer :: pb, pa, pk, l2, l3, lm
       real(dp) :: u(2), nn(2), wv(2), along, perp, off, len2, cq, root, sl, r2(2), dc, sq
-      real(dp) :: vg(2), ag(2), y1, y2, rel, sb
-      type(system2) :: f
+      real(dp) :: vg(2), ag(2), y1, y2, rel, sb, ev
+      type(cram) :: f
       pb = gi(2, k); pa = gi(3, k); pk = gi(4, k); l2 = gi(5, k); l3 = gi(6, k); lm = gi(7, k)
       len2 = gr(1, k); off = gr(5, k)
       u = guide(lm, gr(3, k), gr(4, k))
@@ -371,7 +415,7 @@ contains
       if (need < 2) return
       ! v_A + w2 k x r2 = v_G(B) + s' u
       call carried(lm, pk, x(:, pb), vg, ag)
-      call cramer_set(-r2(2), -u(1), r2(1), -u(2), f)
+      call cramer_set(-r2(2), -u(1), r2(1), -u(2), f, len2, 1.0_dp)
       sb = abs(v(1, pa)) + abs(v(2, pa)) + abs(vg(1)) + abs(vg(2))
       call cramer(f, vg(1) - v(1, pa), vg(2) - v(2, pa), est + 4.0_dp*uround, &
                    4.0_dp*uround*sb, sb, y1, y2, st, rel)
@@ -381,9 +425,11 @@ contains
       w(l3) = w(lm)
       v(:, pb) = v(:, pa) + y1*[-r2(2), r2(1)]
       if (need < 3) return
+      ev = abs_err(f, y1, y2, sb, rel)
       ag = ag + 2.0_dp*w(lm)*y2*nn - a(:, pa) + y1**2*r2
       call cramer(f, ag(1), ag(2), est + 4.0_dp*uround, &
-                   4.0_dp*uround*(sb + y1**2*len2), sb, y1, y2, st, rel)
+                   4.0_dp*uround*(sb + y1**2*len2) + ev*(2.0_dp*abs(y1) + ev/len2) &
+                   + 2.0_dp*abs(w(lm))*ev, sb, y1, y2, st, rel)
       if (failed(st)) return
       est = max(est, rel)
       e(l2) = y1
@@ -399,8 +445,8 @@ contains
       real(dp), intent(out) :: est
       integer :: pb, pa, pc, l2, l3
       real(dp) :: dx, dy, d, h, sq, cq, u(2), nn(2), fb(2), e3(2), n3(2), sl, ds
-      real(dp) :: rac(2), y1, y2, rel, sb, sd
-      type(system2) :: f
+      real(dp) :: rac(2), y1, y2, rel, sb, sd, ev
+      type(cram) :: f
       pb = gi(2, k); pa = gi(3, k); pc = gi(4, k); l2 = gi(5, k); l3 = gi(6, k)
       h = abs(gr(1, k))
       dx = x(1, pc) - x(1, pa)
@@ -439,7 +485,7 @@ contains
       if (need < 2) return
       ! v_A = v_C + w3 k x (A - C) + s' e3
       rac = x(:, pa) - x(:, pc)
-      call cramer_set(-rac(2), e3(1), rac(1), e3(2), f)
+      call cramer_set(-rac(2), e3(1), rac(1), e3(2), f, d, 1.0_dp)
       sb = abs(v(1, pa)) + abs(v(2, pa)) + abs(v(1, pc)) + abs(v(2, pc))
       call cramer(f, v(1, pa) - v(1, pc), v(2, pa) - v(2, pc), est + 4.0_dp*uround, &
                    4.0_dp*uround*sb, sb, y1, y2, st, rel)
@@ -450,9 +496,11 @@ contains
       sd = y2
       v(:, pb) = v(:, pc) + y1*sl*n3 + sd*e3
       if (need < 3) return
+      ev = abs_err(f, y1, sd, sb, rel)
       call cramer(f, a(1, pa) - a(1, pc) + y1**2*rac(1) - 2.0_dp*y1*sd*n3(1), &
                    a(2, pa) - a(2, pc) + y1**2*rac(2) - 2.0_dp*y1*sd*n3(2), &
-                   est + 4.0_dp*uround, 4.0_dp*uround*(sb + y1**2*d + abs(y1*sd)), sb, &
+                   est + 4.0_dp*uround, 4.0_dp*uround*(sb + y1**2*d + abs(y1*sd)) &
+                   + ev*(2.0_dp*abs(y1) + ev/d) + 2.0_dp*(abs(y1)*ev + abs(sd)*ev/d), sb, &
                    y1, y2, st, rel)
       if (failed(st)) return
       est = max(est, rel)
@@ -469,8 +517,8 @@ contains
       real(dp), intent(out) :: est
       integer :: pb, pa, pc, l2, l3, lm, ln
       real(dp) :: um(2), un(2), nm_(2), nn(2), dca(2), bx, by, sb, rel
-      real(dp) :: vgm(2), agm(2), vgn(2), agn(2), y1, y2, s2, s3
-      type(system2) :: f
+      real(dp) :: vgm(2), agm(2), vgn(2), agn(2), y1, y2, s2, s3, ev
+      type(cram) :: f
       pb = gi(2, k); pa = gi(3, k); pc = gi(4, k); l2 = gi(5, k); l3 = gi(6, k)
       lm = gi(7, k); ln = gi(8, k)
       um = guide(lm, gr(1, k), gr(2, k))
@@ -489,7 +537,7 @@ contains
       if (need < 2) return
       call carried(lm, pa, x(:, pb), vgm, agm)
       call carried(ln, pc, x(:, pb), vgn, agn)
-      call cramer_set(um(1), -un(1), um(2), -un(2), f)
+      call cramer_set(um(1), -un(1), um(2), -un(2), f, 1.0_dp, 1.0_dp)
       sb = abs(vgm(1)) + abs(vgm(2)) + abs(vgn(1)) + abs(vgn(2))
       call cramer(f, vgn(1) - vgm(1), vgn(2) - vgm(2), est + 4.0_dp*uround, &
                    4.0_dp*uround*sb, sb, s2, s3, st, rel)
@@ -499,10 +547,11 @@ contains
       w(l3) = w(ln)
       v(:, pb) = vgm + s2*um
       if (need < 3) return
+      ev = abs_err(f, s2, s3, sb, rel)
       call cramer(f, agn(1) + 2.0_dp*w(ln)*s3*nn(1) - agm(1) - 2.0_dp*w(lm)*s2*nm_(1), &
                    agn(2) + 2.0_dp*w(ln)*s3*nn(2) - agm(2) - 2.0_dp*w(lm)*s2*nm_(2), &
-                   est + 4.0_dp*uround, 4.0_dp*uround*(sb + abs(w(ln)*s3) + abs(w(lm)*s2)), &
-                   sb, y1, y2, st, rel)
+                   est + 4.0_dp*uround, 4.0_dp*uround*(sb + abs(w(ln)*s3) + abs(w(lm)*s2)) &
+                   + 2.0_dp*(abs(w(ln)) + abs(w(lm)))*ev, sb, y1, y2, st, rel)
       if (failed(st)) return
       est = max(est, rel)
       e(l2) = e(lm)
@@ -519,8 +568,8 @@ contains
       real(dp), intent(out) :: est
       integer :: pk, pa, pc, l2, l3, lm
       real(dp) :: um(2), us(2), nm_(2), ns_(2), dca(2), s2, s3, sb, rel
-      real(dp) :: vgc(2), agc(2), vgk(2), agk(2), y1, y2, d2, d3
-      type(system2) :: f
+      real(dp) :: vgc(2), agc(2), vgk(2), agk(2), y1, y2, d2, d3, ev
+      type(cram) :: f
       pk = gi(2, k); pa = gi(3, k); pc = gi(4, k); l2 = gi(5, k); l3 = gi(6, k); lm = gi(7, k)
       um = guide(lm, gr(1, k), gr(2, k))
       us = [um(1)*gr(3, k) - um(2)*gr(4, k), um(2)*gr(3, k) + um(1)*gr(4, k)]
@@ -537,7 +586,7 @@ contains
       if (need < 2) return
       call carried(lm, pa, x(:, pc), vgc, agc)
       call carried(lm, pa, x(:, pk), vgk, agk)
-      call cramer_set(um(1), us(1), um(2), us(2), f)
+      call cramer_set(um(1), us(1), um(2), us(2), f, 1.0_dp, 1.0_dp)
       sb = abs(v(1, pc)) + abs(v(2, pc)) + abs(vgc(1)) + abs(vgc(2))
       call cramer(f, v(1, pc) - vgc(1), v(2, pc) - vgc(2), est + 4.0_dp*uround, &
                    4.0_dp*uround*sb, sb, d2, d3, st, rel)
@@ -547,10 +596,11 @@ contains
       w(l3) = w(lm)
       v(:, pk) = vgk + d2*um
       if (need < 3) return
+      ev = abs_err(f, d2, d3, sb, rel)
       call cramer(f, a(1, pc) - agc(1) - 2.0_dp*w(lm)*(d2*nm_(1) + d3*ns_(1)), &
                    a(2, pc) - agc(2) - 2.0_dp*w(lm)*(d2*nm_(2) + d3*ns_(2)), &
-                   est + 4.0_dp*uround, 4.0_dp*uround*(sb + abs(w(lm))*(abs(d2) + abs(d3))), &
-                   sb, y1, y2, st, rel)
+                   est + 4.0_dp*uround, 4.0_dp*uround*(sb + abs(w(lm))*(abs(d2) + abs(d3))) &
+                   + 4.0_dp*abs(w(lm))*ev, sb, y1, y2, st, rel)
       if (failed(st)) return
       est = max(est, rel)
       e(l2) = e(lm)
@@ -613,6 +663,7 @@ contains
       integer, intent(in) :: i
       integer :: j, p, l, q, k
       real(dp) :: fx, fy, mr, dl(2), dn, ff
+      logical :: ok
       fl = 0.0_dp
       ml = 0.0_dp
       mr = 0.0_dp
@@ -636,12 +687,13 @@ contains
         ml(l) = ml(l) + tval(j, jt)
         mr = mr + tval(j, jt)*w(l)
       end do
+      js = 1 + (i - 1)*min(nspv - 1, 1)
       do j = 1, nsp
         p = spp(1, j); q = spp(2, j)
         dl = x(:, q) - x(:, p)
         dn = norm2d(dl(1), dl(2))
         if (dn == 0.0_dp) cycle
-        ff = spv(1, j)*(dn - spv(2, j))           ! tension > 0 pulls P towards Q
+        ff = spv(1, j, js)*(dn - spv(2, j, js))   ! tension > 0 pulls P towards Q
         dl = dl/dn
         call load(spl(1, j), p, ff*dl(1), ff*dl(2))
         call load(spl(2, j), q, -ff*dl(1), -ff*dl(2))
@@ -656,6 +708,17 @@ contains
       ! reaction on it -F_1
       react(:, 1, i) = [-fl(1, 1), -fl(2, 1), 0.0_dp]
       mbal(i) = -ml(1)
+      ! every force and moment a finite double, else the position is st_range
+      ok = abs(mbal(i)) <= huge(1.0_dp) .and. abs(mred(i)) <= huge(1.0_dp)
+      do k = 1, npair
+        do j = 1, 3
+          ok = ok .and. abs(react(j, k, i)) <= huge(1.0_dp)
+        end do
+      end do
+      if (.not. ok) then
+        status(i) = st_range
+        fgroup(i) = 0
+      end if
     end subroutine forces
 
     integer function base(l)
@@ -680,8 +743,8 @@ contains
       integer, intent(in) :: k, kind, slot, i
       integer :: pt(3), ty(3), frl(3), l2, l3, j, st
       real(dp) :: dir(2, 3), n2(2), a(2, 2), b(2), z(2), rel, r(2), c2, d(2), f(2), cp
-      real(dp) :: out(3, 3), mp
-      type(system2) :: sys
+      real(dp) :: out(3, 3), mp, sc
+      type(cram) :: sys
       l2 = gi(5, k); l3 = gi(6, k)
       call pairs(k, kind, pt, ty, dir, frl)
       n2 = [-dir(2, 2), dir(1, 2)]
@@ -704,7 +767,11 @@ contains
         call coefficients(dir(1, 3), dir(2, 3), 0.0_dp, ty(2), n2, a(2, :))    ! R.u3 = -F3.u3
         b(2) = -(fl(1, l3)*dir(1, 3) + fl(2, l3)*dir(2, 3))
       end if
-      call cramer_set(a(1, 1), a(1, 2), a(2, 1), a(2, 2), sys)
+      ! column scales: the entries' size (only the singularity test uses the estimate
+      ! here; it must not overflow for a mechanism of 1e200 m)
+      sc = max(abs(a(1, 1)), abs(a(1, 2)), abs(a(2, 1)), abs(a(2, 2)))
+      if (.not. (sc > 0.0_dp .and. sc <= huge(sc))) sc = 1.0_dp
+      call cramer_set(a(1, 1), a(1, 2), a(2, 1), a(2, 2), sys, sc, sc)
       call cramer(sys, b(1), b(2), 0.0_dp, 0.0_dp, 0.0_dp, z(1), z(2), st, rel)
       if (st /= st_ok) then
         status(i) = st
@@ -823,32 +890,100 @@ contains
 
   end subroutine mech_solve
 
+  ! D designs in one call (issue 25): every numeric table of the description carries a
+  ! last axis over the designs, the outputs too; the designs share phi, omega, epsilon,
+  ! the kinds, the joints and the selection.  Each design is one mech_solve over its
+  ! slices (contiguous: no copies).
+  subroutine mech_solve_many(need, n, np, nl, ns, nd, gi, gr, phi, omega, epsil, inc_w, &
+                             inc_e, nm, mlink, mpoint, mval, gravity, &
+                             nf, fpoint, flink, nfv, fval, nt, tlink, ntv, tval, &
+                             nsp, spp, spl, nspv, spv, npair, powner, lbase, x0, nop, outp, &
+                             nol, outl, nv, na, nr, pos, vel, acc, th, om, ep, react, mbal, &
+                             jred, mred, status, fgroup)
+    !f2py threadsafe
+    integer, intent(in) :: need, n, np, nl, ns, nd, nm, nf, nfv, nt, ntv, nsp, nspv, npair
+    integer, intent(in) :: nv, na, nr
+    integer, intent(in) :: inc_w, inc_e, nop, nol, outp(nop), outl(nol)
+    integer, intent(in) :: gi(8, ns)
+    real(dp), intent(in) :: gr(8, ns, nd), phi(n), omega(*), epsil(*)
+    integer, intent(in) :: powner(np), lbase(0:nl)
+    real(dp), intent(in) :: x0(2, np, nd)
+    integer, intent(in) :: mlink(nm), mpoint(nm)
+    real(dp), intent(in) :: mval(2, nm, nd), gravity
+    integer, intent(in) :: fpoint(nf), flink(nf)
+    real(dp), intent(in) :: fval(2, nf, nfv, nd)
+    integer, intent(in) :: tlink(nt)
+    real(dp), intent(in) :: tval(nt, ntv, nd)
+    integer, intent(in) :: spp(2, nsp), spl(2, nsp)
+    real(dp), intent(in) :: spv(2, nsp, nspv, nd)
+    real(dp), intent(inout) :: pos(2, nop, n, nd), vel(2, nop, nv, nd), acc(2, nop, na, nd)
+    real(dp), intent(inout) :: th(2, nol, n, nd), om(nol, nv, nd), ep(nol, na, nd)
+    real(dp), intent(inout) :: react(3, npair, nr, nd), mbal(nr, nd), jred(nv, nd)
+    real(dp), intent(inout) :: mred(nr, nd)
+    integer, intent(inout) :: status(n, nd), fgroup(n, nd)
+    integer :: d
+    do d = 1, nd
+      call mech_solve(need, n, np, nl, ns, gi, gr(:, :, d), phi, omega, epsil, inc_w, inc_e, &
+                      nm, mlink, mpoint, mval(:, :, d), gravity, &
+                      nf, fpoint, flink, nfv, fval(:, :, :, d), nt, tlink, ntv, &
+                      tval(:, :, d), nsp, spp, spl, nspv, spv(:, :, :, d), npair, powner, &
+                      lbase, x0(:, :, d), nop, outp, nol, outl, nv, na, nr, &
+                      pos(:, :, :, d), vel(:, :, :, d), acc(:, :, :, d), th(:, :, :, d), &
+                      om(:, :, d), ep(:, :, d), react(:, :, :, d), mbal(:, d), jred(:, d), &
+                      mred(:, d), status(:, d), fgroup(:, d))
+    end do
+  end subroutine mech_solve_many
+
   ! A 2x2 system by Cramer's rule (forward stable for n = 2), for the whole-mechanism
-  ! solver's velocities and accelerations, with solve2f's error bound (bound2), so that
-  ! the dead-centre policy is the same: cramer_set once per matrix, cramer each
-  ! right-hand side.  det A = 0: st_singular.  (Here, beside their one caller, so
+  ! solver's velocities and accelerations, with solve2f's error bound (bound2) taken for
+  ! the system whose columns are divided by their scales s1, s2 (unit vectors for the
+  ! kinematics: the estimate is unit-free, as DKNMA1's with its unit vectors), so that the
+  ! dead-centre policy is the same in any length unit: cramer_set once per matrix, cramer
+  ! each right-hand side.  det A = 0: st_singular.  (Here, beside their one caller, so
   ! that the compiler inlines them.)
-  pure subroutine cramer_set(a11, a12, a21, a22, f)
-    real(dp), intent(in) :: a11, a12, a21, a22
-    type(system2), intent(out) :: f
-    f%lu(1, 1) = a11
-    f%lu(2, 1) = a21
-    f%lu(1, 2) = a12
-    f%lu(2, 2) = a22
-    f%na = sqrt(a11**2 + a12**2 + a21**2 + a22**2)
-    f%det = a11*a22 - a12*a21
-    f%nadet = 0.0_dp
-    f%r = 0.0_dp
-    if (f%det /= 0.0_dp) then
-      f%r(1) = 1.0_dp/f%det
-      f%nadet = f%na*abs(f%r(1))
+  ! Entries far from 1 (a mechanism of 1e200 m or 1e-200 m) are first scaled by a power
+  ! of 2, 2**-e, so that det neither overflows nor underflows: exact, the same bits
+  ! otherwise; cramer scales the solution back.
+  pure subroutine cramer_set(a11, a12, a21, a22, f, s1, s2)
+    real(dp), intent(in) :: a11, a12, a21, a22, s1, s2
+    type(cram), intent(out) :: f
+    real(dp) :: det, amax
+    f%e = 0
+    amax = max(abs(a11), abs(a12), abs(a21), abs(a22))
+    if (amax > 2.0_dp**200 .or. (amax < 2.0_dp**(-200) .and. amax > 0.0_dp)) then
+      if (amax <= huge(amax)) f%e = exponent(amax)
     end if
+    if (f%e == 0) then
+      f%a11 = a11
+      f%a21 = a21
+      f%a12 = a12
+      f%a22 = a22
+      f%s1 = s1
+      f%s2 = s2
+    else
+      f%a11 = scale(a11, -f%e)
+      f%a21 = scale(a21, -f%e)
+      f%a12 = scale(a12, -f%e)
+      f%a22 = scale(a22, -f%e)
+      f%s1 = scale(s1, -f%e)                ! only nadet below uses them so
+      f%s2 = scale(s2, -f%e)
+    end if
+    f%na = sqrt((f%a11/f%s1)**2 + (f%a21/f%s1)**2 + (f%a12/f%s2)**2 + (f%a22/f%s2)**2)
+    det = f%a11*f%a22 - f%a12*f%a21
+    f%nadet = 0.0_dp
+    f%rdet = 0.0_dp
+    if (det /= 0.0_dp) then
+      f%rdet = 1.0_dp/det
+      f%nadet = f%na*abs(f%s1*(f%s2*f%rdet))
+    end if
+    f%s1 = s1
+    f%s2 = s2
     f%st = st_ok
-    if (f%det == 0.0_dp .or. .not. f%nadet <= huge(1.0_dp)) f%st = st_singular
+    if (det == 0.0_dp .or. .not. f%nadet <= huge(1.0_dp)) f%st = st_singular
   end subroutine cramer_set
 
   pure subroutine cramer(f, b1, b2, da, db, sb, y1, y2, st, rel)
-    type(system2), intent(in) :: f
+    type(cram), intent(in) :: f
     real(dp), intent(in) :: b1, b2, da, db, sb
     real(dp), intent(out) :: y1, y2, rel
     integer, intent(out) :: st
@@ -856,14 +991,26 @@ contains
     rel = huge(1.0_dp)
     st = f%st
     if (st /= st_ok) return
-    y1 = (b1*f%lu(2, 2) - f%lu(1, 2)*b2)*f%r(1)     ! r(1) = 1/det (cramer_set)
-    y2 = (f%lu(1, 1)*b2 - f%lu(2, 1)*b1)*f%r(1)
+    y1 = (b1*f%a22 - f%a12*b2)*f%rdet
+    y2 = (f%a11*b2 - f%a21*b1)*f%rdet
+    if (f%e /= 0) then
+      y1 = scale(y1, -f%e)
+      y2 = scale(y2, -f%e)
+    end if
     if (.not. (abs(y1) <= huge(y1) .and. abs(y2) <= huge(y2))) then
       y1 = 0.0_dp; y2 = 0.0_dp
       st = st_range
       return
     end if
-    rel = bound2(f%na, f%nadet, y1, y2, da, db, sb)
+    rel = bound2(f%na, f%nadet, y1*f%s1, y2*f%s2, da, db, sb)
   end subroutine cramer
+
+  ! The absolute error (in the units of the scaled unknowns y1 s1, y2 s2) that cramer's
+  ! relative estimate rel stands for: rel times bound2's denominator.
+  pure real(dp) function abs_err(f, y1, y2, sb, rel)
+    type(cram), intent(in) :: f
+    real(dp), intent(in) :: y1, y2, sb, rel
+    abs_err = rel*max(norm2d(y1*f%s1, y2*f%s2), sb/f%na)
+  end function abs_err
 
 end module mechanism

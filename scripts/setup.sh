@@ -36,7 +36,7 @@ python -m pip install -q numpy meson meson-python ninja fortranformat matplotlib
   pandas \
   mypy \
   pylinkage \
-  dask \
+  dask distributed \
   numpydoc \
   >&2
 echo "building and installing sarkp" >&2

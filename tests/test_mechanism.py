@@ -411,13 +411,25 @@ def test_reduced_inertia_and_moment_direct():
 
 def test_need_levels_compute_only_what_is_asked():
     m = sixbar()
-    r = m.solve(PHI, need="positions")
-    assert r.velocities is None and r.accelerations is None and r.reactions is None
-    with pytest.raises(ValueError, match="velocities"):
-        r.velocity("E")
+    for phi in (PHI, 0.3, [0.3]):           # one position too (no uninitialised memory)
+        r = m.solve(phi, need="positions")
+        for get, need in ((lambda: r.velocities, "velocities"),
+                          (lambda: r.velocity("E"), "velocities"),
+                          (lambda: r.omega("D", "E"), "velocities"),
+                          (lambda: r.reduced_inertia, "velocities"),
+                          (lambda: r.accelerations, "accelerations"),
+                          (lambda: r.epsilon("D", "E"), "accelerations"),
+                          (lambda: r.reactions, "forces"),
+                          (lambda: r.reaction("B"), "forces"),
+                          (lambda: r.balancing_moment, "forces"),
+                          (lambda: r.reduced_moment, "forces")):
+            with pytest.raises(ValueError, match=f"need='{need}'"):
+                get()
     r = m.solve(PHI, need="velocities")
-    assert r.velocities is not None and r.accelerations is None
-    assert r.reduced_inertia is not None and r.balancing_moment is None
+    assert r.velocities.shape == (37, len(r.columns[0]), 2)
+    assert r.reduced_inertia.shape == (37,)
+    with pytest.raises(ValueError, match="need='forces'"):
+        r.balancing_moment
     full = m.solve(PHI, omega=2.0, need="forces", gravity=G)
     np.testing.assert_array_equal(r.position("E"), full.position("E"))
 

@@ -69,6 +69,7 @@ def test_dask_recipe_local_scheduler():
     # the four-bar's transmission angle is extreme where the crank is along O-C: the
     # diagonal B-D... A-C is then OC -+ OA, and the cosine law gives the angle at B
     oc = math.hypot(-0.25, 0.35)
+    assert len(ns["worst"]) == 10 ** 4
     for (rab, rcb), worst in zip(ns["grid"], ns["worst"]):
         cos = [(rab**2 + rcb**2 - d**2) / (2 * rab * rcb) for d in (oc - 0.1, oc + 0.1)]
         if max(abs(c) for c in cos) > 1:

@@ -28,8 +28,14 @@ import numpy as np
 from . import _wrap_synthesis as _w
 from .library import ST_REQUIREMENT, ST_SINGULAR, Check, describe
 from .report import fortran_write
+# Dimensional synthesis over the Mechanism (function, path and motion generation):
+from .dimensional import (FourBarPopulation, Synthesis, fourbar_search,
+                          function_generation, grashof_type, motion_generation,
+                          path_generation, slider_function_generation)
 
-__all__ = ["DSNTZR", "DSNTZ1", "DSNTZ2", "DSNTZ3", "DSNTZK"]
+__all__ = ["DSNTZR", "DSNTZ1", "DSNTZ2", "DSNTZ3", "DSNTZK", "function_generation",
+           "slider_function_generation", "path_generation", "motion_generation",
+           "fourbar_search", "grashof_type", "Synthesis", "FourBarPopulation"]
 
 
 # Requirements that the inputs alone decide, checked before the Fortran runs so that the
