@@ -85,6 +85,7 @@ def load_figure(number: str) -> Figure:
         elif line.strip():
             body.append(line)
     figure = Figure(str(number), meta)
+    # a token is a column, or ROW:COLUMN for one cell
     inputs = set(meta.get("printed input columns", "").split())
     repeats = set(meta.get("repeated columns", "").split())
     for r in csv.DictReader(body):
@@ -92,8 +93,8 @@ def load_figure(number: str) -> Figure:
         if kind not in ("yes", "no", "magnitude", "none"):
             raise ValueError(f"fig{number}.csv row {r['row']} {r['column']}: reproducible "
                              f"must be yes, no, magnitude or none, not {kind!r}")
-        role = ("input" if r["column"] in inputs else
-                "repeat" if r["column"] in repeats else "")
+        tokens = {r["column"], f"{r['row']}:{r['column']}"}
+        role = ("input" if tokens & inputs else "repeat" if tokens & repeats else "")
         figure.cells.append(Cell(r["row"], r["column"], r["printed"], int(r["decimals"]),
                                  int(r["line"]), r["ocr"], r["errata"], kind == "yes",
                                  kind == "magnitude", role, kind != "none"))
