@@ -801,3 +801,22 @@ def test_readme_summary_is_the_diff_summary():
         figure, comparisons = diff(number)
         rows.append(figures.summary(figure, comparisons, book.figure_evidence(number)))
     assert shown == figures.summary_table(rows)
+
+
+def test_corrected_cam_is_convex_with_the_books_radius_beside():
+    """Issue 27: the corrected design sizes the flat-faced follower's cam convex: its
+    radius is the smallest with RKSH + S + A/W**2 >= 0 at every point (computed here from
+    the motion law), so no point is concave, where the book's GAMMA = PI/3 leaves 7 of the
+    26 concave; the report prints the book's rule's radius beside it."""
+    with sarkp.mode("corrected"):
+        c = prog_x.run(["cam"])["cam"]
+        text = prog_x.render("cam")
+    need = np.max(-np.asarray(c["ST"]) - np.asarray(c["AT"]) / prog_x.W1**2)
+    eps = np.finfo(float).eps
+    assert abs(c["RKSH"] - need) <= 8 * eps * need
+    assert np.min(c["ROK"]) >= -8 * eps * c["RKSH"] and c["NCONC"] == 0
+    assert c["RKSH_BOOK"] < c["RKSH"] and c["ROKMIN_BOOK"] < 0.0
+    with sarkp.as_printed():
+        book_cam = prog_x.run(["cam"])["cam"]
+    assert book_cam["NCONC"] == int(np.sum(np.asarray(book_cam["ROK"]) < 0.0)) > 0
+    assert f"{c['RKSH']:.6f}" in text and f"{book_cam['RKSH']:.6f}" in text

@@ -259,15 +259,30 @@ def cam_law() -> dict:
 
 def cam() -> dict:
     """The motion law and the flat-faced follower's cam (DPRFPL with GAMMA = PI/3,
-    L7467; ERRATA E-X-DPRFPL-1 for its ST argument)."""
+    L7467; ERRATA E-X-DPRFPL-1 for its ST argument).
+
+    As printed, the book's GAMMA = PI/3 gives a cam that is concave at 7 of the 26 points
+    (radius of curvature < 0: a flat face cannot follow it).  Corrected, the cam is sized
+    convex by :func:`sarkp.flat_base_radius` (the smallest RKSH with RKSH + S + A/W**2 >= 0
+    everywhere) and DPRFPL draws it with the GAMMA that gives that RKSH by its own rule
+    (V.3, L3240-3255: RKSH = |A_min/W**2| / tan(GAMMA) - S at A_min); ``RKSH_BOOK`` and
+    ``ROKMIN_BOOK`` are the book's rule's beside it."""
+    from ..cams import flat_base_radius
     law = cam_law()
+    gamma = book_pi() / GAMMA_DIVISOR
+    extra = {}
     try:
-        p = sarkp.DPRFPL(CAM_POINTS, book_pi() / GAMMA_DIVISOR, W1, law["FIK"], law["AT"],
-                         law["VT"], law["ST"])
+        if get_mode() == "corrected":
+            fr = flat_base_radius(CAM_POINTS, law["FIK"], law["AT"], law["VT"], law["ST"],
+                                  W1, GAMMA=gamma)
+            low = int(np.argmin(law["AT"]))
+            gamma = math.atan(-law["AT"][low] / W1**2 / (fr.RKSH + law["ST"][low]))
+            extra = {"RKSH_BOOK": fr.RKSH_BOOK, "ROKMIN_BOOK": fr.ROKMIN_BOOK}
+        p = sarkp.DPRFPL(CAM_POINTS, gamma, W1, law["FIK"], law["AT"], law["VT"], law["ST"])
     except SarkpError as exc:
         raise StageError(f"program X, stage 'cam' (Fig. 89): DPRFPL: {exc}") from exc
     return {**law, "X": p.XA, "Y": p.YA, "RK": p.R1, "DLT": p.DELTA, "ROK": p.ROK,
-            "RKSH": p.RKSH, "ROKMIN": p.ROKMIN, "NCONC": p.NCONC}
+            "RKSH": p.RKSH, "ROKMIN": p.ROKMIN, "NCONC": p.NCONC, "GAMMA": gamma, **extra}
 
 
 # ---- stage 5: kinematics (Fig. 91) ----------------------------------------------------------
