@@ -12,10 +12,11 @@
     sarkp book diff FIG|all [--mode M] [--arithmetic A]
                                           compare a reproduction with the printed figure
                                           (all: ends with a summary table, every cell
-                                          reproduced, fitted, reproduced under a named
-                                          arithmetic, differing with its cause shown or
-                                          not; status 0 when every difference has an
-                                          ERRATA id)
+                                          a printed input, reproduced, fitted,
+                                          reproduced under the book's arithmetic,
+                                          differing with its cause shown or not; the
+                                          rules: docs/judging.md; status 0 when every
+                                          difference has an ERRATA id)
     sarkp listing [NAME] [--modern|--diff [side]]   the book's code; sarkp's routine; both
     sarkp errata ID|NAME                  a row of docs/ERRATA.md, or every row of a routine
     sarkp book run PROGRAM --printed      the program compiled as printed (says why not)
