@@ -356,7 +356,7 @@ def arithmetic_table() -> str:
                     units = (abs(value) - abs(c.value)) / c.unit
                 else:
                     units = (value - c.value) / c.unit
-                if abs(units) <= 0.5 + 1e-9:
+                if figures.within_half(c, value):
                     ok += 1
                 else:
                     missed[name].append(f"row {c.row} {c.column} ({units:+.2f})")
