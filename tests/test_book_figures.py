@@ -423,3 +423,11 @@ def test_the_book_arithmetic_is_applied_whole():
             c for c in comparisons if c.computed is not None and c.cell.role != "repeat"
             and c.matches and not figures.within_half(
                 c.cell, evidence.book[(c.cell.row, c.cell.column)])]
+
+
+def test_a_value_that_is_no_number_is_not_within_half_a_unit():
+    """Corrected program X stalls without a flywheel (WPR, EPR are NaN): such a cell
+    differs, it does not break the comparison."""
+    for value in (math.nan, math.inf, -math.inf):
+        assert not figures.within_half(_cell("1.2", 1), value)
+    assert main(["book", "diff", "96", "--mode", "corrected"]) in (0, 1)

@@ -34,6 +34,7 @@ precision, missed by it).  IEEE single is shown as a diagnostic, never counted.
 from __future__ import annotations
 
 import csv
+import math
 from decimal import Decimal
 from dataclasses import dataclass, field
 from importlib import resources
@@ -112,6 +113,8 @@ def within_half(cell: Cell, value: float) -> bool:
     or exactly half a unit and :data:`TIE_RULE` (half away from zero) rounds ``value``
     to the print, i.e. the print is the farther of the two from zero.  A magnitude-only
     cell compares absolute values.  Exact decimal arithmetic: no tolerance."""
+    if not math.isfinite(value):                   # a NaN or inf prints as no number
+        return False
     printed, computed = Decimal(cell.printed), Decimal(value)
     if cell.magnitude:
         printed, computed = abs(printed), abs(computed)
