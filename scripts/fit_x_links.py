@@ -2,7 +2,8 @@
 """Fit program X's link lengths to the printed Fig. 91 (docs/ERRATA.md E-X-LINKS-1).
 
 No DSNTZ1 gives the lengths the printed run used (E-DSNTZ1-4), and Fig. 84 prints them to
-3 decimals only, so as-printed mode takes them from this fit:
+3 decimals only, so as-printed mode takes them from this fit (one set for the whole
+program: the fit in the book's arithmetic, ``--arithmetic es-evm``, from the double fit):
 
 * unknowns: ROA, RAB, ROC, RCD (= RCB) and RDE, in metres;
 * cells: every printed cell of Fig. 91's 37 positions that depends on the lengths, 587
@@ -27,13 +28,14 @@ No DSNTZ1 gives the lengths the printed run used (E-DSNTZ1-4), and Fig. 84 print
 * the arithmetic-model spread: ``--arithmetic es-evm`` (the book's ES EVM model) or
   ``ieee-single`` refits the same minimax with the chain in that arithmetic
   (sarkp.book.x_arithmetic), steered by the double chain's Jacobian, from the double fit;
-  ``prog_x.REFITTED_LINKS`` holds the results and ``prog_x.links_uncertainty()`` widens the
-  standard uncertainty by the larger move (``--check`` compares).
+  ``prog_x.FITTED_LINKS`` holds the ES EVM fit, ``prog_x.REFITTED_LINKS`` the others, and
+  ``prog_x.links_uncertainty()`` widens the standard uncertainty by the larger move from
+  the ES EVM fit (``--check`` compares).
 
-Prints the lengths (as ``prog_x.FITTED_LINKS`` holds them), the worst cell, the number
-of fitted cells within half a unit, and the uncertainties.  ``--check`` compares with
-``prog_x.FITTED_LINKS`` (exit status 1 when they differ by more than 1e-8 m) and
-``prog_x.FITTED_UNCERTAINTY`` (to the two digits it keeps).
+Prints the lengths (as ``prog_x`` holds them), the worst cell, the number of fitted cells
+within half a unit, and (double) the uncertainties.  ``--check`` compares with what
+``prog_x`` holds (exit status 1 when they differ by more than 1e-8 m, or the
+uncertainties to the two digits ``prog_x.FITTED_UNCERTAINTY`` keeps).
 Run: ``python scripts/fit_x_links.py`` (needs scipy; a few seconds).
 """
 
@@ -164,44 +166,48 @@ def fit(start=None):
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--check", action="store_true",
-                        help="exit 1 unless prog_x.FITTED_LINKS is this fit's result")
+                        help="exit 1 unless prog_x holds this fit's result")
     parser.add_argument("--arithmetic", choices=("double", "es-evm", "ieee-single"),
                         default="double",
-                        help="refit with the chain run in this arithmetic (the book's ES "
-                             "EVM model, or IEEE single), from the double fit; with "
-                             "--check: compare with prog_x.REFITTED_LINKS")
+                        help="double: the fit from the printed 3-decimal lengths "
+                             "(prog_x.REFITTED_LINKS['double'], FITTED_UNCERTAINTY); "
+                             "es-evm: from it, the fit in the book's arithmetic, the one "
+                             "set the program runs with (prog_x.FITTED_LINKS); "
+                             "ieee-single: from it, the fit in IEEE single "
+                             "(REFITTED_LINKS['ieee-single'])")
     args = parser.parse_args(argv)
     ARITHMETIC[0] = args.arithmetic
+    double = prog_x.REFITTED_LINKS["double"]
     if args.arithmetic != "double":
-        start = np.array([prog_x.FITTED_LINKS[n] for n in NAMES])
+        start = np.array([double[n] for n in NAMES])
         cells, x, u, sigma = fit(start)
         print(f"refit under {args.arithmetic}: minimax over {len(cells)} cells of Fig. 91")
         print(f'"{args.arithmetic}": {{' + ", ".join(f'"{n}": {v:.8f}' for n, v in zip(NAMES, x))
               + "}")
-        print(f"worst cell {np.abs(u).max():.3f} units; "
-              f"{within(x, cells)}"
-              f" of {len(cells)} within half a unit")
+        print(f"worst cell {np.abs(u).max():.3f} units; {within(x, cells)} of {len(cells)} "
+              f"within half a unit")
         for n, v in zip(NAMES, x):
-            print(f"  {n}: moves {1e6 * (v - prog_x.FITTED_LINKS[n]):+.1f} um from the double fit")
+            print(f"  {n}: moves {1e6 * (v - double[n]):+.1f} um from the double fit")
         if args.check:
-            kept = prog_x.REFITTED_LINKS[args.arithmetic]
+            kept = (prog_x.FITTED_LINKS if args.arithmetic == "es-evm"
+                    else prog_x.REFITTED_LINKS[args.arithmetic])
             if max(abs(kept[n] - v) for n, v in zip(NAMES, x)) > 1e-8:
-                print("prog_x.REFITTED_LINKS is not this refit's result", file=sys.stderr)
+                print(f"prog_x does not hold this {args.arithmetic} fit's result",
+                      file=sys.stderr)
                 return 1
         return 0
     cells, x, u, sigma = fit()
     print(f"minimax fit of {', '.join(NAMES)} to {len(cells)} cells of Fig. 91 (all but "
-          f"FI1 and {', '.join(sorted(prog_x.FIT_LEFT_OUT))})")
-    print("FITTED_LINKS = {" + ", ".join(f'"{n}": {v:.8f}' for n, v in zip(NAMES, x))
-          + "}")
+          f"FI1 and {', '.join(sorted(prog_x.FIT_LEFT_OUT))}), double precision")
+    print('"double": {' + ", ".join(f'"{n}": {v:.8f}' for n, v in zip(NAMES, x)) + "}")
     print(f"worst cell {np.abs(u).max():.3f} units; {within(x, cells)} "
           f"of {len(cells)} within half a unit")
     for n, v, e in zip(NAMES, x, sigma):
         print(f"  {n} = {v:.8f} m +- {e:.1e} m (standard uncertainty)")
     if args.check:
-        used = np.array([prog_x.FITTED_LINKS[n] for n in NAMES])
+        used = np.array([double[n] for n in NAMES])
         if np.abs(used - x).max() > 1e-8:
-            print("prog_x.FITTED_LINKS is not this fit's result", file=sys.stderr)
+            print("prog_x.REFITTED_LINKS['double'] is not this fit's result", file=sys.stderr)
             return 1
         if any(float(f"{e:.1e}") != prog_x.FITTED_UNCERTAINTY[n]
                for n, e in zip(NAMES, sigma)):

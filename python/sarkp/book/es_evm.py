@@ -118,8 +118,9 @@ _EXACT = {"SIN": math.sin, "COS": math.cos, "TAN": math.tan, "ATAN": math.atan,
 #: THE model of the book's machine: the library functions whose result is rounded to the
 #: nearest REAL*4; every other function's exact result is truncated, like the machine's
 #: arithmetic.  Chosen once by the evidence of every emulated figure, each program run
-#: whole under each of the 64 candidate models (scripts/choose_arithmetic.py; the table
-#: is in docs/judging.md): the model with the most cells fixed less cells broken.
+#: whole under each of the 64 candidate models, program X with its link lengths refitted
+#: in each of the best (scripts/choose_arithmetic.py; the tables are in docs/judging.md):
+#: the model whose runs reproduce the most printed cells.
 ROUNDED = frozenset({"ATAN", "COS", "SQRT"})
 _current = [ROUNDED]
 

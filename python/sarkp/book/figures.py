@@ -311,7 +311,7 @@ def classify(comparisons: list, evidence: Evidence | None = None) -> list:
     """``[(comparison, class, why)]`` for every counted cell (one with a computed
     counterpart that does not print a column again), ``class`` one of :data:`CLASSES`:
     a printed input (within half a unit), fitted (an input was fitted to it and it is
-    within half a unit), reproduced (within half a unit, double precision), reproduced
+    within half a unit, in double precision or in the book's arithmetic), reproduced (within half a unit, double precision), reproduced
     under the book's arithmetic (``why`` gives its difference there), differs with its
     cause shown (``why``: the ERRATA id and how), or differs, no cause shown (``why``:
     the cell's ERRATA ids, which alone explain nothing)."""
@@ -328,7 +328,10 @@ def classify(comparisons: list, evidence: Evidence | None = None) -> list:
             continue
         value = evidence.book.get(key)
         if value is not None and within_half(c.cell, value):
-            out.append((c, ARITHMETIC, f"the ES EVM: {_units(c.cell, value):+.2f} units"))
+            if key in evidence.fitted:        # an input of the fit all the same
+                out.append((c, FITTED, f"the ES EVM: {_units(c.cell, value):+.2f} units"))
+            else:
+                out.append((c, ARITHMETIC, f"the ES EVM: {_units(c.cell, value):+.2f} units"))
             continue
         cause = evidence.causes.get(key)
         if cause is not None and cause.shown(c):

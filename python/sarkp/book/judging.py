@@ -33,7 +33,9 @@ def candidates() -> list:
 
 def model_counts(rounding) -> dict:
     """``{figure: (reproduced, fixed, broken)}`` with the library functions ``rounding``
-    rounding: the counted cells the whole run in the book's arithmetic reproduces, and
+    rounding: the counted cells (less the inputs of a fit: the cells of Fig. 91 that the
+    link lengths are fitted to are no evidence) the whole run in the book's arithmetic
+    reproduces, and
     of them the cells double precision misses (fixed), and the cells double precision
     reproduces that it misses (broken).  Fig. 89's run is its as-printed run."""
     from .. import as_printed
@@ -43,13 +45,14 @@ def model_counts(rounding) -> dict:
         for number in EMULATED:
             figure = load_figure(number)
             double = compare(figure, figure_cells(number))
-            run = figure_cells(number) if number == "89" else figure_evidence(number).book
+            evidence = figure_evidence(number)
+            run = figure_cells(number) if number == "89" else evidence.book
             got = fixed = lost = 0
             for c in double:
                 key = (c.cell.row, c.cell.column)
-                if (not (c.cell.reproducible or c.cell.magnitude) or c.cell.role == "repeat"
-                        or key not in run):
-                    continue
+                if (c.computed is None or c.cell.role == "repeat" or not c.cell.counterpart
+                        or key not in run or key in evidence.fitted):
+                    continue                  # not counted, or an input of a fit
                 ok = within_half(c.cell, run[key])
                 got += ok
                 fixed += ok and not c.matches
