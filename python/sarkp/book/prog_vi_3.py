@@ -86,7 +86,14 @@ def cells() -> dict:
 def render() -> str:
     """The printout (Fig. 44) in the book's layout."""
     parts = []
-    for inputs, result, fmt in _run():
+    for k, (inputs, result, fmt) in enumerate(_run(), 1):
+        if result is None and fmt == 51 and get_mode() == "as-printed":
+            # E-FIG44-1: the printed code dumps what it computed after message 21
+            warnings.warn(f"DKRKT run {k} (AW = {inputs['AW']}): pointed teeth; computed "
+                          f"as the printed code computes it (as-printed mode, E-FIG44-1)",
+                          PointedTeethWarning, stacklevel=2)
+            got = rejected_run(inputs["AW"])
+            result = (got["X1"], got["X2"], got["ALFAW"])
         parts.append(dkrkt_report(inputs, result, None if fmt == 52 else fmt))
     return "\n".join(parts)
 
