@@ -525,8 +525,16 @@ def moved(p, v, a, t):
     return p + v * t + a * t * t / 2
 
 
-def timescale(lengths, speeds):
-    return min(lengths) / max(max(speeds), 1e-300)
+def timescale(lengths, speeds, accelerations=()):
+    """A time over which the motion stays nearly linear: the shortest length over the
+    fastest speed, and over the square root of length / acceleration (inputs nearly at
+    rest but accelerating would otherwise give a step far beyond the motion's scale)."""
+    L = min(lengths)
+    t = L / max(max(speeds), 1e-300)
+    for a in accelerations:
+        if a > 0:
+            t = min(t, math.sqrt(L / a))
+    return t
 
 
 def fd_vs(f, h, got, scale, bound, coords=0.0):
@@ -699,7 +707,7 @@ def chk_dknma1(args, out, bound):
               rel(polar(out.ABAT, out.BBAT) - out.E2 * kx(r2), Ar) / t,
               rel(polar(out.ABCT, out.BBCT) - out.E3 * kx(r3), Ar) / t]
     V = max(va, vc, out.VB, 1e-300)
-    h = 1e-4 * timescale([rz2, rz3], [va, vc])
+    h = 1e-4 * timescale([rz2, rz3], [va, vc], [aa, ac])
     v.append(fd_vs(lambda s: (lambda o: None if o is None else
                               [o.XB - out.XB, o.YB - out.YB])(
         quiet("DKNMA1", *_dknma1_at(args, s))), h, polar(out.VB, out.ALB), V, bound,
@@ -864,7 +872,7 @@ def chk_dknma2(args, out, bound):
               rel(polar(out.ABAT, out.BBAT) - out.E2 * kx(r2), Ar) / t2,
               rel(polar(out.AB, out.BB) - polar(aa, ba) + out.W2**2 * r2
                   - out.E2 * kx(r2), Ar) / t2]
-    h = 1e-4 * timescale([rz2], [va])
+    h = 1e-4 * timescale([rz2], [va], [aa])
     V = max(va, out.VB, 1e-300)
     v.append(fd_vs(lambda s: (lambda o: None if o is None else
                               [o.XB - out.XB, o.YB - out.YB])(
@@ -991,7 +999,7 @@ def chk_dknma3(args, out, bound):
     ang = math.acos(max(-1, min(1, ((A - B) @ -ax) / rz2))) if rz2 > 0 else eta
     v = [abs(cross(ax, B - C)) / (max(L, rz2) * t), abs(np.hypot(*(A - B)) - rz2) /
          (max(L, rz2) * t), abs(ang - eta) / t * 1e-2]
-    h = 1e-4 * timescale(lengths, [va, vc])
+    h = 1e-4 * timescale(lengths, [va, vc], [aa, ac])
     V = max(va, vc, 1e-300)
     W = max(abs(out.W3), V / L)
     v.append(fd_vs(lambda s: (lambda o: None if o is None else

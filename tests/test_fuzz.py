@@ -42,6 +42,20 @@ def test_valid_inputs_give_right_numbers(name, data):
     assert violation <= 1.0, (name, args, out, bound, violation)
 
 
+
+def test_nearly_at_rest_but_accelerating_dknma3():
+    """Found by the exploring profile: links nearly at rest (speeds 1e-7) but
+    accelerating (1e-2).  DKNMA3's E3 is right (a central difference of W3 over 1e-3 s
+    agrees to 1e-11); the check's time step, built from the speeds alone (200 s), was
+    far beyond the motion's scale.  The step now also respects sqrt(length/acceleration)."""
+    args = [1.0, 0.0, 0.0, 0.0, 0.20929175721840348, 0.2, 9.565004886425697e-08,
+            1.4536875822280324, 9.258114773197209e-08, 1.4801364395941514,
+            0.013856306093564637, 0.15763033464309842, 0.000929525146033492,
+            1.570784303590112, -1.0, 0.0]
+    kind, out, bound = call("DKNMA3", args)
+    assert kind == "ok"
+    assert CASES["DKNMA3"][1](args, out, bound) <= 1.0
+
 def _inputs(name):
     return list(getattr(sarkp, name).spec.inputs)
 
