@@ -2,7 +2,8 @@
 """Fit program X's link lengths to the printed Fig. 91 (docs/ERRATA.md E-X-LINKS-1).
 
 No DSNTZ1 gives the lengths the printed run used (E-DSNTZ1-4), and Fig. 84 prints them to
-3 decimals only, so as-printed mode takes them from this fit:
+3 decimals only, so as-printed mode takes them from this fit (one set for the whole
+program: the fit in the book's arithmetic, ``--arithmetic es-evm``, from the double fit):
 
 * unknowns: ROA, RAB, ROC, RCD (= RCB) and RDE, in metres;
 * cells: every printed cell of Fig. 91's 37 positions that depends on the lengths, 587
@@ -24,10 +25,17 @@ No DSNTZ1 gives the lengths the printed run used (E-DSNTZ1-4), and Fig. 84 print
   fit's Jacobian J (cells x lengths, units per metre) the covariance of the lengths is
   (J^T J)^-1 / 12 and each length's standard uncertainty the square root of its diagonal.
 
-Prints the lengths (as ``prog_x.FITTED_LINKS`` holds them), the worst cell, the number
-of fitted cells within half a unit, and the uncertainties.  ``--check`` compares with
-``prog_x.FITTED_LINKS`` (exit status 1 when they differ by more than 1e-8 m) and
-``prog_x.FITTED_UNCERTAINTY`` (to the two digits it keeps).
+* the arithmetic-model spread: ``--arithmetic es-evm`` (the book's ES EVM model) or
+  ``ieee-single`` refits the same minimax with the chain in that arithmetic
+  (sarkp.book.x_arithmetic), steered by the double chain's Jacobian, from the double fit;
+  ``prog_x.FITTED_LINKS`` holds the ES EVM fit, ``prog_x.REFITTED_LINKS`` the others, and
+  ``prog_x.links_uncertainty()`` widens the standard uncertainty by the larger move from
+  the ES EVM fit (``--check`` compares).
+
+Prints the lengths (as ``prog_x`` holds them), the worst cell, the number of fitted cells
+within half a unit, and (double) the uncertainties.  ``--check`` compares with what
+``prog_x`` holds (exit status 1 when they differ by more than 1e-8 m, or the
+uncertainties to the two digits ``prog_x.FITTED_UNCERTAINTY`` keeps).
 Run: ``python scripts/fit_x_links.py`` (needs scipy; a few seconds).
 """
 
@@ -39,6 +47,7 @@ import sys
 import numpy as np
 
 import sarkp
+import sarkp.book.figures
 from sarkp.book import prog_x
 
 NAMES = ("ROA", "RAB", "ROC", "RCD", "RDE")
@@ -50,16 +59,49 @@ def fitted_cells():
     return prog_x.fitted_cells()
 
 
+#: the arithmetic the chain runs in: "double" (sarkp, as-printed mode), or "es-evm" /
+#: "ieee-single" (sarkp.book.x_arithmetic, for the refits that widen the uncertainty)
+ARITHMETIC = ["double"]
+
+
 def units(lengths, cells) -> np.ndarray:
     """(computed - printed) / unit for ``cells`` with ``lengths`` (ROA RAB ROC RCD RDE)."""
-    links = dict(zip(NAMES, lengths))
-    with sarkp.as_printed():
-        k = prog_x.kinematics(links)
-    got = prog_x.stage_cells("kinematics", k)
+    got = computed(lengths)
     return np.array([(got[(c.row, c.column)] - c.value) / c.unit for c in cells])
 
 
+def within(lengths, cells) -> int:
+    """How many of ``cells`` the chain with ``lengths`` puts within half a unit (the
+    diff's exact rule, sarkp.book.figures.within_half)."""
+    got = computed(lengths)
+    return sum(sarkp.book.figures.within_half(c, got[(c.row, c.column)]) for c in cells)
+
+
+def computed(lengths) -> dict:
+    """Fig. 91's cells computed with ``lengths`` in the chosen arithmetic."""
+    links = dict(zip(NAMES, lengths))
+    if ARITHMETIC[0] == "double":
+        with sarkp.as_printed():
+            k = prog_x.kinematics(links)
+    else:
+        from sarkp.book import x_arithmetic
+        k = x_arithmetic.run(ARITHMETIC[0], links)["kinematics"]
+    return prog_x.stage_cells("kinematics", k)
+
+
 def jacobian(lengths, cells, step=1e-7) -> np.ndarray:
+    """The cells' derivatives by the lengths, always of the double-precision chain: a
+    step of 1e-7 m is below REAL*4's resolution (a length near 2 m has a last hex digit
+    of 9.5e-7 m), so a refit in another arithmetic steers by the smooth chain and judges
+    each step by the other arithmetic's cells."""
+    arithmetic, ARITHMETIC[0] = ARITHMETIC[0], "double"
+    try:
+        return _jacobian(lengths, cells, step)
+    finally:
+        ARITHMETIC[0] = arithmetic
+
+
+def _jacobian(lengths, cells, step) -> np.ndarray:
     out = np.empty((len(cells), len(lengths)))
     for i in range(len(lengths)):
         d = np.zeros(len(lengths))
@@ -110,11 +152,12 @@ def uncertainty(lengths, cells) -> np.ndarray:
     return np.sqrt(np.diag(np.linalg.inv(j.T @ j) / 12.0))
 
 
-def fit():
+def fit(start=None):
     cells = fitted_cells()
     with sarkp.as_printed():
         s = prog_x.synthesis()
-    start = np.array([0.166, 2.335, 2.090, s["RCD_DSNTZR"], s["RDE_DSNTZR"]])
+    if start is None:
+        start = np.array([0.166, 2.335, 2.090, s["RCD_DSNTZR"], s["RDE_DSNTZR"]])
     x = minimax(least_squares(start, cells), cells)
     u = units(x, cells)
     return cells, x, u, uncertainty(x, cells)
@@ -123,21 +166,48 @@ def fit():
 def main(argv=None) -> int:
     parser = argparse.ArgumentParser(description=__doc__.split("\n\n")[0])
     parser.add_argument("--check", action="store_true",
-                        help="exit 1 unless prog_x.FITTED_LINKS is this fit's result")
+                        help="exit 1 unless prog_x holds this fit's result")
+    parser.add_argument("--arithmetic", choices=("double", "es-evm", "ieee-single"),
+                        default="double",
+                        help="double: the fit from the printed 3-decimal lengths "
+                             "(prog_x.REFITTED_LINKS['double'], FITTED_UNCERTAINTY); "
+                             "es-evm: from it, the fit in the book's arithmetic, the one "
+                             "set the program runs with (prog_x.FITTED_LINKS); "
+                             "ieee-single: from it, the fit in IEEE single "
+                             "(REFITTED_LINKS['ieee-single'])")
     args = parser.parse_args(argv)
+    ARITHMETIC[0] = args.arithmetic
+    double = prog_x.REFITTED_LINKS["double"]
+    if args.arithmetic != "double":
+        start = np.array([double[n] for n in NAMES])
+        cells, x, u, sigma = fit(start)
+        print(f"refit under {args.arithmetic}: minimax over {len(cells)} cells of Fig. 91")
+        print(f'"{args.arithmetic}": {{' + ", ".join(f'"{n}": {v:.8f}' for n, v in zip(NAMES, x))
+              + "}")
+        print(f"worst cell {np.abs(u).max():.3f} units; {within(x, cells)} of {len(cells)} "
+              f"within half a unit")
+        for n, v in zip(NAMES, x):
+            print(f"  {n}: moves {1e6 * (v - double[n]):+.1f} um from the double fit")
+        if args.check:
+            kept = (prog_x.FITTED_LINKS if args.arithmetic == "es-evm"
+                    else prog_x.REFITTED_LINKS[args.arithmetic])
+            if max(abs(kept[n] - v) for n, v in zip(NAMES, x)) > 1e-8:
+                print(f"prog_x does not hold this {args.arithmetic} fit's result",
+                      file=sys.stderr)
+                return 1
+        return 0
     cells, x, u, sigma = fit()
     print(f"minimax fit of {', '.join(NAMES)} to {len(cells)} cells of Fig. 91 (all but "
-          f"FI1 and {', '.join(sorted(prog_x.FIT_LEFT_OUT))})")
-    print("FITTED_LINKS = {" + ", ".join(f'"{n}": {v:.8f}' for n, v in zip(NAMES, x))
-          + "}")
-    print(f"worst cell {np.abs(u).max():.3f} units; {int(np.sum(np.abs(u) <= 0.5 + 1e-9))} "
+          f"FI1 and {', '.join(sorted(prog_x.FIT_LEFT_OUT))}), double precision")
+    print('"double": {' + ", ".join(f'"{n}": {v:.8f}' for n, v in zip(NAMES, x)) + "}")
+    print(f"worst cell {np.abs(u).max():.3f} units; {within(x, cells)} "
           f"of {len(cells)} within half a unit")
     for n, v, e in zip(NAMES, x, sigma):
         print(f"  {n} = {v:.8f} m +- {e:.1e} m (standard uncertainty)")
     if args.check:
-        used = np.array([prog_x.FITTED_LINKS[n] for n in NAMES])
+        used = np.array([double[n] for n in NAMES])
         if np.abs(used - x).max() > 1e-8:
-            print("prog_x.FITTED_LINKS is not this fit's result", file=sys.stderr)
+            print("prog_x.REFITTED_LINKS['double'] is not this fit's result", file=sys.stderr)
             return 1
         if any(float(f"{e:.1e}") != prog_x.FITTED_UNCERTAINTY[n]
                for n, e in zip(NAMES, sigma)):

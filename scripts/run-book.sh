@@ -1,7 +1,8 @@
 #!/usr/bin/env bash
 # Main job: the course project of chapter 10 (program X) computed again, stage by stage,
 # with its pictures, then every printed figure reproduced so far compared with the book
-# cell by cell (as-printed mode, the book's own arithmetic), ending with the summary table.
+# cell by cell (as-printed mode; the rules: docs/judging.md), each figure ending with its line
+# of the summary table (the same classes and counts), then the table itself.
 # Extra arguments go to the diff (e.g. --mode corrected).  Pictures: $SARKP_PLOTS
 # (default /tmp/sarkp-plots).
 set -euo pipefail

@@ -45,8 +45,8 @@ def test_fig4_last_angle_needs_the_es_evm_arithmetic():
     _, comparisons = diff("4", "corrected")
     last = next(c for c in comparisons if (c.cell.row, c.cell.column) == ("18", "FI"))
     assert last.computed == pytest.approx(17 * math.pi / 18, abs=1e-14) and not last.matches
-    emulated = book.figure_evidence("4").arithmetics["ES EVM"][("18", "FI")]
-    assert abs(emulated - last.cell.value) <= 0.5 * last.cell.unit
+    emulated = book.figure_evidence("4").book[("18", "FI")]
+    assert figures.within_half(last.cell, emulated)
 
 
 def test_fig4_velocity_columns_are_not_the_printed_ones():
@@ -167,24 +167,28 @@ def test_fig4_row16_w3_is_on_a_rounding_edge_E_FIG4_5():
     with sarkp.as_printed():
         fi3 = prog_ii_13.compute()["FI3"][15]
     assert 0.0 < need - fi3 < 16.0 ** -5
-    # one rule for every figure: the cell is compared (in magnitude, E-II13-3), and the
-    # diff says which run reproduces it: IEEE single, not double or the ES EVM emulation
+    # one rule for every figure: the cell is compared (in magnitude, E-II13-3); neither
+    # double nor the book's arithmetic (the one ES EVM model) reproduces it, so it
+    # differs with no cause shown; IEEE single does, but is a diagnostic, never credited
     assert row["W3"].magnitude and "E-FIG4-5" in row["W3"].errata
     left_out = [c for c in figures.load_figure("4").cells
                 if c.column in ("W2", "W3") and not c.magnitude]
     assert left_out == []
     _, comparisons = diff("4", "as-printed")
+    evidence = book.figure_evidence("4")
     classes = {(c.cell.row, c.cell.column): (kind, why) for c, kind, why in
-               figures.classify(comparisons, book.figure_evidence("4"))}
-    kind, why = classes[("16", "W3")]
-    assert kind == figures.ARITHMETIC and why.startswith("IEEE single")
+               figures.classify(comparisons, evidence)}
+    kind, _ = classes[("16", "W3")]
+    assert kind == figures.NO_CAUSE
+    assert not figures.within_half(row["W3"], evidence.book[("16", "W3")])
+    assert figures.within_half(row["W3"], evidence.diagnostic["IEEE single"][("16", "W3")])
 
 
 def test_fig4_diff_compares_w2_w3_in_magnitude(capsys):
     assert main(["book", "diff", "4"]) == 0
     out = capsys.readouterr().out
     assert "36 printed cells compared in magnitude only" in out and ": 35 match" in out
-    assert "18 printed cells not reproducible" in out and "E-FIG4-5" in out
+    assert "18 printed cells have no computed counterpart" in out and "E-FIG4-5" in out
     _, comparisons = diff("4", "as-printed")
     signs = [c for c in comparisons if c.cell.magnitude]
     assert len(signs) == 36 and sum(c.matches for c in signs) == 35
@@ -192,9 +196,17 @@ def test_fig4_diff_compares_w2_w3_in_magnitude(capsys):
 
 
 def test_cli_diff_summary(capsys):
+    """The diff's last line is the figure's row of the summary table, in its words."""
     assert main(["book", "diff", "4"]) == 0
     out = capsys.readouterr().out
-    assert out.rstrip().endswith("144 of 144 cells match")
+    figure, comparisons = diff("4", "as-printed")
+    evidence = book.figure_evidence("4")
+    row = figures.summary(figure, comparisons, evidence)
+    assert out.rstrip().splitlines()[-1] == figures.summary_line(row)
+    counted = [c for c in comparisons if c.computed is not None and c.cell.counterpart]
+    assert row["compared"] == len(counted) == 180            # all but VD's 18 (E-II13-2)
+    assert row[figures.INPUT] == 18                           # the crank angle grid FI
+    assert sum(row[k] for k in figures.CLASSES) == row["compared"]
     assert main(["book", "diff", "4", "--mode", "corrected"]) == 1
     out = capsys.readouterr().out
     assert "E-II13-4" in out and "E-FIG4-4" in out
@@ -301,10 +313,15 @@ def test_readme_arithmetic_table_is_current():
 def test_fig44_rejected_run_is_the_listings_E_FIG44_1():
     """E-FIG44-1: sarkp refuses run 4 (AW = 110: pointed teeth); the listing's formulas
     (6.12), (6.14) give the dump's ALFAW, XS, X1, X2 to the printed digit, and the printed
-    cells agree with each other: XS = X1 + X2."""
+    cells agree with each other: XS = X1 + X2.  As printed, the program computes them as
+    the printed code does and warns; corrected, it refuses and they are not computed."""
     from sarkp.book import prog_vi_3
     with pytest.raises(sarkp.RequirementError):
         sarkp.DKRKT(4.0, 13.0, 34.0, 110.0, 0)
+    with sarkp.mode("corrected"):
+        assert ("4", "XS") not in prog_vi_3.cells()
+    with sarkp.as_printed(), pytest.warns(prog_vi_3.PointedTeethWarning, match="pointed"):
+        assert ("4", "XS") in prog_vi_3.cells()
     cells = {(c.row, c.column): c for c in figures.load_figure("44").cells}
     got = prog_vi_3.rejected_run()
     for column, name in (("ALFAW/55", "ALFAW"), ("XS", "XS"), ("X1/55", "X1"),
@@ -313,8 +330,135 @@ def test_fig44_rejected_run_is_the_listings_E_FIG44_1():
         assert abs(got[name] - cell.value) <= 0.5 * cell.unit, column
     assert abs(cells[("4", "X1/55")].value + cells[("4", "X2/55")].value
                - cells[("4", "XS")].value) < 1e-9
-    _, comparisons = diff("44", "as-printed")
-    shown = [(c.cell.row, c.cell.column) for c, kind, _ in
-             figures.classify(comparisons, book.figure_evidence("44"))
-             if kind == figures.CAUSE_SHOWN]
-    assert sorted(shown) == [("4", "ALFAW/55"), ("4", "X1/55"), ("4", "X2/55"), ("4", "XS")]
+    with pytest.warns(prog_vi_3.PointedTeethWarning):
+        _, comparisons = diff("44", "as-printed")
+    run4 = {c.cell.column: c for c in comparisons if c.cell.row == "4"}
+    for column in ("ALFAW/55", "X1/55", "X2/55", "XS"):
+        assert run4[column].matches, column
+
+
+# ---- how a cell is judged (docs/judging.md) ----------------------------------------------
+
+def _cell(printed, decimals, magnitude=False):
+    return figures.Cell("1", "X", printed, decimals, 1, "", "", not magnitude, magnitude)
+
+
+def test_half_a_unit_is_exact_and_ties_round_half_away_from_zero():
+    """Half a unit means at most half a unit, by the exact binary value: no slack; an
+    exact tie (1.25, 0.125: binary fractions) goes to the print that rounding half away
+    from zero gives."""
+    assert figures.within_half(_cell("1.3", 1), 1.25)          # 1.25 prints 1.3
+    assert not figures.within_half(_cell("1.2", 1), 1.25)
+    assert figures.within_half(_cell("-1.3", 1), -1.25)        # away from zero
+    assert not figures.within_half(_cell("-1.2", 1), -1.25)
+    assert figures.within_half(_cell("0.13", 2), 0.125)
+    # 3.015 as a double lies 1.2e-16 above the tie: it prints 3.02, not 3.01 (Fig. 96
+    # WPRM row 15 differs in double precision)
+    assert not figures.within_half(_cell("3.01", 2), 3.015)
+    assert figures.within_half(_cell("3.02", 2), 3.015)
+    assert not figures.within_half(_cell("1.2", 1), math.nextafter(1.25, 2.0))
+    assert figures.within_half(_cell("1.2", 1), math.nextafter(1.25, 0.0))
+    assert figures.within_half(_cell("1.3", 1, magnitude=True), -1.25)
+
+
+def test_every_cell_with_a_computed_counterpart_is_compared():
+    """Only Fig. 4's VD (E-II13-2: the printed II.13 passes other arguments; the program
+    has no counterpart) is not compared; repeated input columns are compared but not
+    counted; every counted cell is in exactly one class."""
+    for number in book.FIGURES:
+        figure = figures.load_figure(number)
+        with sarkp.as_printed(), __import__("warnings").catch_warnings():
+            __import__("warnings").simplefilter("ignore")
+            computed = book.figure_cells(number)
+        comparisons = figures.compare(figure, computed)
+        missing = {(c.cell.column, c.cell.errata) for c in comparisons
+                   if c.computed is None or not c.cell.counterpart}
+        assert missing == ({("VD", "E-II13-2")} if number == "4" else set()), number
+        row = figures.summary(figure, comparisons, book.figure_evidence(number))
+        repeats = sum(c.cell.role == "repeat" for c in comparisons)
+        assert row["compared"] + repeats + row["left_out"] == len(figure.cells), number
+        assert sum(row[k] for k in figures.CLASSES) == row["compared"], number
+
+
+def test_printed_inputs_are_counted_once():
+    """Fig. 91 prints the crank angle grid three times: 37 printed inputs, the other 74
+    cells repeats, not counted; Figs. 94 and 96 print it again: not counted at all."""
+    for number, inputs, repeats in (("91", 37, 74), ("94", 0, 74), ("96", 0, 37)):
+        figure = figures.load_figure(number)
+        with sarkp.as_printed():
+            comparisons = figures.compare(figure, book.figure_cells(number))
+        row = figures.summary(figure, comparisons, book.figure_evidence(number))
+        assert row[figures.INPUT] == inputs and row["repeats"] == repeats, number
+        assert all(c.matches for c in comparisons if c.cell.role), number
+
+
+def test_the_book_arithmetic_is_the_model_the_evidence_chooses():
+    """The one library model (es_evm.ROUNDED) reproduces more printed cells, over every
+    emulated figure run whole, than each model one function away from it
+    (scripts/choose_arithmetic.py judges all 64).  Where the figures other than program
+    X's tell the two apart, they decide; where they tie (ACOS, SIN here), program X
+    decides, each model with the link lengths fitted in its own arithmetic (the lengths
+    are inputs fitted to Fig. 91, so a model is judged with its own fit)."""
+    pytest.importorskip("scipy")
+    import importlib.util
+    import pathlib
+    from sarkp.book import es_evm, judging, x_arithmetic, x_data
+    path = pathlib.Path(__file__).resolve().parents[1] / "scripts" / "fit_x_links.py"
+    spec = importlib.util.spec_from_file_location("fit_x_links", path)
+    fit = importlib.util.module_from_spec(spec)
+    spec.loader.exec_module(fit)
+    chosen = es_evm.ROUNDED
+    base = judging.model_counts(chosen)
+
+    def outside(counts):
+        return sum(v[0] for n, v in counts.items() if n not in ("91", "94", "96"))
+    saved = dict(x_data.FITTED_LINKS)
+    try:
+        for name in es_evm.FUNCTIONS:
+            other = chosen ^ {name}
+            counts = judging.model_counts(other)
+            if outside(counts) != outside(base):
+                assert outside(counts) < outside(base), sorted(other)
+                continue
+            fit.ARITHMETIC[0] = "es-evm"
+            start = np.array([x_data.REFITTED_LINKS["double"][n] for n in fit.NAMES])
+            with es_evm.library_model(other):
+                _, lengths, _, _ = fit.fit(start)
+            x_data.FITTED_LINKS.update(zip(fit.NAMES, map(float, lengths)))
+            x_arithmetic._run.cache_clear()
+            assert judging.score(judging.model_counts(other)) < judging.score(base), \
+                sorted(other)
+            x_data.FITTED_LINKS.update(saved)
+            x_arithmetic._run.cache_clear()
+    finally:
+        x_data.FITTED_LINKS.update(saved)
+        x_arithmetic._run.cache_clear()
+
+
+def test_the_book_arithmetic_is_applied_whole():
+    """A cell reproduced under the book's arithmetic is one that the whole program run
+    under the one model reproduces; the cells that run breaks are counted beside it."""
+    from sarkp.book import es_evm
+    for number in ("35", "91"):
+        figure = figures.load_figure(number)
+        with sarkp.as_printed():
+            comparisons = figures.compare(figure, book.figure_cells(number))
+        evidence = book.figure_evidence(number)
+        for c, kind, _ in figures.classify(comparisons, evidence):
+            if kind == figures.ARITHMETIC:
+                assert figures.within_half(c.cell, evidence.book[(c.cell.row, c.cell.column)])
+        with es_evm.library_model(set(es_evm.FUNCTIONS) - es_evm.ROUNDED):
+            other = book.figure_evidence(number)
+        assert other.book != evidence.book, number
+        assert figures.broken(comparisons, evidence) == [
+            c for c in comparisons if c.computed is not None and c.cell.role != "repeat"
+            and c.matches and not figures.within_half(
+                c.cell, evidence.book[(c.cell.row, c.cell.column)])]
+
+
+def test_a_value_that_is_no_number_is_not_within_half_a_unit():
+    """Corrected program X stalls without a flywheel (WPR, EPR are NaN): such a cell
+    differs, it does not break the comparison."""
+    for value in (math.nan, math.inf, -math.inf):
+        assert not figures.within_half(_cell("1.2", 1), value)
+    assert main(["book", "diff", "96", "--mode", "corrected"]) in (0, 1)

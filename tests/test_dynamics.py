@@ -214,12 +214,12 @@ def _values(number, name):
 
 
 def _chain():
-    """Program X's own M1 (Fig. 94) and IPR (Fig. 96), unrounded: sarkp's as-printed run
-    of the program (sarkp.book.prog_x)."""
-    with sarkp.as_printed():
-        done = prog_x.run(["forces"])
-        ipr = prog_x.reduced_inertia(done["synthesis"], done["kinematics"])
-    return done["forces"]["M1"], ipr
+    """Program X's own M1 (Fig. 94) and IPR (Fig. 96), unrounded: the program run whole in
+    the book's arithmetic (sarkp.book.x_arithmetic, the run the printed figures round;
+    its link lengths are fitted in that arithmetic, E-X-LINKS-1)."""
+    from sarkp.book import x_arithmetic
+    run = x_arithmetic.run("es-evm")
+    return run["forces"]["M1"], run["dynamics"]["IPR"]
 
 
 def test_fig96_inputs_are_the_chains_rounded_E_FIG96_3():

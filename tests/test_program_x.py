@@ -61,36 +61,69 @@ def test_every_differing_cell_is_classified_with_an_errata_id(number):
     """Every compared cell is in exactly one class; a differing cell carries the ERRATA
     id that discusses it (which alone explains nothing: the class says what is shown)."""
     figure, comparisons = diff(number)
-    compared = [c for c in comparisons if c.cell.reproducible or c.cell.magnitude]
+    compared = [c for c in comparisons if c.computed is not None and c.cell.counterpart
+                and c.cell.role != "repeat"]
+    assert len(compared) == len(comparisons) - sum(c.cell.role == "repeat"
+                                                   for c in comparisons)
     got = classes(number)
     assert sum(len(v) for v in got.values()) == len(compared)
+    with sarkp.as_printed():
+        book_run = book.figure_evidence(number).book
     for kind, cells in got.items():
         assert kind in figures.CLASSES
         for c, why in cells:
-            if kind in (figures.REPRODUCED, figures.FITTED):
+            if kind == figures.FITTED:                 # in double or the book's arithmetic
+                key = (c.cell.row, c.cell.column)
+                assert c.matches or figures.within_half(c.cell, book_run[key])
+            elif kind in (figures.REPRODUCED, figures.INPUT):
                 assert c.matches
             else:
                 assert not c.matches and c.cell.errata, (c.cell.row, c.cell.column)
 
 
-def test_the_fit_reaches_the_audited_minimax():
-    """E-X-LINKS-1: an independent audit's minimax fit of the five lengths (Fig. 91's
-    cells less the five of E-FIG91-9/-10) reached a worst cell of 0.544 units with
-    683/539/351 cells of Figs. 91/94/96 within half a unit; the shipped fit must do as
-    well: at least those counts, and a worst fitted cell no larger than the audit's 0.544
-    (given to three decimals: 0.5445)."""
-    for number, least in (("91", 683), ("94", 539), ("96", 351)):
-        _, comparisons = diff(number)
-        assert sum(c.matches for c in comparisons if c.cell.reproducible) >= least
-    fitted = {(c.row, c.column) for c in prog_x.fitted_cells()}
-    _, comparisons = diff("91")
-    worst = max(abs(c.units) for c in comparisons if (c.cell.row, c.cell.column) in fitted)
-    assert worst <= 0.5445
+def _printed_run_bound91():
+    """Fig. 91 as-printed (double) and, per cell, the bound its difference from the print
+    has by the stated cause: the machine printed its REAL*4 value rounded, so a cell's
+    double-precision value lies within half a unit of the print plus the book's
+    arithmetic's own error there (|ES EVM run - double run|, both with the fitted lengths)
+    plus what the lengths' standard uncertainty moves it (sum over the lengths of
+    |d cell / d length| sigma)."""
+    from sarkp.book import x_arithmetic
+    with sarkp.as_printed():
+        double = book.figure_cells("91")
+    es = x_arithmetic.figure_cells("91", "es-evm")
+    base = dict(prog_x.FITTED_LINKS)
+
+    def run(lengths):
+        with sarkp.as_printed():
+            s = prog_x.synthesis()
+            s.update(lengths)
+            s["RCB"] = s["RCD"]
+            return prog_x.stage_cells("kinematics", prog_x.kinematics(s))
+    moved = {}
+    for name, sigma in prog_x.FITTED_UNCERTAINTY.items():
+        up, down = run({**base, name: base[name] + 1e-7}), run({**base, name: base[name] - 1e-7})
+        moved[name] = {k: abs(up[k] - down[k]) / 2e-7 * sigma for k in up}
+    bound = {c.row + "/" + c.column: 0.5 * c.unit + abs(es[(c.row, c.column)]
+                                                         - double[(c.row, c.column)])
+             + sum(m[(c.row, c.column)] for m in moved.values())
+             for c in figures.load_figure("91").cells}
+    return double, bound
+
+
+def test_fitted_cells_are_within_half_a_unit_plus_the_arithmetic():
+    """E-X-LINKS-1: every fitted cell lies within the bound of its stated cause
+    (:func:`_printed_run_bound91`: half a unit, the arithmetic's error, the lengths')."""
+    double, bound = _printed_run_bound91()
+    for c in prog_x.fitted_cells():
+        key = (c.row, c.column)
+        assert abs(double[key] - c.value) <= bound[c.row + "/" + c.column], key
 
 
 def test_fit_script_gives_the_fitted_links():
-    """prog_x.FITTED_LINKS are scripts/fit_x_links.py's output (it refits from the
-    printed Fig. 91 and compares, exit status 1 otherwise)."""
+    """prog_x.REFITTED_LINKS["double"] and prog_x.FITTED_LINKS (the fit in the book's
+    arithmetic, from the double one) are scripts/fit_x_links.py's output (it refits from
+    the printed Fig. 91 and compares, exit status 1 otherwise)."""
     pytest.importorskip("scipy")
     import pathlib
     script = pathlib.Path(__file__).resolve().parents[1] / "scripts" / "fit_x_links.py"
@@ -98,6 +131,11 @@ def test_fit_script_gives_the_fitted_links():
                           text=True, cwd=tempfile.gettempdir(), timeout=300)
     assert done.returncode == 0, done.stderr
     assert "587 cells of Fig. 91" in done.stdout
+    # the one set the program runs with: the fit in the book's arithmetic
+    done = subprocess.run([sys.executable, str(script), "--check", "--arithmetic", "es-evm"],
+                          capture_output=True, text=True, cwd=tempfile.gettempdir(),
+                          timeout=300)
+    assert done.returncode == 0, done.stderr
 
 
 def test_fitted_cells_are_reported_as_fitted_not_reproduced():
@@ -140,19 +178,25 @@ def test_fig89_fastest_follower_speed_needs_a_rounding_sin_E_FIG89_4():
     """E-FIG89-4: VT = WO SK/W1 SIN(PSI/SK) at PSI/SK = PI/2 (rows 6 and 21).  The exact
     value is the tie 0.23625; with SIN's result truncated to REAL*4 (0.99999994) the
     machine's VT lies below it and prints 0.2362, with SIN rounded (to 1.0) it prints
-    the printed 0.2363."""
+    the printed 0.2363.  The one library model, chosen over every emulated figure,
+    truncates SIN (a rounding SIN breaks cells of Fig. 35): the two cells differ with no
+    cause shown, and no other model is credited."""
+    from sarkp.book import es_evm
     p = printed("89")
+    assert "SIN" not in es_evm.ROUNDED
     with sarkp.as_printed():
         truncated = prog_x.cam_law()
-        rounded = prog_x.cam_law(sin_rounds=True)
+        with es_evm.library_model(es_evm.ROUNDED | {"SIN"}):
+            rounded = prog_x.cam_law()
     for row in (6, 21):
         printed_vt = p[(str(row), "VT")]
         assert abs(abs(printed_vt) - 0.2363) < 1e-12
         assert abs(truncated["VT"][row - 1] - printed_vt) > 0.5e-4
         assert abs(rounded["VT"][row - 1] - printed_vt) <= 0.5e-4
     got = classes("89")
-    assert {(c.cell.row, c.cell.column) for c, _ in got[figures.ARITHMETIC]} == {
+    assert {(c.cell.row, c.cell.column) for c, _ in got[figures.NO_CAUSE]} == {
         ("6", "VT"), ("21", "VT")}
+    assert figures.ARITHMETIC not in got
 
 
 def test_fig87_sa_is_a_misprint_E_FIG87_1():
@@ -169,45 +213,45 @@ def test_fig87_sa_is_a_misprint_E_FIG87_1():
     assert shown == [("DGMTZK1", "SA")]
 
 
-def test_lengths_within_their_uncertainty_show_the_cause_E_X_LINKS_1():
-    """A cell of Figs. 94, 96 classified "cause shown" by the lengths' uncertainty: the
-    lengths applied lie within one standard uncertainty of the fitted ones (each length
-    within its own: a necessary condition of the Mahalanobis distance <= 1 the cause
-    requires), and program X's chain rerun here with them puts the cell within half a
-    unit of its print."""
-    sigma = prog_x.FITTED_UNCERTAINTY
-    found = 0
-    for number, stage in (("94", "forces"), ("96", "dynamics")):
-        figure = figures.load_figure(number)
-        got = classes(number)
-        for c, why in got.get(figures.CAUSE_SHOWN, []):
-            with sarkp.as_printed():
-                cause = book.figure_evidence(number).causes[(c.cell.row, c.cell.column)]
-                assert cause.errata == "E-X-LINKS-1" and cause.applied
-                for name, value in cause.applied.items():
-                    # sigma is stored to two digits: at most 0.05e-6 of 1.1e-6, 4.5%
-                    assert abs(value - prog_x.FITTED_LINKS[name]) <= sigma[name] * 1.046, name
-                s = prog_x.synthesis()
-                s.update(cause.applied)
-                s["RCB"] = s["RCD"]
-                k = prog_x.kinematics(s)
-                f = prog_x.forces(s, k)
-                r = f if stage == "forces" else prog_x.dynamics(s, k, f)
-            value = prog_x.stage_cells(stage, r)[(c.cell.row, c.cell.column)]
-            assert abs(value - c.cell.value) <= 0.5 * c.cell.unit
-            assert figure.number == number
-            found += 1
-    assert found >= 1
+def test_one_set_of_lengths_with_the_arithmetic_spread_E_X_LINKS_1(capsys):
+    """No cell has a length cause of its own: program X runs with one set of lengths.
+    Its uncertainty is widened by the arithmetic-model spread (the refits in the ES EVM's
+    arithmetic and IEEE single, scripts/fit_x_links.py --arithmetic), and each refit is
+    the better minimax fit in its own arithmetic: its worst fitted cell there is smaller
+    than the double fit's."""
+    from sarkp.book import x_arithmetic
+    widened = prog_x.links_uncertainty()
+    for name, sigma in prog_x.FITTED_UNCERTAINTY.items():
+        spread = max(abs(r[name] - prog_x.FITTED_LINKS[name])
+                     for r in prog_x.REFITTED_LINKS.values())
+        assert widened[name] >= max(sigma, spread)
+    cells = prog_x.fitted_cells()
+    for arithmetic, lengths in prog_x.REFITTED_LINKS.items():
+        def worst(run):
+            got = prog_x.stage_cells("kinematics", run["kinematics"])
+            return max(abs(got[(c.row, c.column)] - c.value) / c.unit for c in cells)
+        assert worst(x_arithmetic.run(arithmetic, lengths)) < worst(
+            x_arithmetic.run(arithmetic)), arithmetic
+    for number in ("91", "94", "96"):
+        with sarkp.as_printed():
+            assert not book.figure_evidence(number).causes
+    main(["book", "diff", "91"])
+    out = capsys.readouterr().out
+    for name, value in prog_x.FITTED_LINKS.items():       # the diff prints the set
+        assert f"{name} = {value:.8f} +- {widened[name] * 1e6:.1f} um" in out
 
 
 def test_cli_diff_classifies_every_cell(capsys):
     for number in ("84", "89", "91", "94", "96"):
         main(["book", "diff", number])
         out = capsys.readouterr().out
-        assert "cells match" in out
+        figure, comparisons = diff(number)
+        with sarkp.as_printed():
+            row = figures.summary(figure, comparisons, book.figure_evidence(number))
+        assert out.rstrip().splitlines()[-1] == figures.summary_line(row)
         for line in out.splitlines():
-            if "DIFFERS" in line:
-                assert any(k in line for k in figures.CLASSES[2:]), line
+            if "DIFFERS" in line or "differs in double" in line:
+                assert any(k in line for k in figures.CLASSES[3:]), line
 
 
 def test_fig84_as_printed():
@@ -309,10 +353,11 @@ def test_fig91_identities_of_the_printed_columns():
     """The evidence for E-FIG91-1..5 and -9, from the printed table alone (and the
     printed 4-digit neighbours), with the link lengths of E-X-LINKS-1.  Each identity is
     evaluated on printed cells, each known to half a unit (0.5e-4), and on the fitted
-    lengths, each known to its standard uncertainty: the allowance is what those move the
-    identity by (:func:`_spread`), plus the half unit of the cell it is compared with."""
+    lengths, each known to its uncertainty (widened by the arithmetic-model spread,
+    prog_x.links_uncertainty): the allowance is what those move the identity by
+    (:func:`_spread`), plus the half unit of the cell it is compared with."""
     c = columns("91")
-    L, sigma = prog_x.FITTED_LINKS, prog_x.FITTED_UNCERTAINTY
+    L, sigma = prog_x.FITTED_LINKS, prog_x.links_uncertainty()
     h = 0.5e-4
 
     def w2(f1, f2, fcb, roa, rab):          # v_B = v_A + W2 k x AB = W3 k x CB
@@ -350,33 +395,49 @@ def test_fig91_identities_of_the_printed_columns():
         value, allowed = e4(*args), _spread(e4, args, halves) + h
         assert abs(value - c["E4"][row - 1]) <= allowed          # 3.8884, E-FIG91-2
         assert abs(value - 3.8804) > allowed
-    # E-FIG91-9: the print lies between this identity and the double-precision value
-    with sarkp.as_printed():
-        got = prog_x.figure_cells("91")
-    for row in (15, 16):
-        identity = e4(*[c[n][row - 1] for n in names], L["RCD"], L["RDE"])
-        lo, hi = sorted((identity, got[(str(row), "E4")]))
-        assert lo <= c["E4"][row - 1] <= hi
+    # E-FIG91-9: the table's most sensitive cells (cos FIDE = 0.41 divides), left out of
+    # the fit: with the lengths fitted in the book's arithmetic, row 16 is reproduced in
+    # double precision and row 15 under the book's arithmetic
+    got = {(c.cell.row, c.cell.column): kind for c, kind, _ in
+           figures.classify(diff("91")[1], book.figure_evidence("91"))}
+    assert got[("16", "E4")] == figures.REPRODUCED
+    assert got[("15", "E4")] == figures.ARITHMETIC
 
 
 def test_fig91_needs_the_duskr1_error():
-    """Corrected mode (E-DUSKR1-1 fixed) does not reproduce the printed E3; E2 does not
-    depend on it."""
+    """Corrected mode (E-DUSKR1-1 fixed) does not reproduce the printed E3.  As printed,
+    DUSKR1 takes ABS(Y(1)) for both angular accelerations, so |E3| RCB = |E2| RAB in
+    every row (the relative gap is double precision's rounding of two divisions)."""
     c = columns("91")
     with sarkp.as_printed():
         links = prog_x.synthesis()
+        printed_run = prog_x.kinematics(links)
     got = prog_x.kinematics(links)                  # corrected routines, book's mechanism
     assert np.abs(got["E3"] - c["E3"]).max() > 0.5
-    assert np.abs(got["E2"] - c["E2"]).max() < 2e-3
+    lhs = np.abs(printed_run["E3"]) * links["RCB"]
+    rhs = np.abs(printed_run["E2"]) * links["RAB"]
+    assert np.all(np.abs(lhs - rhs) <= 4 * np.finfo(float).eps * rhs)
+    assert not np.allclose(np.abs(got["E3"]) * links["RCB"], rhs)
 
 
 def test_fig91_slider_directions_are_0_or_pi():
-    """E-FIG91-10: VE and AE are along the horizontal guide."""
+    """E-FIG91-10: VE and AE are along the horizontal guide, up to the book's PI: each
+    vector summed into them has a direction with at most two of the book's PI or PI/2
+    added (ALD = FICB + PI + PI/2, BD = FICB + PI + (PI - ...), FIDE + PI/2, FI2 - PI),
+    each off by at most pi - 3.14159, so the sum's direction is off the guide by at most
+    2 (pi - 3.14159) times the sum of the terms' magnitudes over the result's: VE = VD +
+    VED with |VED| <= |VD| + |VE|; AE = AD + the normal W2**2 RDE (E-X-W4) + the
+    tangential |E4| RDE."""
     with sarkp.as_printed():
+        links = prog_x.synthesis()
         k = prog_x.run(["kinematics"])["kinematics"]
-    for name in ("ALE", "BE"):
-        off = np.minimum(np.abs(np.sin(k[name])), 1.0)
-        assert off.max() < 1e-4
+    off = 2.0 * (math.pi - 3.14159)
+    ad = links["RCD"] * np.sqrt(k["W3"]**4 + k["E3"]**2)
+    bounds = {"ALE": off * (2.0 * np.abs(k["VD"]) + np.abs(k["VE"])) / np.abs(k["VE"]),
+              "BE": off * (ad + k["W2"]**2 * links["RDE"] + np.abs(k["E4"]) * links["RDE"])
+              / np.abs(k["AE"])}
+    for name, bound in bounds.items():
+        assert np.all(np.abs(np.sin(k[name])) <= bound), name
 
 
 def test_fig86_ocr_fix_from_coaxiality():
@@ -430,9 +491,10 @@ def test_fig87_sa1_is_on_its_rounding_edge():
 
 
 def test_fig87_internal_mesh_cells_are_what_the_es_evm_computed():
-    """E-FIG87-3: DGMZVN run statement by statement in the ES EVM's REAL*4
-    (prog_vi_7.emulate, independent of sarkp's Fortran) with program X's call gives the
-    printed DA1, DA2, DF2, H2 that sarkp's double precision misses."""
+    """E-FIG87-3: DGMZVN run statement by statement in the ES EVM's REAL*4 with the one
+    library model (prog_vi_7.emulate, independent of sarkp's Fortran) with program X's
+    call gives the printed DA1, DA2, DF2, H2, SA1 that sarkp's double precision misses;
+    H1 neither run gives: no cause shown."""
     from sarkp.book import prog_vi_7
     with sarkp.as_printed():
         x = sarkp.DKRKT(3.0, 20.0, 51.0, 0.0, 3).X2
@@ -441,32 +503,38 @@ def test_fig87_internal_mesh_cells_are_what_the_es_evm_computed():
     emulated = prog_vi_7.emulate({"X": inputs})
     _, comparisons = diff("87")
     cells = {c.cell.column: c for c in comparisons if c.cell.row == "DGMZVN"}
-    for name in ("DA1", "DA2", "DF2", "H2"):
+    for name in ("DA1", "DA2", "DF2", "H2", "SA1", "H1"):
         cell = cells[name]
         assert not cell.matches
-        assert abs(emulated[("X", name)] - cell.cell.value) <= 0.5 * cell.cell.unit
-    # but not H1 (+0.63 units) and SA1 (-0.58): no cause shown for those two
-    for name, units in (("H1", 0.63), ("SA1", -0.58)):
-        cell = cells[name]
-        off = (emulated[("X", name)] - cell.cell.value) / cell.cell.unit
-        assert not cell.matches and abs(off - units) < 0.01
+        assert figures.within_half(cell.cell, emulated[("X", name)]) == (name != "H1"), name
     got = classes("87")
+    assert {c.cell.column for c, _ in got[figures.ARITHMETIC] if c.cell.row == "DGMZVN"} == {
+        "DA1", "DA2", "DF2", "H2", "SA1"}
     assert {c.cell.column for c, _ in got[figures.NO_CAUSE] if c.cell.row == "DGMZVN"} == {
-        "H1", "SA1"}
+        "H1"}
 
 
-def test_fig87_dgmzpc_cells_are_not_what_the_es_evm_gives_E_FIG87_2():
+def test_fig87_dgmzpc_cells_need_a_rounding_atan_E_FIG87_2():
     """E-FIG87-2: DGMZPC run statement by statement in the ES EVM's REAL*4
-    (prog_vi_6.emulate, program X's call) gives AW = 106.497101, -0.92 units from the
-    printed 106.4972: the machine's arithmetic as emulated does not reproduce AW, XU, XUR,
-    and the diff says "no cause shown" for them."""
+    (prog_vi_6.emulate, program X's call): with ATAN truncating its result, DUGINV's
+    iteration stops on another alpha_w and AW misses the printed 106.4972 (XU, XUR with
+    it); with the one library model (ATAN rounds) the run gives the printed AW, XU, XUR,
+    which double precision misses."""
+    from sarkp.book import es_evm
     p = printed("87")
+    assert "ATAN" in es_evm.ROUNDED
+    cells = {n: c for c in figures.load_figure("87").cells if c.row == "DGMZPC"
+             for n in [c.column]}
     with sarkp.as_printed():
-        emulated = book.figure_evidence("87").arithmetics["ES EVM"]
-    assert abs(emulated[("DGMZPC", "AW")] - 106.497101) < 5e-7
-    assert abs(emulated[("DGMZPC", "AW")] - p[("DGMZPC", "AW")]) > 0.5e-4
+        book_run = book.figure_evidence("87").book
+        with es_evm.library_model(es_evm.ROUNDED - {"ATAN"}):
+            truncating = book.figure_evidence("87").book
+    assert not figures.within_half(cells["AW"], truncating[("DGMZPC", "AW")])
+    for name in ("AW", "XU", "XUR"):
+        assert figures.within_half(cells[name], book_run[("DGMZPC", name)]), name
+    assert abs(book_run[("DGMZPC", "AW")] - p[("DGMZPC", "AW")]) <= 0.5e-4
     got = classes("87")
-    assert {c.cell.column for c, _ in got[figures.NO_CAUSE] if c.cell.row == "DGMZPC"} == {
+    assert {c.cell.column for c, _ in got[figures.ARITHMETIC] if c.cell.row == "DGMZPC"} == {
         "AW", "XU", "XUR"}
 
 
@@ -496,13 +564,29 @@ def test_fig94_ocr_fixes_from_the_printed_columns():
     p = printed("94")
     ocr = {(c.row, c.column): float(c.ocr) for c in figures.load_figure("94").cells if c.ocr}
     g45 = math.acos(400.0 / p[("28", "F45")])
-    assert abs(g45 - p[("28", "G45")]) < 0.5e-3 < abs(g45 - ocr[("28", "G45")])
+    # G45 is known to half a unit, F45 to half a unit: d G45 = FS dF45 / (F45**2 sin G45)
+    allowance = 0.5e-3 + 400.0 * 0.05 / (p[("28", "F45")] ** 2 * math.sin(g45))
+    assert abs(g45 - p[("28", "G45")]) <= allowance < abs(g45 - ocr[("28", "G45")])
+    # E-FIG94-6: G21 = FI1 + asin(M1 / (ROA F21)) - 2 pi (the branch of the row); FI1 is
+    # the program's own crank angle (exact), M1 and F21 are each known to half a unit,
+    # ROA to its widened uncertainty: the G21 they allow is an interval
     roa = prog_x.FITTED_LINKS["ROA"]
-
-    def m1(g21):
-        return roa * p[("19", "F21")] * math.sin(g21 - p[("19", "FI1")])
-    assert abs(m1(p[("19", "G21")]) - p[("19", "M1")]) < 0.05
-    assert abs(m1(ocr[("19", "G21")]) - p[("19", "M1")]) > 0.05
+    with sarkp.as_printed():
+        fi1 = float(prog_x.crank_angles()[18])
+    ends = []
+    for m1 in (p[("19", "M1")] - 0.05, p[("19", "M1")] + 0.05):
+        for f21 in (p[("19", "F21")] - 0.05, p[("19", "F21")] + 0.05):
+            for r in (roa - prog_x.links_uncertainty()["ROA"],
+                      roa + prog_x.links_uncertainty()["ROA"]):
+                ends.append(fi1 + math.asin(m1 / (r * f21)) - 2.0 * math.pi)
+    lo, hi = min(ends), max(ends)
+    # the corrected -2.383 lies inside with its whole half-unit interval; the OCR's
+    # -2.385 only touches it (less than a tenth of its interval): the fix is probable,
+    # not proven (docs/ERRATA.md says so)
+    g = p[("19", "G21")]
+    assert lo <= g - 0.5e-3 and g + 0.5e-3 <= hi
+    g = ocr[("19", "G21")]
+    assert 0.0 < hi - (g - 0.5e-3) and min(hi, g + 0.5e-3) - max(lo, g - 0.5e-3) < 0.1e-3
 
 
 # ---- corrected mode: the design the task card asks for ---------------------------------------
@@ -685,9 +769,8 @@ def test_cli_diff_in_the_es_evm_arithmetic(capsys):
         out = capsys.readouterr().out
         figure = figures.load_figure(number)
         comparisons = figures.compare(figure, x_arithmetic.figure_cells(number, "es-evm"))
-        done = [c for c in comparisons if c.cell.reproducible]
-        assert out.rstrip().endswith(f"{sum(c.matches for c in done)} of {len(done)} cells "
-                                     f"match")
+        row = figures.summary(figure, comparisons)
+        assert out.rstrip().splitlines()[-1] == figures.summary_line(row)
         assert "(es-evm)" in out
     assert main(["book", "diff", "4", "--arithmetic", "es-evm"]) == 2
 
@@ -730,3 +813,22 @@ def test_readme_summary_is_the_diff_summary():
         figure, comparisons = diff(number)
         rows.append(figures.summary(figure, comparisons, book.figure_evidence(number)))
     assert shown == figures.summary_table(rows)
+
+
+def test_corrected_cam_is_convex_with_the_books_radius_beside():
+    """Issue 27: the corrected design sizes the flat-faced follower's cam convex: its
+    radius is the smallest with RKSH + S + A/W**2 >= 0 at every point (computed here from
+    the motion law), so no point is concave, where the book's GAMMA = PI/3 leaves 7 of the
+    26 concave; the report prints the book's rule's radius beside it."""
+    with sarkp.mode("corrected"):
+        c = prog_x.run(["cam"])["cam"]
+        text = prog_x.render("cam")
+    need = np.max(-np.asarray(c["ST"]) - np.asarray(c["AT"]) / prog_x.W1**2)
+    eps = np.finfo(float).eps
+    assert abs(c["RKSH"] - need) <= 8 * eps * need
+    assert np.min(c["ROK"]) >= -8 * eps * c["RKSH"] and c["NCONC"] == 0
+    assert c["RKSH_BOOK"] < c["RKSH"] and c["ROKMIN_BOOK"] < 0.0
+    with sarkp.as_printed():
+        book_cam = prog_x.run(["cam"])["cam"]
+    assert book_cam["NCONC"] == int(np.sum(np.asarray(book_cam["ROK"]) < 0.0)) > 0
+    assert f"{c['RKSH']:.6f}" in text and f"{book_cam['RKSH']:.6f}" in text

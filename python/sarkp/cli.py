@@ -12,10 +12,11 @@
     sarkp book diff FIG|all [--mode M] [--arithmetic A]
                                           compare a reproduction with the printed figure
                                           (all: ends with a summary table, every cell
-                                          reproduced, fitted, reproduced under a named
-                                          arithmetic, differing with its cause shown or
-                                          not; status 0 when every difference has an
-                                          ERRATA id)
+                                          a printed input, reproduced, fitted,
+                                          reproduced under the book's arithmetic,
+                                          differing with its cause shown or not; the
+                                          rules: docs/judging.md; status 0 when every
+                                          difference has an ERRATA id)
     sarkp listing [NAME] [--modern|--corrected|--diff [side]]
                                           the book's code; sarkp's routine; that routine
                                           without its as-printed branches; the book's

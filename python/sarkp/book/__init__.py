@@ -74,8 +74,9 @@ def figure_cells(number: str) -> dict:
 
 def figure_evidence(number: str):
     """What the figure's program shows beyond its double-precision run, as-printed mode
-    (:class:`sarkp.book.figures.Evidence`: fitted cells, runs in other arithmetics,
-    demonstrated causes); empty for a program that has none."""
+    (:class:`sarkp.book.figures.Evidence`: fitted cells, the whole run in the book's
+    arithmetic, IEEE single as a diagnostic, demonstrated causes); empty for a program
+    that has none."""
     from .figures import Evidence
     from ..modes import as_printed
     prog = figure_program(number)

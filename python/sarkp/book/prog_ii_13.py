@@ -262,10 +262,8 @@ def emulate() -> dict:
     DSMVKT, DUGL5: L551-698) and IBM SSP's GELG written out the same way; library functions
     are the exact values truncated (as in :func:`sarkp.book.prog_v_5.emulate`).
     Independent of sarkp's Fortran.  Returns the columns by name."""
-    from .es_evm import Real4 as R, fn as _f
-
-    cos, sin, sqrt, acos, atan = (_f(math.cos), _f(math.sin), _f(math.sqrt), _f(math.acos),
-                                  _f(math.atan))
+    from .es_evm import ACOS as acos, ATAN as atan, COS as cos, Real4 as R, SIN as sin, \
+        SQRT as sqrt
     pi_r = R(3.14159)
 
     def sign(a, b):                                   # FORTRAN SIGN
@@ -358,7 +356,7 @@ def arithmetic_table() -> str:
                     units = (abs(value) - abs(c.value)) / c.unit
                 else:
                     units = (value - c.value) / c.unit
-                if abs(units) <= 0.5 + 1e-9:
+                if figures.within_half(c, value):
                     ok += 1
                 else:
                     missed[name].append(f"row {c.row} {c.column} ({units:+.2f})")
@@ -381,4 +379,4 @@ def evidence(number: str = "4"):
     def keyed(table):
         return {(str(k + 1), name): float(table[name][k])
                 for name in COLUMNS for k in range(len(table["FI"]))}
-    return Evidence(arithmetics={"ES EVM": keyed(emulate()), "IEEE single": keyed(single())})
+    return Evidence(book=keyed(emulate()), diagnostic={"IEEE single": keyed(single())})

@@ -100,11 +100,11 @@ def motion_law() -> dict:
             c = add(c, dfi)
             fi.append(c)
             if c <= fiu:
-                acc.append(_mul(A1, r4(math.sin(div(c, tk1)))))
+                acc.append(_mul(A1, float(es_evm.SIN(div(c, tk1)))))
             elif c <= fiud:
                 acc.append(0.0)
             else:
-                acc.append(-_mul(a2, r4(math.sin(div(_sub(c, fiud), tk2)))))
+                acc.append(-_mul(a2, float(es_evm.SIN(div(_sub(c, fiud), tk2)))))
         fi, acc = np.array(fi), np.array(acc)
         dsdt = np.array([div(x, W) for x in DINTGR(N, dfi, 2, acc).FINT])
         s = np.array([div(x, W) for x in DINTGR(N, dfi, 2, dsdt).FINT])
@@ -162,10 +162,8 @@ def render() -> str:
 
 # ---- the whole printed program in the ES EVM's arithmetic (evidence, not the library) ----
 
-_R4, _f = es_evm.Real4, es_evm.fn
-
-_SIN, _COS, _TAN, _ATAN, _SQRT = (_f(math.sin), _f(math.cos), _f(math.tan), _f(math.atan),
-                                  _f(math.sqrt))
+_R4 = es_evm.Real4
+_SIN, _COS, _TAN, _ATAN, _SQRT = es_evm.SIN, es_evm.COS, es_evm.TAN, es_evm.ATAN, es_evm.SQRT
 
 
 def emulate(flat: bool = False) -> dict:
@@ -288,4 +286,4 @@ def evidence(number: str = "35"):
     """Fig. 35 run in the ES EVM's arithmetic (:func:`emulate`), for
     :func:`sarkp.book.figures.classify`."""
     from .figures import Evidence
-    return Evidence(arithmetics={"ES EVM": emulated_cells()})
+    return Evidence(book=emulated_cells())

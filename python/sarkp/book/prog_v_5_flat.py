@@ -111,4 +111,4 @@ def evidence(number: str = "36"):
     for k in range(N):
         for name in COLUMNS:
             out[(str(k + 1), name)] = float(e[name][k])
-    return Evidence(arithmetics={"ES EVM": out})
+    return Evidence(book=out)

@@ -7,16 +7,21 @@ The calls are not printed; the echoed headers give them:
 (FORMAT 52) or a message, and the dump of FORMAT 55.  Output: Fig. 44 (L4166-4197).
 
 The fourth run (AW = 110) gives pointed teeth: the book prints its message 21 and the
-rejected coefficients; sarkp refuses the call (RequirementError), so the dump's X1, X2,
-XS and ALFAW of that run are not computed (ERRATA E-FIG44-1).  As printed, DUGINV stops at
+rejected coefficients.  As printed, the program does what the printed code does: it
+prints the message and computes the dump's X1, X2, XS and ALFAW by the listing's formulas
+(:func:`rejected_run`), with a :class:`PointedTeethWarning`; corrected, sarkp refuses the
+call (RequirementError) and those cells are not computed (ERRATA E-FIG44-1).  As printed, DUGINV stops at
 TCHNST = 0.00001 (E-DKRKT-3): ALFAW = 0.3490 for zero shifts; corrected mode gives the
 exact 0.3491 (E-DUGINV-1).
 """
 
 from __future__ import annotations
 
+import warnings
+
 from ..errors import RequirementError
 from ..gears import DKRKT, dkrkt_limits, dkrkt_report
+from ..modes import get_mode
 
 LISTING = "VI.3"
 TITLE = "Shift coefficients and the operating angle (DKRKT example, chapter 6)"
@@ -29,6 +34,11 @@ RUNS = ((100.0, 0), (0.0, 1), (0.0, 3), (110.0, 0), (0.0, 2))
 _MESSAGES = (("undercut", 50), ("pointed", 51), ("no system of shifts", 54))
 CORRECTED_DIFFERENCES = {"ALFAW": "E-DUGINV-1 (corrected: the exact root)",
                          "ALFAW/55": "E-DUGINV-1 (corrected: the exact root)"}
+
+
+class PointedTeethWarning(UserWarning):
+    """As printed, a run the corrected library refuses (pointed teeth) is computed all the
+    same, as the printed code computes it (E-FIG44-1)."""
 
 
 def _run():
@@ -61,13 +71,29 @@ def cells() -> dict:
             for name, value in zip(("X1", "X2", "ALFAW"), result):
                 out[(row, name)] = out[(row, name + "/55")] = float(value)
             out[(row, "XS")] = float(result.X1 + result.X2)
+        elif fmt == 51 and get_mode() == "as-printed":
+            # E-FIG44-1: the printed code prints message 21 and dumps what it computed
+            warnings.warn(f"DKRKT run {row} (AW = {inputs['AW']}): pointed teeth; computed "
+                          f"as the printed code computes it (as-printed mode, E-FIG44-1)",
+                          PointedTeethWarning, stacklevel=2)
+            got = rejected_run(inputs["AW"])
+            for column, name in (("ALFAW/55", "ALFAW"), ("XS", "XS"), ("X1/55", "X1"),
+                                 ("X2/55", "X2")):
+                out[(row, column)] = float(got[name])
     return out
 
 
 def render() -> str:
     """The printout (Fig. 44) in the book's layout."""
     parts = []
-    for inputs, result, fmt in _run():
+    for k, (inputs, result, fmt) in enumerate(_run(), 1):
+        if result is None and fmt == 51 and get_mode() == "as-printed":
+            # E-FIG44-1: the printed code dumps what it computed after message 21
+            warnings.warn(f"DKRKT run {k} (AW = {inputs['AW']}): pointed teeth; computed "
+                          f"as the printed code computes it (as-printed mode, E-FIG44-1)",
+                          PointedTeethWarning, stacklevel=2)
+            got = rejected_run(inputs["AW"])
+            result = (got["X1"], got["X2"], got["ALFAW"])
         parts.append(dkrkt_report(inputs, result, None if fmt == 52 else fmt))
     return "\n".join(parts)
 
@@ -85,16 +111,3 @@ def rejected_run(aw: float = 110.0) -> dict:
     xs = zs * (math.tan(alfaw) - alfaw - math.tan(alfao) + alfao) / (2.0 * math.tan(alfao))
     x1 = 0.5 * (xs - (Z2 - Z1) / zs * y)
     return {"ALFAW": alfaw, "XS": xs, "X1": x1, "X2": xs - x1}
-
-
-def evidence(number: str = "44"):
-    """The cells of the run sarkp refuses, computed by the listing's formulas
-    (:func:`rejected_run`), as demonstrated causes for :func:`sarkp.book.figures.classify`."""
-    from .figures import Cause, Evidence
-    k = str(RUNS.index((110.0, 0)) + 1)
-    got = rejected_run()
-    how = ("sarkp refuses the call (pointed teeth); the listing's formulas give "
-           "{:.6f}").format
-    return Evidence(causes={(k, column): Cause("E-FIG44-1", how(got[name]), moved=got[name])
-                            for column, name in (("ALFAW/55", "ALFAW"), ("XS", "XS"),
-                                                 ("X1/55", "X1"), ("X2/55", "X2"))})

@@ -12,11 +12,10 @@ against the emulation by tests/test_gears.py).
 
 from __future__ import annotations
 
-import math
-
 from ..gears import DGMZPC
 from ..modes import book_pi
-from .es_evm import Real4 as _R4, fn as _f
+from .es_evm import ACOS as _ACOS, ATAN as _ATAN, COS as _COS, Real4 as _R4, SIN as _SIN, \
+    TAN as _TAN
 
 LISTING = "VI.6"
 TITLE = "External involute mesh (DGMZPC example, chapter 6)"
@@ -42,9 +41,6 @@ def cells() -> dict:
 def render() -> str:
     return "\n".join(DGMZPC.spec.report({}, tuple(DGMZPC(*call))) for call in _calls().values())
 
-
-_TAN, _ATAN, _COS, _SIN, _ACOS = (_f(math.tan), _f(math.atan), _f(math.cos), _f(math.sin),
-                                  _f(math.acos))
 
 
 def _duginv(invx, xnach, tchnst):
@@ -98,7 +94,7 @@ def evidence(number: str = "47"):
     """Fig. 47 run in the ES EVM's arithmetic (:func:`emulate`), for
     :func:`sarkp.book.figures.classify`."""
     from .figures import Evidence
-    return Evidence(arithmetics={"ES EVM": emulate()})
+    return Evidence(book=emulate())
 
 
 #: the names (without suffix) of the pictures :func:`plots` writes

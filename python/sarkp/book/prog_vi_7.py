@@ -8,10 +8,8 @@ not reproducible in data/fig48.csv and checked by tests/test_gears.py).
 
 from __future__ import annotations
 
-import math
-
 from ..gears import DGMZVN
-from .es_evm import Real4 as _R4, fn as _f
+from .es_evm import ACOS as _ACOS, COS as _COS, Real4 as _R4, TAN as _TAN
 from .prog_vi_6 import _duginv
 
 LISTING = "VI.7"
@@ -33,9 +31,6 @@ def cells() -> dict:
 
 def render() -> str:
     return "\n".join(DGMZVN.spec.report({}, tuple(DGMZVN(*call))) for call in CALLS.values())
-
-
-_TAN, _COS, _ACOS = _f(math.tan), _f(math.cos), _f(math.acos)
 
 
 def emulate(calls=None) -> dict:
@@ -91,7 +86,7 @@ def evidence(number: str = "48"):
     """Fig. 48 run in the ES EVM's arithmetic (:func:`emulate`), for
     :func:`sarkp.book.figures.classify`."""
     from .figures import Evidence
-    return Evidence(arithmetics={"ES EVM": emulate()})
+    return Evidence(book=emulate())
 
 
 #: the names (without suffix) of the pictures :func:`plots` writes

@@ -66,59 +66,16 @@ from ..kinematics import DPRM1, DPRM2, DSKOR1, DSKOR2, DUSKR1, DUSKR2
 from ..modes import book_pi
 from ..synthesis import DSNTZ1, DSNTZR
 from . import es_evm
-from .es_evm import Real4, fn
+from .es_evm import Real4
+from .x_render import RENDER
+from .x_report import corrected_report
+from .x_data import (  # noqa: F401  (re-exported)
+    X5, H5, FICD, FI5, DELTA, SKW, XD, Q, W1, DSMAX, GAMMA_DIVISOR, G, ML, POSITIONS,
+    CAM_POINTS, FITTED_LINKS, FIT_LEFT_OUT, FITTED_UNCERTAINTY, DELTA_FLYWHEEL, STAGES,
+    STAGE_FIGURE, NEEDS, CORRECTED_DIFFERENCES, REFITTED_LINKS, links_uncertainty)
 
 LISTING = "X"
 TITLE = "Course project of chapter 10: the conveyor-feeder mechanism (program X)"
-
-# ---- the program's data (DATA statements and assignments) ---------------------------------
-X5 = (0.82, 0.62, 0.42)          # L7312-7314: slider positions, m
-H5 = 0.64                        # guide height above C, m (the card's "0,06" is OCR)
-FICD = (0.0, 0.349, 0.698)       # turns of CD from its first position, rad
-FI5 = (1.57, 1.57, 1.57)
-DELTA = 0.698                    # swing of link 3, rad (40 degrees)
-SKW = 1.1                        # L7322: coefficient of speed change of link 3
-XD, Q = 0.7, -1.0                # L7326: DSNTZ1's abscissa of C and assembly variant
-W1 = 3.0                         # L7427: crank speed, 1/s
-DSMAX = 0.06                     # L7427: follower lift, m
-GAMMA_DIVISOR = 3.0              # L7467: DPRFPL's design angle PI/3.0
-G, ML = 9.81, 50.0               # L7542: gravity, mass per metre of a link
-POSITIONS = 37                   # L7503: DO 30 K = 1, 37
-CAM_POINTS = 26                  # L7434: DO 5 K = 1, 26
-#: E-X-LINKS-1: the link lengths of the printed run, the output of scripts/fit_x_links.py
-#: (a minimax fit to 587 printed cells of Fig. 91; worst cell 0.544 units; standard
-#: uncertainties 0.4-4.3e-6 m).  Fig. 84 prints ROA RAB ROC to 3 decimals, and DSNTZR's
-#: RCD RDE (0.5787882, 0.7012536), which these round to as well.
-FITTED_LINKS = {"ROA": 0.16646745, "RAB": 2.33534586, "ROC": 2.09022290, "RCD": 0.57878712,
-                "RDE": 0.70125374}
-#: the cells of Fig. 91 the fit leaves out, by their ERRATA ids (scripts/fit_x_links.py)
-FIT_LEFT_OUT = frozenset({"E-FIG91-9", "E-FIG91-10"})
-#: their standard uncertainties (m), from the same script
-FITTED_UNCERTAINTY = {"ROA": 4.3e-7, "RAB": 4.3e-6, "ROC": 4.0e-6, "RCD": 1.8e-6,
-                      "RDE": 1.1e-6}
-#: E-X-DELTA-1: the flywheel's coefficient of speed fluctuation, as run and as asked.
-DELTA_FLYWHEEL = {"as-printed": 0.01, "corrected": 0.02}
-
-STAGES = ("synthesis", "teeth", "gears", "cam", "kinematics", "forces", "dynamics")
-STAGE_FIGURE = {"synthesis": "84", "teeth": "86", "gears": "87", "cam": "89",
-                "kinematics": "91", "forces": "94", "dynamics": "96"}
-#: what each stage takes from earlier ones
-NEEDS = {"synthesis": (), "teeth": (), "gears": (), "cam": (),
-         "kinematics": ("synthesis",), "forces": ("synthesis", "kinematics"),
-         "dynamics": ("synthesis", "kinematics", "forces")}
-#: Why a printed cell differs in corrected mode (see docs/ERRATA.md).
-CORRECTED_DIFFERENCES = {
-    **{c: "E-PI-1; E-FIG89-3 (exact pi and IEEE double arithmetic, phases by the row number)"
-       for c in ("FIK", "FIK_P", "AT", "VT", "ST", "X", "Y", "RK", "DLT", "ROK", "RKSH")},
-    **{c: "E-FIG86-2; E-DZBPL-4 (corrected DZBPL: variant 8's 30/76/76/183 is not "
-          "coaxial, 30 + 76 != 183 - 76, and no other set is)" for c in ("Z1", "Z2", "Z3", "Z4")},
-    **{c: "E-PI-1; E-DUGINV-1 (exact pi and the exact operating angle)"
-       for c in ("AL12", "ALFA", "AW", "XU", "XUR", "XD", "DA1", "DA2", "DF1", "DF2", "H1",
-                 "H2", "SA1", "SA2", "EALFA", "E", "S", "SB", "SA", "DB", "DA", "DF", "X",
-                 "X1", "X2")},
-    "*": "E-PI-1; E-X-FICD1-1; E-X-LINKS-1; E-DUSKR1-1; E-X-W4; E-X-IPR-1; E-X-DELTA-1 "
-         "(the corrected design)",
-}
 
 
 def available(stage: str) -> bool:
@@ -144,9 +101,10 @@ def _number():
     return Real4 if get_mode() == "as-printed" else float
 
 
-def _fn(function):
-    """A library function in the main program's arithmetic (see :func:`_number`)."""
-    return fn(function) if get_mode() == "as-printed" else function
+def _fn(name: str):
+    """A library function in the main program's arithmetic (see :func:`_number`): the
+    ES EVM's of the stated model (:data:`sarkp.book.es_evm.ROUNDED`) as printed."""
+    return getattr(es_evm, name) if get_mode() == "as-printed" else getattr(math, name.lower())
 
 
 # ---- stage 1: synthesis (Fig. 84) -----------------------------------------------------------
@@ -249,23 +207,16 @@ def gears() -> dict:
 
 # ---- stage 4: cam (Fig. 89) -----------------------------------------------------------------
 
-def _sin_rounded(x):
-    """SIN whose result is rounded to the ES EVM's REAL*4, not truncated (E-FIG89-4)."""
-    return Real4(es_evm.real4_rounded(math.sin(float(x))))
-
-
-def cam_law(sin_rounds: bool = False) -> dict:
+def cam_law() -> dict:
     """The follower's motion law, loop DO 5 (L7414-7463), formulas (10.1)-(10.3).
 
     As printed, in the ES EVM's arithmetic: it puts FI(11) just below FIU (row 11 is the
     end of the rise, AT = -1.8605) and FI(16) just below FIU + FID (row 16 is still on
     the dwell, AT = 0), as Fig. 89 prints (E-FIG89-3).  Corrected: the same phases by
-    the row number, exact pi, double precision.  ``sin_rounds``: as printed with a SIN
-    that rounds its result (E-FIG89-4)."""
+    the row number, exact pi, double precision.  As printed, SIN and COS are the ES EVM's
+    library of the stated model (:data:`sarkp.book.es_evm.ROUNDED`; E-FIG89-4)."""
     R = _number()
-    cos, sin = _fn(math.cos), _fn(math.sin)
-    if sin_rounds and get_mode() == "as-printed":    # E-FIG89-4: a SIN that rounds
-        sin = _sin_rounded
+    cos, sin = _fn("COS"), _fn("SIN")
     pi = R(book_pi())
     beta = pi * (R(SKW) - R(1.0)) / (R(SKW) + R(1.0))
     fiu = (pi - beta) * R(0.4)
@@ -308,15 +259,30 @@ def cam_law(sin_rounds: bool = False) -> dict:
 
 def cam() -> dict:
     """The motion law and the flat-faced follower's cam (DPRFPL with GAMMA = PI/3,
-    L7467; ERRATA E-X-DPRFPL-1 for its ST argument)."""
+    L7467; ERRATA E-X-DPRFPL-1 for its ST argument).
+
+    As printed, the book's GAMMA = PI/3 gives a cam that is concave at 7 of the 26 points
+    (radius of curvature < 0: a flat face cannot follow it).  Corrected, the cam is sized
+    convex by :func:`sarkp.flat_base_radius` (the smallest RKSH with RKSH + S + A/W**2 >= 0
+    everywhere) and DPRFPL draws it with the GAMMA that gives that RKSH by its own rule
+    (V.3, L3240-3255: RKSH = |A_min/W**2| / tan(GAMMA) - S at A_min); ``RKSH_BOOK`` and
+    ``ROKMIN_BOOK`` are the book's rule's beside it."""
+    from ..cams import flat_base_radius
     law = cam_law()
+    gamma = book_pi() / GAMMA_DIVISOR
+    extra = {}
     try:
-        p = sarkp.DPRFPL(CAM_POINTS, book_pi() / GAMMA_DIVISOR, W1, law["FIK"], law["AT"],
-                         law["VT"], law["ST"])
+        if get_mode() == "corrected":
+            fr = flat_base_radius(CAM_POINTS, law["FIK"], law["AT"], law["VT"], law["ST"],
+                                  W1, GAMMA=gamma)
+            low = int(np.argmin(law["AT"]))
+            gamma = math.atan(-law["AT"][low] / W1**2 / (fr.RKSH + law["ST"][low]))
+            extra = {"RKSH_BOOK": fr.RKSH_BOOK, "ROKMIN_BOOK": fr.ROKMIN_BOOK}
+        p = sarkp.DPRFPL(CAM_POINTS, gamma, W1, law["FIK"], law["AT"], law["VT"], law["ST"])
     except SarkpError as exc:
         raise StageError(f"program X, stage 'cam' (Fig. 89): DPRFPL: {exc}") from exc
     return {**law, "X": p.XA, "Y": p.YA, "RK": p.R1, "DLT": p.DELTA, "ROK": p.ROK,
-            "RKSH": p.RKSH, "ROKMIN": p.ROKMIN, "NCONC": p.NCONC}
+            "RKSH": p.RKSH, "ROKMIN": p.ROKMIN, "NCONC": p.NCONC, "GAMMA": gamma, **extra}
 
 
 # ---- stage 5: kinematics (Fig. 91) ----------------------------------------------------------
@@ -466,8 +432,6 @@ def dynamics(links: dict, kin: dict, fo: dict) -> dict:
             "IMH": imh, "DELTA": delta, "IS1": is1, "STALLS": stalls}
 
 
-from .x_render import RENDER  # noqa: E402  (the printouts; they use the data above)
-from .x_report import corrected_report  # noqa: E402
 
 
 # ---- running the program ---------------------------------------------------------------------
@@ -619,31 +583,35 @@ def fitted_cells() -> list:
 def evidence(number: str):
     """What shows more about a printed figure than the double-precision run
     (:class:`sarkp.book.figures.Evidence`): the cells the link lengths were fitted to
-    (Fig. 91), program X's chain in the ES EVM's arithmetic and in IEEE single
-    (:mod:`sarkp.book.x_arithmetic`; Figs. 91, 94, 96), the ES EVM's DGMZVN (Fig. 87),
-    the cam's law with a rounding SIN (Fig. 89) and the demonstrated causes."""
+    (Fig. 91; Fig. 84 prints the fitted lengths and FICD1, which the program takes from
+    the print, E-X-FICD1-1), program X's chain run whole in the book's arithmetic
+    (:mod:`sarkp.book.x_arithmetic`; Figs. 91, 94, 96) with IEEE single as a diagnostic,
+    the ES EVM's DGMZPC and DGMZVN (Fig. 87) and the demonstrated causes.  Fig. 89's
+    loop DO 5 already runs in the book's arithmetic as printed (:func:`cam_law`)."""
     from . import x_arithmetic
     from .figures import Evidence
     from .x_causes import causes
     number = str(number)
-    arithmetics = {}
+    book, diagnostic = {}, {}
     if number in x_arithmetic.FIGURES:
-        arithmetics = {"ES EVM": x_arithmetic.figure_cells(number, "es-evm"),
-                       "IEEE single": x_arithmetic.figure_cells(number, "ieee-single")}
+        book = x_arithmetic.figure_cells(number, "es-evm")
+        diagnostic = {"IEEE single": x_arithmetic.figure_cells(number, "ieee-single")}
     elif number == "87":
-        arithmetics = {"ES EVM": _gears_es_evm()}
-    elif number == "89":
-        arithmetics = {"ES EVM, SIN rounded": _cam_law_cells(cam_law(sin_rounds=True))}
-    fitted = frozenset((c.row, c.column) for c in fitted_cells()) if number == "91" else \
-        frozenset()
-    shown = causes(number)
-    if number in x_arithmetic.FIGURES:               # the fitted lengths' uncertainty
-        from .figures import compare, load_figure
-        from .x_causes import length_causes
-        figure = load_figure(number)
-        shown.update(length_causes({number: compare(figure, figure_cells(number))})[number])
-    return Evidence(fitted=fitted, arithmetics=arithmetics, causes=shown,
-                    fit="scripts/fit_x_links.py, prog_x.FITTED_LINKS" if fitted else "")
+        book = _gears_es_evm()
+    fitted, fit = frozenset(), ""
+    if number == "91":
+        fitted = frozenset((c.row, c.column) for c in fitted_cells())
+        spread = links_uncertainty()
+        fit = ("scripts/fit_x_links.py, one set for program X: " + ", ".join(
+            f"{n} = {v:.8f} +- {spread[n] * 1e6:.1f} um" for n, v in FITTED_LINKS.items())
+            + "; the uncertainty is the fit's, widened by the refits in the ES EVM's "
+              "arithmetic and IEEE single")
+    elif number == "84":
+        fitted = frozenset(("1", n) for n in ("ROA", "RAB", "ROC", "FICD"))
+        fit = ("ROA, RAB, ROC are the lengths fitted to Fig. 91 (E-X-LINKS-1), FICD1 = 0 "
+               "is taken from this print (E-X-FICD1-1)")
+    return Evidence(fitted=fitted, book=book, diagnostic=diagnostic, causes=causes(number),
+                    fit=fit)
 
 
 def _gears_es_evm() -> dict:
@@ -664,8 +632,3 @@ def _gears_es_evm() -> dict:
     out.update((("DGMZPC", rename.get(name, name)), v)
                for (_, name), v in prog_vi_6.emulate({"X": call}).items())
     return out
-
-
-def _cam_law_cells(law: dict) -> dict:
-    return {(str(k + 1), name): float(law[name][k])
-            for k in range(CAM_POINTS) for name in ("AT", "VT", "ST")}

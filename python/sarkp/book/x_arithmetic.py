@@ -29,7 +29,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from . import es_evm
+from . import es_evm, x_data
 from .prog_ii_13 import _gelg_es_evm
 
 #: the arithmetics this module runs ("double": the same statements in IEEE double, the
@@ -60,13 +60,29 @@ def _power(x, n):
     return half * half if n % 2 == 0 else half * half * x
 
 
-@lru_cache(maxsize=None)
-def run(arithmetic: str = "es-evm") -> dict:
-    """The stages kinematics, forces, dynamics of program X in ``arithmetic``."""
+def run(arithmetic: str = "es-evm", lengths: dict | None = None) -> dict:
+    """The stages kinematics, forces, dynamics of program X in ``arithmetic`` (the ES
+    EVM's under the library model in force, :func:`sarkp.book.es_evm.rounded`), with the
+    link lengths ``lengths`` ({ROA, RAB, ROC, RCD, RDE}; default the fitted ones,
+    :data:`sarkp.book.x_data.FITTED_LINKS`; scripts/fit_x_links.py refits with them)."""
+    key = None if lengths is None else tuple(float(lengths[n]) for n in LENGTHS)
+    return _run(arithmetic, es_evm.rounded() if arithmetic == "es-evm" else None, key)
+
+
+#: the link lengths :func:`run` takes
+LENGTHS = ("ROA", "RAB", "ROC", "RCD", "RDE")
+
+
+@lru_cache(maxsize=64)
+def _run(arithmetic: str, model, lengths) -> dict:
     from . import prog_x
     R, fn = _number(arithmetic)
-    sin, cos, tan, atan, acos, sqrt = (fn(math.sin), fn(math.cos), fn(math.tan),
-                                       fn(math.atan), fn(math.acos), fn(math.sqrt))
+    if arithmetic == "es-evm":                        # the stated library model
+        sin, cos, tan, atan, acos, sqrt = (es_evm.SIN, es_evm.COS, es_evm.TAN, es_evm.ATAN,
+                                           es_evm.ACOS, es_evm.SQRT)
+    else:
+        sin, cos, tan, atan, acos, sqrt = (fn(math.sin), fn(math.cos), fn(math.tan),
+                                           fn(math.atan), fn(math.acos), fn(math.sqrt))
     zero, one, two = R(0.0), R(1.0), R(2.0)
 
     def sign(a, b):                                   # FORTRAN SIGN
@@ -211,11 +227,13 @@ def run(arithmetic: str = "es-evm") -> dict:
     from .. import as_printed
     with as_printed():
         links = prog_x.synthesis()
+    if lengths is not None:
+        links.update(zip(LENGTHS, lengths))
     roa, r2, roc = R(links["ROA"]), R(links["RAB"]), R(links["ROC"])
     rcd = rcb = R(links["RCD"])
     rde = R(links["RDE"])
-    h5, delta, w1 = R(prog_x.H5), R(prog_x.DELTA), R(prog_x.W1)
-    g, ml = R(prog_x.G), R(prog_x.ML)
+    h5, delta, w1 = R(x_data.H5), R(x_data.DELTA), R(x_data.W1)
+    g, ml = R(x_data.G), R(x_data.ML)
     kin = {n: [] for n in ("FI1", "FI2", "FICB", "XE", "FIDE", "XB", "YB", "W2", "W3",
                            "VE", "ALE", "W4", "E2", "E3", "E4", "AE", "BE")}
     fo = {n: [] for n in ("F43", "G43", "F45", "G45", "F50", "G50", "F21", "G21", "F23",
@@ -233,7 +251,7 @@ def run(arithmetic: str = "es-evm") -> dict:
     is3 = m3 * _power(two * rcd, 2)
     is2 = m2 * _power(r2, 2)
     is1 = (ml * roa) * _power(roa, 2)
-    for _ in range(prog_x.POSITIONS):                 # DO 30 K = 1, 37
+    for _ in range(x_data.POSITIONS):                 # DO 30 K = 1, 37
         f = f + df
         xa, ya = roa * cos(f), roa * sin(f)
         fi2, ficb, xb, yb = dprm1(xa, ya, xc, yc, r2, rcb, R(-1.0))
@@ -281,7 +299,7 @@ def run(arithmetic: str = "es-evm") -> dict:
                     + (is3 + m3 * _power(R(0.15) * rcd, 2)) * _power(w3, 2)
                     + m2 * _power(vs2, 2) + is2 * _power(w2, 2)) / _power(w1, 2))
 
-    n = prog_x.POSITIONS
+    n = x_data.POSITIONS
 
     def dzkndv(isc):                                  # VIII.1 with DINTGR, DFRNCL
         zm = R(float(n))

@@ -6,7 +6,7 @@ from __future__ import annotations
 import sarkp
 
 from ..report import fortran_write
-from .prog_x import CAM_POINTS
+from .x_data import CAM_POINTS
 
 
 def render_synthesis(s: dict) -> str:

@@ -78,8 +78,12 @@ def corrected_report(done: dict, stages) -> str:
     if "cam" in done:
         row("cam: working angle PI - BETA", f"{done['cam']['FIU'] / 0.4:.6f}",
             f"{book['cam']['FIU'] / 0.4:.6f}", "rad", "E-PI-1")
-        row("cam: base radius RKSH", f"{done['cam']['RKSH']:.6f}",
-            f"{book['cam']['RKSH']:.6f}", "m", "E-PI-1")
+        row("cam: base radius RKSH (convex)", f"{done['cam']['RKSH']:.6f}",
+            f"{book['cam']['RKSH']:.6f}", "m", "flat_base_radius; E-PI-1")
+        row("cam: smallest radius of curvature", f"{done['cam']['ROKMIN']:.6f}",
+            f"{book['cam']['ROKMIN']:.6f}", "m", "book: concave")
+        row("cam: concave points", f"{done['cam']['NCONC']} of {len(done['cam']['ROK'])}",
+            f"{book['cam']['NCONC']} of {len(book['cam']['ROK'])}", "")
     if "kinematics" in done:
         row("slider stroke (card: 0.40)", f"{c['stroke']:.4f}", f"{cb['stroke']:.4f}", "m")
         row("swing of link 3 (card: 0.698)", f"{c['swing']:.4f}", f"{cb['swing']:.4f}",
