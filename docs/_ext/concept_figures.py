@@ -256,9 +256,16 @@ def draw_rpp(ax, title=None):
 
 # ---- the pictures ------------------------------------------------------------------------
 
-def kinds():
+def _figure(size):
+    from matplotlib.backends.backend_agg import FigureCanvasAgg
     from matplotlib.figure import Figure
-    fig = Figure(figsize=(11.0, 7.0), layout="constrained")
+    figure = Figure(figsize=size, layout="constrained")
+    FigureCanvasAgg(figure)               # a renderer, as sarkp.plot's figures have
+    return figure
+
+
+def kinds():
+    fig = _figure((11.0, 7.0))
     axes = fig.subplots(2, 3)
     draw_rrr(axes[0, 0])
     draw_rrp(axes[0, 1])
@@ -279,8 +286,7 @@ def _directed(ax, p, q, label):
 
 
 def branches():
-    from matplotlib.figure import Figure
-    fig = Figure(figsize=(9.0, 12.0), layout="constrained")
+    fig = _figure((9.0, 12.0))
     axes = fig.subplots(3, 2)
     for col, b in enumerate((1, -1)):
         P = draw_rrr(axes[0, col], b, f"RRR, branch={b:+d}: B "
@@ -314,14 +320,13 @@ def _arc(ax, centre, radius, start, stop, color, text, text_radius=None):
 
 
 def signs():
-    from matplotlib.figure import Figure
     m = rrr(1)
     r = m.solve(np.array([PHI]), omega=10.0, need="velocities")
     P = _positions(m, r)
     v = r.velocity("B")[0]
     w3 = float(r.omega("C", "B")[0])
     fi3 = float(r.angle("C", "B")[0])
-    fig = Figure(figsize=(7.0, 6.0), layout="constrained")
+    fig = _figure((7.0, 6.0))
     ax = fig.subplots()
     draw_rrr(ax, 1, "")
     ax.set_xlim(-0.12, 0.62)

@@ -25,12 +25,12 @@ m.crank("A", "O", 0.1)
 m.rrr("B", "A", "C", 0.5, 0.3)              # coupler A-B, rocker C-B
 m.point("D", "C", "B", 0.3, math.pi)        # lever B-C-D
 m.rrp("E", "D", "K", 0.0, 0.4)              # rod D-E, slider E
-r = m.solve(np.linspace(0.0, 2 * math.pi, 361), need="positions")   # 1 degree apart
+r = m.solve(np.radians(np.arange(360.0)), need="positions")   # one degree apart
 positions = r.plot(every=30, paths=("B", "E"), title="The six-bar every 30 degrees")
 
 # %%
-# The animation: one frame every 10 degrees of the crank (36 frames, 12 per second,
-# so one turn of the crank takes 3 seconds; the paths are drawn from all 361
-# positions).  ``animate`` returns the path it wrote.
+# The animation: one frame every 15 degrees of the crank (24 frames, 8 per second,
+# so one turn of the crank takes 3 seconds and the GIF loops without a repeated frame;
+# the path is drawn from all 360 positions).  ``animate`` returns the path it wrote.
 folder = Path(tempfile.mkdtemp(prefix="sarkp-gallery-"))
-animation = r.animate(folder / "sixbar.gif", fps=12, every=10, paths=("E",))
+animation = r.animate(folder / "sixbar.gif", fps=8, every=15, paths=("E",))
