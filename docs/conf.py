@@ -53,9 +53,9 @@ numpydoc_class_members_toctree = False
 numpydoc_xref_param_type = False
 
 # ERRATA.md is a table of the book's errors written for GitHub: its headings start at
-# level 2 under a level-1 title and some of its links point into the source tree.
+# level 2 under a level-1 title.  (A link that points nowhere is a warning, so an error.)
 myst_heading_anchors = 3
-suppress_warnings = ["myst.header", "myst.xref_missing"]
+suppress_warnings = ["myst.header"]
 
 
 # ---- the gallery ------------------------------------------------------------------------------
@@ -194,7 +194,7 @@ def generate_api():
         (out / f"{name}.rst").write_text(text, encoding="utf-8")
 
 
-# ---- the pictures of the concepts page ---------------------------------------------------------
+# ---- the pictures of the concepts page -------------------------------------------------
 
 def generate_concept_figures():
     import matplotlib

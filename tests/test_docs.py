@@ -86,7 +86,8 @@ def _ext(name):
         sys.path.remove(str(DOCS / "_ext"))
 
 
-PAGES = sorted(p.stem for p in DOCS.glob("*.md") if "```python" in p.read_text(encoding="utf-8"))
+PAGES = sorted(p.stem for p in DOCS.glob("*.md")
+               if "```python" in p.read_text(encoding="utf-8"))
 
 
 def test_the_learning_pages_have_code():

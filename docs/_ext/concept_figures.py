@@ -347,7 +347,8 @@ def signs():
             f"v_B, the book's pair (VB, ALB): {speed:.3f} m/s at "
             f"{math.degrees(direction):.1f} deg\n"
             f"link C-B: angle FI3 = {math.degrees(fi3):.1f} deg, omega = {w3:+.3f} rad/s "
-            f"({'counter-clockwise' if w3 > 0 else 'clockwise'})", fontsize=8.5, ha="center", va="center",
+            f"({'counter-clockwise' if w3 > 0 else 'clockwise'})", fontsize=8.5,
+            ha="center", va="center",
             bbox=dict(facecolor="white", edgecolor="0.7"))
     ax.set_title(f"Angles count counter-clockwise from +x (phi = {math.degrees(PHI):.0f} "
                  f"deg); an angular velocity is positive counter-clockwise", fontsize=9)
