@@ -1,10 +1,13 @@
 """Sphinx configuration of sarkp's documentation (``bash scripts/build-docs.sh``).
 
-The API reference is generated at build time from the installed package: one page per
-book chapter, every routine of the chapter module's ``__all__``, with numpydoc; a page
-for :class:`sarkp.Mechanism` when the package has it.  The tutorial runs the README's
-Python examples and shows what they print.  The gallery runs ``docs/examples/*.py``
-(sphinx-gallery) and shows the figures they draw.  docs/ERRATA.md is rendered by
+The pages a student learns from (docs/concepts.md, tutorial.md, from-the-book.md, ...)
+are Markdown whose ```` ```python ```` blocks run when the page is read, each block
+followed by what it prints and draws (docs/_ext/sarkp_run.py); the pictures of the
+concepts page are drawn by docs/_ext/concept_figures.py from sarkp's own solution.  The
+API reference is generated at build time from the installed package: one page per book
+chapter, every routine of the chapter module's ``__all__``, with numpydoc, then a page
+per further public module.  The gallery runs ``docs/examples/*.py`` (sphinx-gallery)
+and shows the figures and animations they draw.  docs/ERRATA.md is rendered by
 myst-parser.  Generated sources go to ``docs/_generated`` (not in git).
 """
 
@@ -13,10 +16,8 @@ from __future__ import annotations
 import contextlib
 import importlib
 import io
-import os
 import re
 import sys
-import tempfile
 from pathlib import Path
 
 import sarkp
@@ -36,6 +37,7 @@ extensions = [
     "numpydoc",
     "myst_parser",
     "sphinx_gallery.gen_gallery",
+    "sarkp_run",                       # docs/_ext: run the pages' code blocks
 ]
 source_suffix = {".rst": "restructuredtext", ".md": "markdown"}
 exclude_patterns = ["_build", "_ext", "examples/GALLERY_HEADER.rst", "**.ipynb_checkpoints"]
@@ -51,9 +53,9 @@ numpydoc_class_members_toctree = False
 numpydoc_xref_param_type = False
 
 # ERRATA.md is a table of the book's errors written for GitHub: its headings start at
-# level 2 under a level-1 title and some of its links point into the source tree.
+# level 2 under a level-1 title.  (A link that points nowhere is a warning, so an error.)
 myst_heading_anchors = 3
-suppress_warnings = ["myst.header", "myst.xref_missing"]
+suppress_warnings = ["myst.header"]
 
 
 # ---- the gallery ------------------------------------------------------------------------------
@@ -99,6 +101,25 @@ SUPPORT = {
     "listings": ("The book's listings and ERRATA (sarkp.listings)", "sarkp.listings"),
     "printed": ("The printed code compiled (sarkp.printed)", "sarkp.printed"),
 }
+#: modules that are not public API (the rest of sarkp's public modules get a page each)
+PRIVATE = {"library", "report", "cli"}
+
+
+def further_modules() -> dict:
+    """sarkp's public modules without a page above (e.g. one added later): page name ->
+    (title: the first line of the module's docstring, module)."""
+    import pkgutil
+    listed = {m for _, m in CHAPTERS.values()} | {m for _, m in SUPPORT.values()} | \
+        {MECHANISM[2]}
+    out = {}
+    for info in pkgutil.iter_modules(sarkp.__path__):
+        name = f"sarkp.{info.name}"
+        if info.name.startswith("_") or info.name in PRIVATE or name in listed:
+            continue
+        module = importlib.import_module(name)
+        first = (module.__doc__ or name).strip().splitlines()[0].rstrip(".")
+        out[info.name] = (f"{first} ({name})" if name not in first else first, name)
+    return out
 
 
 def _public(module) -> list[str]:
@@ -114,6 +135,13 @@ def _directive(module, name) -> str:
     import inspect
     value = getattr(module, name)
     if inspect.isclass(value):
+        from sarkp.results import Result
+        if issubclass(value, Result) and value.__mro__[1] is not Result and \
+                value is not Result:
+            # a result class on a base of its own (MechanismResult): its fields and the
+            # base's methods are its members, the tuple's own (count, index) are not
+            return (f".. autoclass:: {module.__name__}.{name}\n   :members:\n"
+                    f"   :inherited-members: tuple\n   :undoc-members:\n")
         return f".. autoclass:: {module.__name__}.{name}\n   :members:\n"
     if callable(value):
         return f".. autofunction:: {module.__name__}.{name}\n"
@@ -157,7 +185,8 @@ def generate_api():
         text = _api_page(*MECHANISM)
         if text:
             pages.append(("10_mechanism", text))
-    for number, (page, (title, module)) in enumerate(SUPPORT.items(), start=20):
+    for number, (page, (title, module)) in enumerate(
+            {**SUPPORT, **further_modules()}.items(), start=20):
         text = _api_page(page, title, module)
         if text:
             pages.append((f"{number:02d}_{page}", text))
@@ -165,74 +194,13 @@ def generate_api():
         (out / f"{name}.rst").write_text(text, encoding="utf-8")
 
 
-# ---- the tutorial: the README's examples, run ------------------------------------------------
+# ---- the pictures of the concepts page -------------------------------------------------
 
-@contextlib.contextmanager
-def _inside(folder):
-    """Work in ``folder`` for a while (contextlib.chdir, which Python 3.10 lacks)."""
-    here = os.getcwd()
-    os.chdir(folder)
-    try:
-        yield
-    finally:
-        os.chdir(here)
-
-
-def _run_like_a_session(code, namespace):
-    """Run ``code``; a top-level expression that is not a call of print shows its value,
-    as the interpreter's prompt would (``>>> expression`` then the value)."""
-    import ast
-    tree = ast.parse(code)
-    for node in tree.body:
-        segment = ast.get_source_segment(code, node)
-        if isinstance(node, ast.Expr) and not (
-                isinstance(node.value, ast.Call) and getattr(node.value.func, "id", "") == "print"):
-            value = eval(compile(ast.Expression(node.value), "README.md", "eval"), namespace)
-            print(f">>> {segment}")
-            print(repr(value))
-        else:
-            exec(compile(ast.Module([node], []), "README.md", "exec"), namespace)
-
-
-def generate_tutorial():
-    """Every ```python block of README.md under its section heading, with what it
-    prints when run (all blocks in one namespace, in order, in a scratch folder).  A
-    block that needs an optional package not installed is shown and marked not run; any
-    other failure fails the build."""
-    readme = (ROOT / "README.md").read_text(encoding="utf-8")
-    parts = ["# Tutorial: the README's examples, run", "",
-             "Every Python example of the README, in its order, under the README's "
-             "section headings, run when these pages were built (one namespace for all "
-             "of them); what each prints follows it.  The prose around them is in the "
-             "README; each routine's reference is in the API pages.", ""]
-    namespace: dict = {"__name__": "__readme__"}
-    scratch = tempfile.mkdtemp(prefix="sarkp-readme-")     # files the examples write
-    heading = None
-    for match in re.finditer(r"^(#{2,3}) ([^\n]+)$|^( *)```python\n(.*?)^\3```", readme,
-                             flags=re.M | re.S):
-        if match.group(1):
-            heading = match.group(2).strip()
-            continue
-        indent = match.group(3)
-        code = "\n".join(line[len(indent):] for line in match.group(4).splitlines())
-        if heading is not None:
-            parts += [f"## {heading}", ""]
-            heading = None
-        output = io.StringIO()
-        missing = None
-        with contextlib.redirect_stdout(output), _inside(scratch):
-            try:
-                _run_like_a_session(code, namespace)
-            except ImportError as exc:            # an optional package (dask, pandas)
-                missing = exc.name or str(exc)
-        parts += ["```python", code.rstrip("\n"), "```", ""]
-        if missing:
-            parts += [f"(Not run when these pages were built: it needs an optional "
-                      f"package that is not installed there: {missing}.)", ""]
-        elif output.getvalue().strip():
-            parts += ["prints", "", "```text", output.getvalue().rstrip("\n"), "```", ""]
-    GENERATED.mkdir(parents=True, exist_ok=True)
-    (GENERATED / "tutorial.md").write_text("\n".join(parts), encoding="utf-8")
+def generate_concept_figures():
+    import matplotlib
+    matplotlib.use("Agg")
+    import concept_figures                  # docs/_ext
+    concept_figures.write(GENERATED / "img")
 
 
 def _absolute_values(app, what, name, obj, options, lines):
@@ -247,16 +215,30 @@ def _absolute_values(app, what, name, obj, options, lines):
                              for k, p in enumerate(parts))
 
 
+def _docstring_as_markdown(doc: str) -> list[str]:
+    """A module docstring as Markdown: its indented paragraphs (a usage table) as text
+    blocks, the others as prose, with reST's ``literal`` as Markdown's `literal`."""
+    import textwrap
+    out = []
+    for block in re.split(r"\n\s*\n", doc.strip("\n")):
+        lines = block.splitlines()
+        if all(line.startswith("    ") or not line.strip() for line in lines):
+            out += ["```text", textwrap.dedent(block), "```", ""]
+        else:
+            out += [re.sub(r"``([^`]+)``", r"`\1`", " ".join(l.strip() for l in lines)), ""]
+    return out
+
+
 def generate_cli():
     """The command line's page: sarkp.cli's docstring and the help of each command."""
     from sarkp import cli
-    parts = ["# The command line", "", "```text", cli.__doc__.strip("\n"), "```", ""]
-    for command in (["book", "run"], ["book", "diff"], ["book", "list"], ["listing"],
+    parts = ["# The command line", ""] + _docstring_as_markdown(cli.__doc__)
+    for command in (["book", "list"], ["book", "run"], ["book", "diff"], ["listing"],
                     ["errata"]):
         text = io.StringIO()
         with contextlib.redirect_stdout(text), contextlib.suppress(SystemExit):
             cli.main(command + ["--help"])
-        parts += [f"## sarkp {' '.join(command)}", "", "```text",
+        parts += [f"## `sarkp {' '.join(command)}`", "", "```text",
                   text.getvalue().rstrip("\n"), "```", ""]
     GENERATED.mkdir(parents=True, exist_ok=True)
     (GENERATED / "cli.md").write_text("\n".join(parts), encoding="utf-8")
@@ -267,5 +249,5 @@ def setup(app):
     # stay off the source tree's python/ folder: the installed package is documented
     sys.path[:] = [p for p in sys.path if Path(p or ".").resolve() != ROOT / "python"]
     generate_api()
-    generate_tutorial()
     generate_cli()
+    generate_concept_figures()

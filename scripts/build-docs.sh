@@ -1,11 +1,13 @@
 #!/usr/bin/env bash
-# Build the documentation: the API reference from the docstrings (numpydoc), the
-# tutorial (the README's examples, run), the gallery (docs/examples, run by
-# sphinx-gallery) and docs/ERRATA.md (myst-parser).  Sets up sarkp first (scripts/
-# setup.sh), installs the documentation tools into the same virtual environment, and
-# runs sphinx-build with warnings as errors.  Output: $SARKP_DOCS_OUT (default
-# docs/_build/html).  Extra arguments go to sphinx-build.  SARKP_NO_SETUP=1 skips the
-# set-up (the package is already installed in $SARKP_VENV).
+# Build the documentation: the pages a student learns from (docs/concepts.md,
+# tutorial.md, from-the-book.md: their Python blocks run while the page is read, each
+# followed by what it prints and draws), the API reference from the docstrings
+# (numpydoc), the gallery (docs/examples, run by sphinx-gallery) and docs/ERRATA.md
+# (myst-parser).  Sets up sarkp first (scripts/setup.sh), installs the documentation
+# tools into the same virtual environment, and runs sphinx-build with warnings as
+# errors: a warning, or a code block that raises, fails the build.  Output:
+# $SARKP_DOCS_OUT (default docs/_build/html).  Extra arguments go to sphinx-build.
+# SARKP_NO_SETUP=1 skips the set-up (the package is already installed in $SARKP_VENV).
 set -euo pipefail
 here="$(cd "$(dirname "${BASH_SOURCE[0]}")/.." && pwd)"
 if [ "${SARKP_NO_SETUP:-0}" = 1 ]; then   # .ci/run: the tests just installed it
