@@ -40,7 +40,7 @@
 module mechanism
   use prmtr, only: dp, st_ok, st_assembly, st_singular, st_range, st_missing, st_digits, &
                    norm2d
-  use numerics, only: uround, bound2, solve2e, tri_apex, apex_vectors, &
+  use numerics, only: uround, bound2, solve_kind5, solve2e, tri_apex, apex_vectors, &
                       unscale, angle_sensitivity, policy, failed
   implicit none
   private
@@ -567,18 +567,19 @@ contains
       integer, intent(out) :: st
       real(dp), intent(out) :: est
       integer :: pk, pa, pc, l2, l3, lm
-      real(dp) :: um(2), us(2), nm_(2), ns_(2), dca(2), s2, s3, sb, rel
+      real(dp) :: um(2), us(2), nm_(2), ns_(2), dca(2), s2, s3, sb, rel, t2
       real(dp) :: vgc(2), agc(2), vgk(2), agk(2), y1, y2, d2, d3, ev
-      type(cram) :: f
       pk = gi(2, k); pa = gi(3, k); pc = gi(4, k); l2 = gi(5, k); l3 = gi(6, k); lm = gi(7, k)
+      t2 = gr(6, k)
       um = guide(lm, gr(1, k), gr(2, k))
       us = [um(1)*gr(3, k) - um(2)*gr(4, k), um(2)*gr(3, k) + um(1)*gr(4, k)]
       nm_ = [-um(2), um(1)]
       ns_ = [-us(2), us(1)]
       dca = x(:, pc) - x(:, pa)
       sb = abs(dca(1)) + abs(dca(2))
-      call solve2e(um(1), us(1), um(2), us(2), dca(1), dca(2), 4.0_dp*uround, &
-                   4.0_dp*uround*sb, sb, s2, s3, st, est)
+      ! s2 um + s3 us = C - A, solved in the frame of the guide (DPRM5's solve_kind5: a
+      ! small T2 keeps its digits)
+      call kind5(t2, um, nm_, dca, 4.0_dp*uround*sb, sb, s2, s3, st, est)
       if (failed(st)) return
       x(:, pk) = x(:, pa) + s2*um
       call set_link(l2, um(1), um(2))
@@ -586,27 +587,38 @@ contains
       if (need < 2) return
       call carried(lm, pa, x(:, pc), vgc, agc)
       call carried(lm, pa, x(:, pk), vgk, agk)
-      call cramer_set(um(1), us(1), um(2), us(2), f, 1.0_dp, 1.0_dp)
       sb = abs(v(1, pc)) + abs(v(2, pc)) + abs(vgc(1)) + abs(vgc(2))
-      call cramer(f, v(1, pc) - vgc(1), v(2, pc) - vgc(2), est + 4.0_dp*uround, &
-                   4.0_dp*uround*sb, sb, d2, d3, st, rel)
+      call kind5(t2, um, nm_, v(:, pc) - vgc, 4.0_dp*uround*sb, sb, d2, d3, st, rel)
       if (failed(st)) return
+      rel = rel + est                       ! the position's error moves the system
       est = max(est, rel)
       w(l2) = w(lm)
       w(l3) = w(lm)
       v(:, pk) = vgk + d2*um
       if (need < 3) return
-      ev = abs_err(f, d2, d3, sb, rel)
-      call cramer(f, a(1, pc) - agc(1) - 2.0_dp*w(lm)*(d2*nm_(1) + d3*ns_(1)), &
-                   a(2, pc) - agc(2) - 2.0_dp*w(lm)*(d2*nm_(2) + d3*ns_(2)), &
-                   est + 4.0_dp*uround, 4.0_dp*uround*(sb + abs(w(lm))*(abs(d2) + abs(d3))) &
-                   + 4.0_dp*abs(w(lm))*ev, sb, y1, y2, st, rel)
+      ev = rel*max(norm2d(d2, d3), sb)
+      call kind5(t2, um, nm_, a(:, pc) - agc - 2.0_dp*w(lm)*(d2*nm_ + d3*ns_), &
+                 4.0_dp*uround*(sb + abs(w(lm))*(abs(d2) + abs(d3))) + 4.0_dp*abs(w(lm))*ev, &
+                 sb, y1, y2, st, rel)
       if (failed(st)) return
-      est = max(est, rel)
+      est = max(est, rel + est)
       e(l2) = e(lm)
       e(l3) = e(lm)
       a(:, pk) = agk + y1*um + 2.0_dp*w(lm)*d2*nm_
     end subroutine rpp
+
+    ! ym um + ys us = bb (us = um turned by t2) through numerics' solve_kind5, which solves
+    ! y1 e(FIM+T2) - y2 e(FIM) = b in the guide's frame: ys = y1, ym = -y2
+    subroutine kind5(t2, um, nm_, bb, db, sbb, ym, ys, st5, rel5)
+      real(dp), intent(in) :: t2, um(2), nm_(2), bb(2), db, sbb
+      real(dp), intent(out) :: ym, ys, rel5
+      integer, intent(out) :: st5
+      real(dp) :: z1, z2
+      call solve_kind5(t2, bb(1)*um(1) + bb(2)*um(2), bb(1)*nm_(1) + bb(2)*nm_(2), db, &
+                       sbb, z1, z2, st5, rel5)
+      ys = z1
+      ym = -z2
+    end subroutine kind5
 
     ! a point rigidly on link L: D = P + dist * (the direction P->Q turned by the angle)
     subroutine rigid(k, st, est)

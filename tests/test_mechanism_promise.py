@@ -189,3 +189,40 @@ def test_a_size_out_of_range_raises_range_error():
     m.mass("A", "B", mass=1.0)
     with pytest.raises(sarkp.RangeError, match="overflows"):     # M_b ~ 1e600
         m.solve([0.3, 1.0], need="forces")
+
+
+@pytest.mark.parametrize("t2", [1e-8, 1e-10, 0.3, -2.0])
+def test_rpp_small_slot_angle_keeps_its_digits(t2):
+    """rpp (kind 5) with the slot nearly along the guide: K = A + s2 um, C = K + s3 us
+    solved in the guide's frame as DPRM5/DKNMA5 do, so T2 = 1e-8 keeps every digit
+    (issue 25: SingularError at need="velocities" before).  Reference: the same equations
+    in mpmath, K's velocity and acceleration d2 um, d2' um with the crank at omega = 1."""
+    fim = 0.4
+    m = sarkp.Mechanism()
+    m.fixed("O", 0.0, 0.0)
+    m.fixed("A", -1.0, 0.5)
+    m.crank("C", "O", 0.3)
+    m.rpp("K", "A", fim, "C", t2)
+    phi = np.linspace(0.1, 6.0, 7)
+    with warnings.catch_warnings():
+        warnings.simplefilter("error")
+        r = m.solve(phi, need="accelerations")
+    assert np.all(r.status == 0)
+    um = (mp.cos(fim), mp.sin(fim))
+    nm = (-um[1], um[0])
+    for i, p in enumerate(phi):
+        p = mp.mpf(p)
+        c = (0.3 * mp.cos(p) + 1, 0.3 * mp.sin(p) - mp.mpf(0.5))        # C - A
+        vc = (-0.3 * mp.sin(p), 0.3 * mp.cos(p))
+        ac = (-0.3 * mp.cos(p), -0.3 * mp.sin(p))
+        out = []
+        for b in (c, vc, ac):
+            s3 = (b[0] * nm[0] + b[1] * nm[1]) / mp.sin(t2)
+            out.append((b[0] * um[0] + b[1] * um[1]) - s3 * mp.cos(t2))
+        for got, s, base in ((r.position("K")[i], out[0], (-1.0, 0.5)),
+                             (r.velocity("K")[i], out[1], (0, 0)),
+                             (r.acceleration("K")[i], out[2], (0, 0))):
+            want = [base[0] + s * um[0], base[1] + s * um[1]]
+            scale = max(abs(s), 1.0)
+            assert max(abs(float(got[0] - want[0])), abs(float(got[1] - want[1]))) \
+                <= 1e-14 * scale, (t2, i)

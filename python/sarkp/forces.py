@@ -80,6 +80,12 @@ _NEAR = ("near a singular position: the sine of the angle between the two direct
 _MODES = """    Corrected and as-printed modes differ only by PI (3.14159 as printed): no printed
     figure depends on the errors corrected in this routine."""
 
+#: the sense of the projection family's forces, said once for DNMAF1-DNMAF5
+_SENSE = """    Sense: the projection family (DNMAF1-DNMAF5) returns the forces the group exerts ON
+    the chain (F21 on link 1 from link 2), the opposite of the vector family's reactions
+    on the group (DNMA*'s RA = -F21).
+"""
+
 
 DNMAF1 = describe(
     _w.DNMAF1, listing="VII.2", lines="L5055-5087",
@@ -87,10 +93,7 @@ DNMAF1 = describe(
                  "them coincide: the reactions have no finite value"},
     doc=f"""Reactions in a group of the first kind (RRR), projection method.
 
-    Sense: the projection family (DNMAF1-DNMAF5) returns the forces the group exerts ON
-    the chain (F21 on link 1 from link 2), the opposite of the vector family's reactions
-    on the group (DNMA*'s RA = -F21).
-
+{_SENSE}
     Listing VII.2 (L5059-5087), Table 28, Fig. 53.  F12 is split into its component normal
     to AB (link 2's moments about B) and along AB (the group's moments about C); then
     F23 = F12 + F2 and F34 = F23 + F3.
@@ -115,10 +118,7 @@ DNMAF2 = describe(
                  "finite value"},
     doc=f"""Reactions in a group of the second kind (RRP), projection method.
 
-    Sense: the projection family (DNMAF1-DNMAF5) returns the forces the group exerts ON
-    the chain (F21 on link 1 from link 2), the opposite of the vector family's reactions
-    on the group (DNMA*'s RA = -F21).
-
+{_SENSE}
     Listing VII.1 (L4992-5020), Table 27, Fig. 52, eqs. (7.3)-(7.10).  The group is
     projected on the guide m (the guide's reaction has no component along it), link 2's
     moments about B give F12's component normal to m.
@@ -145,10 +145,7 @@ DNMAF3 = describe(
                  "no finite value"},
     doc=f"""Reactions in a group of the third kind (RPR), projection method.
 
-    Sense: the projection family (DNMAF1-DNMAF5) returns the forces the group exerts ON
-    the chain (F21 on link 1 from link 2), the opposite of the vector family's reactions
-    on the group (DNMA*'s RA = -F21).
-
+{_SENSE}
     Listing VII.4 (L5181-5210), Table 30, Fig. 55.  Link 2 (a slider pivoted at A)
     slides along link 3, which is pivoted at C.  Link 2 projected on the guide gives F12's
     component along it, the group's moments about C the normal one.
@@ -171,10 +168,7 @@ DNMAF4 = describe(
                  "value"},
     doc=f"""Reactions in a group of the fourth kind (PRP), projection method.
 
-    Sense: the projection family (DNMAF1-DNMAF5) returns the forces the group exerts ON
-    the chain (F21 on link 1 from link 2), the opposite of the vector family's reactions
-    on the group (DNMA*'s RA = -F21).
-
+{_SENSE}
     Listing VII.3 (L5118-5149), Table 29, Fig. 54.  The group projected on the guide n
     gives F12 (normal to m); then F23 = F12 + F2 and F34 = F23 + F3.
 
@@ -201,10 +195,7 @@ DNMAF5 = describe(
                  "reactions have no finite value"},
     doc=f"""Reactions in a group of the fifth kind (RPP), projection method.
 
-    Sense: the projection family (DNMAF1-DNMAF5) returns the forces the group exerts ON
-    the chain (F21 on link 1 from link 2), the opposite of the vector family's reactions
-    on the group (DNMA*'s RA = -F21).
-
+{_SENSE}
     Listing VII.5 (L5235-5268), Table 31, Fig. 56.  Link 3 projected on the inner guide
     gives F43; then F32 = F43 + F3 and F21 = F32 + F2.
 
