@@ -312,6 +312,23 @@ class _Pool:
 
 # ---- function generation (Freudenstein) --------------------------------------------------
 
+def _freudenstein_system(f, s, d, a, c):
+    """Freudenstein's equation K1 cos(s) - K2 cos(f) + K3 = cos(f - s) at crank angles f
+    and rocker angles s, as a linear system in the K of the free lengths: a known crank
+    a (rocker c) moves its term d/a cos(s) (d/c cos(f)) to the right-hand side."""
+    cols, rhs = [], np.cos(f - s)
+    if a is None:
+        cols.append(np.cos(s))
+    else:
+        rhs = rhs - (d / a) * np.cos(s)
+    if c is None:
+        cols.append(-np.cos(f))
+    else:
+        rhs = rhs + (d / c) * np.cos(f)
+    cols.append(np.ones_like(f))
+    return np.column_stack(cols), rhs
+
+
 def _freudenstein_solve(phi, psi, d, a, c, free):
     """The four-bars whose rocker angle is ``psi + beta`` at the crank angle
     ``phi + alpha``, exactly, by Freudenstein's equation
@@ -326,18 +343,7 @@ def _freudenstein_solve(phi, psi, d, a, c, free):
         it = iter(off)
         al = next(it) if free[0] else 0.0
         be = next(it) if free[1] else 0.0
-        f, s = phi + al, psi + be
-        cols, rhs = [], np.cos(f - s)
-        if a is None:
-            cols.append(np.cos(s))
-        else:
-            rhs = rhs - (d / a) * np.cos(s)
-        if c is None:
-            cols.append(-np.cos(f))
-        else:
-            rhs = rhs + (d / c) * np.cos(f)
-        cols.append(np.ones_like(f))
-        return np.column_stack(cols), rhs, al, be
+        return (*_freudenstein_system(phi + al, psi + be, d, a, c), al, be)
 
     def unpack(k, al, be):
         j = 0
@@ -586,18 +592,7 @@ def _fg_fit(phi, psi, d, a, c, free, method):
     """Fit the rocker angles in the least-squares or minimax sense."""
     from scipy.optimize import least_squares, minimize
     # start: Freudenstein's equation in the least-squares sense (linear), no offsets
-    f0, s0 = phi, psi
-    cols, rhs = [], np.cos(f0 - s0)
-    if a is None:
-        cols.append(np.cos(s0))
-    else:
-        rhs = rhs - (d / a) * np.cos(s0)
-    if c is None:
-        cols.append(-np.cos(f0))
-    else:
-        rhs = rhs + (d / c) * np.cos(f0)
-    cols.append(np.ones_like(f0))
-    kk = np.linalg.lstsq(np.column_stack(cols), rhs, rcond=None)[0]
+    kk = np.linalg.lstsq(*_freudenstein_system(phi, psi, d, a, c), rcond=None)[0]
     j = 0
     K1 = kk[j] if a is None else d / a
     j += a is None
@@ -616,7 +611,7 @@ def _fg_fit(phi, psi, d, a, c, free, method):
                                "Freudenstein's equation has no real coupler; no start "
                                "for the fit")
     b0 = math.sqrt(b2)
-    side = _fg_branch(a0, c0, d, f0 + al0, s0 + be0)
+    side = _fg_branch(a0, c0, d, phi + al0, psi + be0)
     branch = int(np.sign(side.sum())) or 1
     # design variables: the free lengths (log scale), the free offsets
     free_a, free_c = a is None, c is None

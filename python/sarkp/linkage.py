@@ -117,21 +117,27 @@ def _periodic(phi, values):
     return phi, values, True
 
 
+def _window(phi, s, k, periodic):
+    """The crank angles (relative to ``phi[k]``) and values of the five grid points
+    around ``k``: across the seam of a full turn when ``periodic``, else cut at the
+    sweep's ends."""
+    n = phi.size
+    if periodic and n >= 5:
+        turn = 2 * math.pi if phi[-1] > phi[0] else -2 * math.pi
+        idx = np.arange(k - 2, k + 3)
+        return phi[idx % n] + turn * np.floor_divide(idx, n) - phi[k], s[idx % n]
+    lo, hi = max(0, k - 2), min(n, k + 3)
+    return phi[lo:hi] - phi[k], s[lo:hi]
+
+
 def _refine(phi, s, k, periodic, sign):
     """(crank angle, value) of the extreme of ``s`` near the grid point ``k`` (sign +1 a
     maximum, -1 a minimum): the stationary point of the polynomial of degree 4 through
     the five values around ``k`` (fewer at a sweep's end), within one step of ``k``."""
     n = phi.size
-    turn = 2 * math.pi if phi[-1] > phi[0] else -2 * math.pi
-    if periodic and n >= 5:
-        idx = np.arange(k - 2, k + 3)
-        t = phi[idx % n] + turn * np.floor_divide(idx, n) - phi[k]
-        v = s[idx % n]
-    else:
-        lo, hi = max(0, k - 2), min(n, k + 3)
-        if k in (0, n - 1):
-            return float(phi[k]), float(s[k])      # an end of the sweep: no neighbours
-        t, v = phi[lo:hi] - phi[k], s[lo:hi]
+    if not (periodic and n >= 5) and k in (0, n - 1):
+        return float(phi[k]), float(s[k])          # an end of the sweep: no neighbours
+    t, v = _window(phi, s, k, periodic)
     h = float(np.max(np.abs(t)))
     u = t / h
     degree = min(4, u.size - 1)
@@ -236,16 +242,10 @@ def point_extremes(phi, xy, along=None) -> Extremes:
 
 def _refine_at(phi, s, k, periodic, phi_e):
     """The value at ``phi_e`` of the polynomial through the values around ``k``."""
-    n = phi.size
-    turn = 2 * math.pi if phi[-1] > phi[0] else -2 * math.pi
-    if periodic and n >= 5:
-        idx = np.arange(k - 2, k + 3)
-        t = phi[idx % n] + turn * np.floor_divide(idx, n) - phi[k]
-        v = s[idx % n]
-        d = math.remainder(phi_e - phi[k], 2 * math.pi)
-    else:
-        lo, hi = max(0, k - 2), min(n, k + 3)
-        t, v, d = phi[lo:hi] - phi[k], s[lo:hi], phi_e - phi[k]
+    t, v = _window(phi, s, k, periodic)
+    d = phi_e - phi[k]
+    if periodic and phi.size >= 5:
+        d = math.remainder(d, 2 * math.pi)
     h = float(np.max(np.abs(t)))
     coef = np.polyfit(t / h, v, min(4, t.size - 1))
     return float(np.polyval(coef, d / h))
