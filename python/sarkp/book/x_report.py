@@ -24,9 +24,13 @@ def design(done: dict) -> dict:
     out = {}
     if "kinematics" in done:
         # the six-bar as a sarkp.Mechanism (x_mechanism), swept in one compiled call
+        # the task card's measures of the design: the Mechanism computes them corrected
+        # in either mode (it has no as-printed mode), so it is asked to, without a warning
+        from ..modes import mode
         fine = np.linspace(0.0, 2.0 * math.pi, 3601)
-        k = x_mechanism.mechanism(done["synthesis"]).solve(fine, omega=prog_x.W1,
-                                                             epsilon=0.0, need="velocities")
+        with mode("corrected"):
+            k = x_mechanism.mechanism(done["synthesis"]).solve(
+                fine, omega=prog_x.W1, epsilon=0.0, need="velocities")
         xe = k.position("E")[..., 0]
         ficb = np.unwrap(k.angle("C", "B"))            # continuous through +-pi
         out["stroke"] = float(xe.max() - xe.min())
