@@ -593,7 +593,9 @@ class Mechanism:
         """A linear spring between points P and Q: stiffness k (N/m, >= 0), free length
         L0 (m, >= 0); its force follows the positions (tension positive).  ``k``, ``L0``:
         numbers, 1-d arrays over D designs, or callables of the solve's grid (as
-        :meth:`force`)."""
+        :meth:`force`).  Ends that coincide at every position (two points of one link
+        at one place) with k L0 > 0 make solve(need="forces") raise ValueError: such a
+        force has no direction."""
         who = f"spring({P!r}, {Q!r})"
         self._known(who, P)
         self._known(who, Q)
@@ -754,6 +756,8 @@ class Mechanism:
             tv = np.broadcast_to(tv, (n,)) if inc_t else np.full(n, tv[0])
         g = _real("solve", "gravity", gravity)
         tab = self._tables()
+        if level >= 4 and tab["rigid_springs"]:
+            self._check_springs(tab, phiv[0])
         sel = self._selection(tab, points, links)
         fval, tval, spv = self._load_tables(n, phiv, w, inc_w, tv)
         D = self.designs
@@ -997,9 +1001,47 @@ class Mechanism:
              "fpoint": np.array([f[0] + 1 for f in forces], dtype=np.int32),
              "flink": np.array([f[1] for f in forces], dtype=np.int32),
              "tlink": np.array([t[0] for t in torques], dtype=np.int32),
-             "dynamic": any(isinstance(v, _Load) for v in values), "loads": {}}
+             "dynamic": any(isinstance(v, _Load) for v in values), "loads": {},
+             "rigid_springs": [sp for sp in self._springs if self._fixed_length(sp)]}
         self._cache = t
         return t
+
+    def _fixed_length(self, spring):
+        """Whether a spring's ends are two points of one rigid link (the frame too), its
+        length then the same at every position, and its force may be nonzero."""
+        p, q, _, _, k, L0 = spring
+        names = {i: nm for nm, i in self._points.items()}
+        if not any(names[p] in lk.rigid and names[q] in lk.rigid for lk in self._links):
+            return False
+        return not any(not isinstance(v, _Load) and np.all(v == 0.0) for v in (k, L0))
+
+    def _check_springs(self, tab, phi0):
+        """A spring whose ends always coincide (L0 > 0) has no direction for its force
+        k (0 - L0): a ValueError naming it (the kernel would drop it silently).  Checked
+        at the first position solved (the ends' distance is the same at every one),
+        once per description."""
+        if tab.get("springs_checked"):
+            return
+        names = {i: nm for nm, i in self._points.items()}
+        ends = [(names[p], names[q]) for p, q, *_ in tab["rigid_springs"]]
+        moving = tuple({nm for e in ends for nm in e if nm not in self._fixed})
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            r = self.solve(float(phi0), need="positions", on_error="nan", points=moving,
+                           links=())
+        for P, Q in ends:
+            a, b = r.position(P), r.position(Q)
+            if np.isnan(a).any() or np.isnan(b).any():
+                return                      # not assembled here: checked at a later solve
+            d = np.hypot(*np.moveaxis(a - b, -1, 0))
+            size = np.maximum(np.max(np.abs(a), -1), np.max(np.abs(b), -1))
+            # the same point computed two ways differs by rounding only
+            if np.any(d <= 8 * np.finfo(float).eps * size):
+                raise ValueError(f"spring({P!r}, {Q!r}): its ends coincide at every "
+                                 f"position (two points of one rigid link at one place), "
+                                 f"so its force k (0 - L0) has no direction; give it "
+                                 f"L0 = 0 or join points apart")
+        tab["springs_checked"] = True
 
     def _load_tables(self, n, phiv, w, inc_w, tv):
         """The forces', torques' and springs' values over the positions (and designs):
