@@ -714,8 +714,10 @@ class Mechanism:
         SignificanceWarning states the digits left (never too many); SingularError: no
         digit left.  The estimates are unit-free (the same at every scale 2**k) and
         allow for the rounding of coordinates far from the origin.
-        tests/test_mechanism_promise.py checks this for the rrr group: seeded random four-bars,
-        positions up to 1e-12 from a toggle, against a 40-digit mpmath reference.
+        tests/test_mechanism_promise.py checks this for the rrr, rrp and rpr groups:
+        seeded random four-bars, offset slider-cranks and inverted slider-cranks,
+        positions up to 1e-12 from a toggle, scaled by 2**k and moved, against 40-digit
+        mpmath references.
 
         *Modes.*  The Mechanism has no as-printed mode: inside ``sarkp.as_printed()``
         it computes the corrected results (pi to double precision) and warns that it
