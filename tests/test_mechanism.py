@@ -789,8 +789,8 @@ def test_spring_whose_ends_always_coincide_is_an_error():
         r = _spring_fourbar(0.0, L0, k).solve(phi, omega=10.0, need="forces")
         np.testing.assert_array_equal(r.balancing_moment, bare.balancing_moment)
         np.testing.assert_array_equal(r.reaction("B"), bare.reaction("B"))
-    # apart: the spring along A-D (0.1 long, pushing with k (0.1 - L0)) changes the
-    # reaction at A by exactly that force (A and D on one link: no moment, no work)
+    # apart: the spring A-D (0.1 long) is a pair of opposite forces on one link: the
+    # balancing moment is the one without it (no moment, no work)
     r = _spring_fourbar(0.1, 0.05).solve(phi, omega=10.0, need="forces")
     np.testing.assert_allclose(r.balancing_moment, _spring_fourbar(0.1, 0.0, k=None).solve(
         phi, omega=10.0, need="forces").balancing_moment, rtol=1e-12, atol=1e-12)
