@@ -119,6 +119,12 @@ contains
         kind = gi(1, k)
         call step(k, kind, i, st, est)
         if (failed(st)) then
+          ! a result out of range once no digit is left (a group at a dead centre: its
+          ! velocities, finite but huge, squared in its accelerations) is that dead
+          ! centre, not an overflow (an estimate of exactly huge is a failed solve's
+          ! placeholder, not an estimate)
+          if (st == st_range .and. ((.not. maxest <= 0.1_dp .and. maxest /= huge(est)) &
+              .or. (.not. est <= 0.1_dp .and. est /= huge(est)))) st = st_singular
           worst = st
           fg = k
           exit

@@ -757,3 +757,48 @@ def test_crank_alone_closed_form():
                          -w * w * np.sin(PHI) + e * np.cos(PHI)], -1)
     np.testing.assert_allclose(r.reaction("O"), 2.0 * (aS + [0.0, G]), rtol=1e-13, atol=1e-13)
     np.testing.assert_allclose(r.reduced_inertia, J_O, rtol=1e-15)
+
+
+def _spring_fourbar(dist, L0, k=100.0):
+    m = Mechanism()
+    m.fixed("O", 0.0, 0.0)
+    m.fixed("C", 0.3, 0.05)
+    m.crank("A", "O", 0.1)
+    m.rrr("B", "A", "C", 0.35, 0.3)
+    m.point("D", "A", "B", dist, 0.4)             # D on A-B, ``dist`` from A
+    m.mass("A", "B", mass=1.5, inertia=0.01, centre=0.1)
+    if k is not None:
+        m.spring("A", "D", k, L0)
+    return m
+
+
+def test_spring_whose_ends_always_coincide_is_an_error():
+    """A spring between two points of one link at one place (L0 > 0) pushes with
+    k L0 in no direction: ValueError naming it at the forces' solve (issue 25: it was
+    dropped silently).  With L0 = 0 (or k = 0) its force is zero: the same results as
+    without it, bit for bit; a spring of length 0.1 along the link is not refused."""
+    phi = np.linspace(0.0, 2 * math.pi, 7)
+    with pytest.raises(ValueError, match=r"spring\('A', 'D'\).*coincide at every position"):
+        _spring_fourbar(0.0, 0.05).solve(phi, omega=10.0, need="forces")
+    with pytest.raises(ValueError, match=r"spring\('A', 'D'\)"):    # one design of two
+        _spring_fourbar(np.array([0.1, 0.0]), 0.05).solve(0.3, need="forces")
+    with pytest.raises(ValueError, match=r"spring\('A', 'D'\)"):    # L0 a callable
+        _spring_fourbar(0.0, lambda phi: 0.05 + 0 * phi).solve(phi, need="forces")
+    bare = _spring_fourbar(0.0, 0.0, k=None).solve(phi, omega=10.0, need="forces")
+    for L0, k in ((0.0, 100.0), (0.05, 0.0)):
+        r = _spring_fourbar(0.0, L0, k).solve(phi, omega=10.0, need="forces")
+        np.testing.assert_array_equal(r.balancing_moment, bare.balancing_moment)
+        np.testing.assert_array_equal(r.reaction("B"), bare.reaction("B"))
+    # apart: the spring A-D (0.1 long) is a pair of opposite forces on one link: the
+    # balancing moment is the one without it (no moment, no work)
+    r = _spring_fourbar(0.1, 0.05).solve(phi, omega=10.0, need="forces")
+    np.testing.assert_allclose(r.balancing_moment, _spring_fourbar(0.1, 0.0, k=None).solve(
+        phi, omega=10.0, need="forces").balancing_moment, rtol=1e-12, atol=1e-12)
+    # kinematics never need the spring: no error there
+    _spring_fourbar(0.0, 0.05).solve(phi, need="accelerations")
+    # two frame points at one place
+    m = _spring_fourbar(0.1, 0.0, k=None)
+    m.fixed("P", 0.3, 0.05)
+    m.spring("C", "P", 10.0, 0.2)
+    with pytest.raises(ValueError, match=r"spring\('C', 'P'\)"):
+        m.solve(phi, need="forces")

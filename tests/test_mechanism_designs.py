@@ -301,3 +301,48 @@ def test_a_point_on_the_frame_says_so():
     m = fourbar()
     with pytest.raises(ValueError, match="frame points: a point rigid with the frame"):
         m.point("D", "O", "C", 0.1)
+
+
+@pytest.mark.parametrize("need", ["positions", "velocities", "accelerations", "forces"])
+@pytest.mark.parametrize("designs", [False, True])
+def test_one_position_equals_the_sweep_bit_for_bit(need, designs):
+    """solve(phi) with a scalar phi (the one-position path: results allocated in their
+    final shape, written through their transposes) against the same phi in an array of
+    one and of three positions, and a 2-d phi against the flat sweep, bit for bit; the
+    results of two solves never share memory."""
+    m = fourbar(l2=np.array([0.35, 0.36])) if designs else fourbar()
+    lead = (2,) if designs else ()
+    grid = np.array([0.3, 1.1, 2.9])
+    sweep = m.solve(grid, omega=10.0, epsilon=2.0, need=need)
+    one = m.solve(0.3, omega=10.0, epsilon=2.0, need=need)
+    again = m.solve(0.3, omega=10.0, epsilon=2.0, need=need)
+    first = m.solve(grid[:1], omega=10.0, epsilon=2.0, need=need)
+    square = m.solve(np.array([[0.3, 1.1, 2.9]] * 2).T, omega=10.0, epsilon=2.0, need=need)
+    for f in FIELDS:
+        a = sweep._asdict()[f]
+        if a is None:
+            assert one._asdict()[f] is None and square._asdict()[f] is None, f
+            continue
+        assert one._asdict()[f].shape == a.shape[:len(lead)] + a.shape[len(lead) + 1:], f
+        np.testing.assert_array_equal(one._asdict()[f], a[(slice(None),) * len(lead) + (0,)])
+        np.testing.assert_array_equal(first._asdict()[f], a[(slice(None),) * len(lead)
+                                                              + (slice(0, 1),)])
+        for col in range(2):
+            np.testing.assert_array_equal(
+                square._asdict()[f][(slice(None),) * len(lead) + (slice(None), col)], a)
+        if f != "status":
+            assert not np.shares_memory(one._asdict()[f], again._asdict()[f]), f
+    assert one.position("B").shape == lead + (2,)
+
+
+def test_one_position_failure_is_nan_in_every_computed_field():
+    """A scalar phi where the group does not assemble, on_error="nan": NaN in every
+    field computed (through the one-position path), none in what was not."""
+    m = fourbar(l2=0.1, l3=0.1)              # A-C is 0.2-0.4: never reaches
+    r = m.solve(0.3, omega=10.0, need="velocities", on_error="nan")
+    assert r.status == sarkp.Status.ASSEMBLY
+    for f in ("positions", "velocities", "directions", "omegas", "reduced_inertia"):
+        assert np.all(np.isnan(r._asdict()[f])), f
+    assert r._asdict()["accelerations"] is None
+    with pytest.raises(ValueError, match="need='accelerations'"):
+        r.acceleration("B")

@@ -53,6 +53,8 @@ _CRANK = 1
 
 
 def _real(who, name, value):
+    if type(value) is float and math.isfinite(value):     # the common case, quickly
+        return value
     if isinstance(value, (bool, np.bool_)) or not isinstance(value, numbers.Real):
         raise TypeError(f"{who}: {name} must be a real number, not {type(value).__name__}")
     value = float(value)
@@ -591,7 +593,9 @@ class Mechanism:
         """A linear spring between points P and Q: stiffness k (N/m, >= 0), free length
         L0 (m, >= 0); its force follows the positions (tension positive).  ``k``, ``L0``:
         numbers, 1-d arrays over D designs, or callables of the solve's grid (as
-        :meth:`force`)."""
+        :meth:`force`).  Ends that coincide at every position (two points of one link
+        at one place) with k L0 > 0 make solve(need="forces") raise ValueError: such a
+        force has no direction."""
         who = f"spring({P!r}, {Q!r})"
         self._known(who, P)
         self._known(who, Q)
@@ -710,8 +714,10 @@ class Mechanism:
         SignificanceWarning states the digits left (never too many); SingularError: no
         digit left.  The estimates are unit-free (the same at every scale 2**k) and
         allow for the rounding of coordinates far from the origin.
-        tests/test_mechanism_promise.py checks this for the rrr group: seeded random four-bars,
-        positions up to 1e-12 from a toggle, against a 40-digit mpmath reference.
+        tests/test_mechanism_promise.py checks this for the rrr, rrp and rpr groups:
+        seeded random four-bars, offset slider-cranks and inverted slider-cranks,
+        positions up to 1e-12 from a toggle, scaled by 2**k and moved, against 40-digit
+        mpmath references.
 
         *Modes.*  The Mechanism has no as-printed mode: inside ``sarkp.as_printed()``
         it computes the corrected results (pi to double precision) and warns that it
@@ -728,16 +734,22 @@ class Mechanism:
             warnings.warn("Mechanism.solve has no as-printed mode: it computes the "
                           "corrected results (pi to double precision); the book's routines "
                           "reproduce the printed tables", UserWarning, stacklevel=2)
-        phi_in = np.asarray(phi)
-        if phi_in.dtype.kind not in "fiu":
-            raise TypeError("solve: phi must be real numbers")
-        shape = phi_in.shape
-        phiv = np.ascontiguousarray(phi_in, dtype=float).reshape(-1)
+        if type(phi) is float:              # one position, quickly
+            if not math.isfinite(phi):
+                raise ValueError("solve: phi must be finite")
+            phiv = np.array((phi,))
+            shape = ()
+        else:
+            phi_in = np.asarray(phi)
+            if phi_in.dtype.kind not in "fiu":
+                raise TypeError("solve: phi must be real numbers")
+            shape = phi_in.shape
+            phiv = np.ascontiguousarray(phi_in, dtype=float).reshape(-1)
+            if phiv.size == 0:
+                raise ValueError("solve: phi is empty")
+            if not np.isfinite(phiv).all():
+                raise ValueError("solve: phi must be finite")
         n = phiv.size
-        if n == 0:
-            raise ValueError("solve: phi is empty")
-        if not np.isfinite(phiv).all():
-            raise ValueError("solve: phi must be finite")
         w, inc_w = self._per_position("omega", omega, n)
         e, inc_e = self._per_position("epsilon", epsilon, n)
         tv = None
@@ -746,26 +758,33 @@ class Mechanism:
             tv = np.broadcast_to(tv, (n,)) if inc_t else np.full(n, tv[0])
         g = _real("solve", "gravity", gravity)
         tab = self._tables()
+        if level >= 4 and tab["rigid_springs"]:
+            self._check_springs(tab, phiv[0])
         sel = self._selection(tab, points, links)
         fval, tval, spv = self._load_tables(n, phiv, w, inc_w, tv)
         D = self.designs
         lead = () if D is None else (D,)
-        nop, nol, npair = len(sel["outp"]), len(sel["outl"]), tab["npair"]
-        cut = (sel["nop"], sel["nol"])      # the columns kept (0 for an empty choice)
-        nv = n if level >= 2 else 1
-        na = n if level >= 3 else 1
-        nr = n if level >= 4 else 1
-        shapes = {"positions": (2, nop, n), "velocities": (2, nop, nv),
-                  "accelerations": (2, nop, na), "directions": (2, nol, n),
-                  "omegas": (nol, nv), "epsilons": (nol, na), "reactions": (3, npair, nr),
-                  "balancing_moment": (nr,), "reduced_inertia": (nv,),
-                  "reduced_moment": (nr,)}
+        plan = self._plan(tab, sel, level, shape, n, lead)
+        shapes, computed, finals = plan["shapes"], plan["computed"], plan["finals"]
         if out is not None:
             bufs, status = self._reuse(out, need, sel, shape, lead, shapes)
+            res = {k: bufs[k].T.reshape(finals[k]) for k in computed}
         else:
-            bufs = {k: np.empty(v + lead, order="F") for k, v in shapes.items()}
-            status = np.zeros((n,) + lead, dtype=np.int32, order="F")
-        fgroup = np.zeros((n,) + lead, dtype=np.int32, order="F")
+            # the results in their final shape (C order); the kernel writes them through
+            # their transposes (Fortran order), the outputs it does not touch (their
+            # level not asked for) are the plan's shared 1-long arrays
+            res = {k: np.empty(finals[k]) for k in computed}
+            bufs = dict(plan["untouched"])
+            st_c = np.zeros(lead + shape, dtype=np.int32)
+            if len(shape) == 1 or not (shape or lead):    # the transposes as they are
+                for k in computed:
+                    bufs[k] = res[k].T
+                status = st_c.T
+            else:
+                for k in computed:
+                    bufs[k] = res[k].reshape(lead + shapes[k][::-1]).T
+                status = st_c.reshape(lead + (n,)).T
+        fgroup = np.zeros(lead + (n,), dtype=np.int32).T
         b = bufs
         args = (tab["gi"], tab["gr"], phiv, w, e, inc_w, inc_e, tab["mlink"], tab["mpoint"],
                 tab["mval"], g, tab["fpoint"], tab["flink"], fval, tab["tlink"], tval,
@@ -778,8 +797,7 @@ class Mechanism:
             _sarkp.mechanism.mech_solve(level, *args)
         else:
             _sarkp.mechanism.mech_solve_many(level, *args)
-        computed = [k for k in shapes if NEED_OF[k] <= level]
-        if status.any():
+        if np.count_nonzero(status):
             self._settle(status, fgroup, phiv, shape, lead, on_error)
             bad = ~((status == 0) | (status > _ST_DIGITS))
             if bad.any():
@@ -791,26 +809,67 @@ class Mechanism:
                         arr[bad] = math.nan
             status[status > _ST_DIGITS] = np.int32(Status.SIGNIFICANCE)
 
+        views = []
+        for key, empty in plan["views"]:
+            if empty is False:
+                views.append(None)          # not asked for
+            elif empty is None:
+                views.append(res[key])
+            else:                           # an empty choice: the stored column left out
+                views.append(res[key][empty])
         flat = len(shape) == 1
-
-        def view(key, tail=()):
-            if key not in computed:
-                return None                 # not asked for
-            a = bufs[key].T
-            a = a if flat else a.reshape(lead + shape + tail)
-            if tail and key != "reactions":
-                k = cut[0] if key in ("positions", "velocities", "accelerations") else cut[1]
-                if k == 0:
-                    a = a[..., :0, :] if len(tail) == 2 else a[..., :0]
-            return a
         st = status.T
         return MechanismResult._make((
-            self, sel["columns"], need, phiv if flat else phiv.reshape(shape),
-            view("positions", (nop, 2)), view("velocities", (nop, 2)),
-            view("accelerations", (nop, 2)), view("directions", (nol, 2)),
-            view("omegas", (nol,)), view("epsilons", (nol,)), view("reactions", (npair, 3)),
-            view("balancing_moment"), view("reduced_inertia"), view("reduced_moment"),
+            self, sel["columns"], need, phiv if flat else phiv.reshape(shape), *views,
             st if flat else st.reshape(lead + shape)))
+
+    def _plan(self, tab, sel, level, shape, n, lead):
+        """What a solve of this need, selection and phi's shape allocates and returns:
+        the outputs' shapes, the ones computed, shared 1-long arrays for the ones the
+        kernel does not touch, and how each is viewed (cached with the selection)."""
+        plans = sel["plans"]
+        key = (level, shape)
+        plan = plans.get(key)
+        if plan is not None:
+            return plan
+        nop, nol, npair = len(sel["outp"]), len(sel["outl"]), tab["npair"]
+        nv = n if level >= 2 else 1
+        na = n if level >= 3 else 1
+        nr = n if level >= 4 else 1
+        shapes = {"positions": (2, nop, n), "velocities": (2, nop, nv),
+                  "accelerations": (2, nop, na), "directions": (2, nol, n),
+                  "omegas": (nol, nv), "epsilons": (nol, na), "reactions": (3, npair, nr),
+                  "balancing_moment": (nr,), "reduced_inertia": (nv,),
+                  "reduced_moment": (nr,)}
+        computed = tuple(k for k in shapes if NEED_OF[k] <= level)
+        tails = {"positions": (nop, 2), "velocities": (nop, 2), "accelerations": (nop, 2),
+                 "directions": (nol, 2), "omegas": (nol,), "epsilons": (nol,),
+                 "reactions": (npair, 3), "balancing_moment": (), "reduced_inertia": (),
+                 "reduced_moment": ()}
+        views = []
+        finals = {}
+        for k in FIELDS[4:-1]:
+            if k not in computed:
+                views.append((k, False))
+                continue
+            tail = tails[k]
+            finals[k] = lead + shape + tail
+            # the columns kept (0 for an empty choice, whose one stored column goes)
+            kept = sel["nop"] if k in ("positions", "velocities", "accelerations") else \
+                sel["nol"] if k in ("directions", "omegas", "epsilons") else None
+            empty = None
+            if kept == 0:
+                empty = (Ellipsis, slice(0, 0), slice(None)) if len(tail) == 2 else \
+                    (Ellipsis, slice(0, 0))
+            views.append((k, empty))
+        plan = {"shapes": shapes, "computed": computed, "views": tuple(views),
+                "finals": finals,
+                "untouched": {k: np.empty(v + lead, order="F") for k, v in shapes.items()
+                              if k not in computed}}
+        if len(plans) > 32:                 # many shapes of phi: keep the cache small
+            plans.clear()
+        plans[key] = plan
+        return plan
 
     def _reuse(self, out, need, sel, shape, lead, shapes):
         """The Fortran-ordered arrays behind the result ``out`` (solve's ``out=``)."""
@@ -882,7 +941,7 @@ class Mechanism:
         sel = {"outp": np.array([self._points[nm] + 1 for nm in chosen] or [pin],
                                 dtype=np.int32),
                "outl": np.array(lidx or [_CRANK], dtype=np.int32), "columns": columns,
-               "nop": len(chosen), "nol": len(lidx)}
+               "nop": len(chosen), "nol": len(lidx), "plans": {}}
         tab["sel"][key] = sel
         return sel
 
@@ -944,9 +1003,47 @@ class Mechanism:
              "fpoint": np.array([f[0] + 1 for f in forces], dtype=np.int32),
              "flink": np.array([f[1] for f in forces], dtype=np.int32),
              "tlink": np.array([t[0] for t in torques], dtype=np.int32),
-             "dynamic": any(isinstance(v, _Load) for v in values), "loads": {}}
+             "dynamic": any(isinstance(v, _Load) for v in values), "loads": {},
+             "rigid_springs": [sp for sp in self._springs if self._fixed_length(sp)]}
         self._cache = t
         return t
+
+    def _fixed_length(self, spring):
+        """Whether a spring's ends are two points of one rigid link (the frame too), its
+        length then the same at every position, and its force may be nonzero."""
+        p, q, _, _, k, L0 = spring
+        names = {i: nm for nm, i in self._points.items()}
+        if not any(names[p] in lk.rigid and names[q] in lk.rigid for lk in self._links):
+            return False
+        return not any(not isinstance(v, _Load) and np.all(v == 0.0) for v in (k, L0))
+
+    def _check_springs(self, tab, phi0):
+        """A spring whose ends always coincide (L0 > 0) has no direction for its force
+        k (0 - L0): a ValueError naming it (the kernel would drop it silently).  Checked
+        at the first position solved (the ends' distance is the same at every one),
+        once per description."""
+        if tab.get("springs_checked"):
+            return
+        names = {i: nm for nm, i in self._points.items()}
+        ends = [(names[p], names[q]) for p, q, *_ in tab["rigid_springs"]]
+        moving = tuple({nm for e in ends for nm in e if nm not in self._fixed})
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore")
+            r = self.solve(float(phi0), need="positions", on_error="nan", points=moving,
+                           links=())
+        for P, Q in ends:
+            a, b = r.position(P), r.position(Q)
+            if np.isnan(a).any() or np.isnan(b).any():
+                return                      # not assembled here: checked at a later solve
+            d = np.hypot(*np.moveaxis(a - b, -1, 0))
+            size = np.maximum(np.max(np.abs(a), -1), np.max(np.abs(b), -1))
+            # the same point computed two ways differs by rounding only
+            if np.any(d <= 8 * np.finfo(float).eps * size):
+                raise ValueError(f"spring({P!r}, {Q!r}): its ends coincide at every "
+                                 f"position (two points of one rigid link at one place), "
+                                 f"so its force k (0 - L0) has no direction; give it "
+                                 f"L0 = 0 or join points apart")
+        tab["springs_checked"] = True
 
     def _load_tables(self, n, phiv, w, inc_w, tv):
         """The forces', torques' and springs' values over the positions (and designs):
