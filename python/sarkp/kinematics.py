@@ -92,6 +92,10 @@ DPRM1 = describe(
 
     Listing IV.1 (L1479-1505), operator function PRM1 (Table 7, Fig. 14).
 
+    Branch: P keeps the book's sign (tests/test_branch_conventions.py): P = -1 places B
+    on the left of the directed line A -> C, where ``Mechanism.rrr(..., branch=+1)``
+    places it; the Mechanism's one rule is explained in the docs' concepts page.
+
     Returns
     -------
     DPRM1(FI2, FI3, XB, YB)
@@ -124,6 +128,10 @@ DPRM3 = describe(
 
     Listing IV.3 (L1577-1598), operator function PRM3 (Table 9, Fig. 16).  The slider 2
     pivoted at A slides along link 3, which turns about C.
+
+    Branch: P keeps the book's sign (tests/test_branch_conventions.py): P = -1 gives the
+    direction of link 3 that ``Mechanism.rpr(..., branch=+1)`` gives; the Mechanism's
+    one rule is explained in the docs' concepts page.
 
     Returns
     -------
@@ -341,6 +349,11 @@ DKNMA1 = describe(
     printed call of a four-argument ``DUGL1`` that the book never defines is read from
     the geometry as the direction C -> A (E-DKNMA1-2).
 
+    Branch: P keeps the book's sign (tests/test_branch_conventions.py): P = +1 places B
+    on the left of the directed line A -> C, where ``Mechanism.rrr(..., branch=+1)`` and
+    ``DPRM1(..., P=-1)`` place it; the Mechanism's one rule is explained in the docs'
+    concepts page.
+
     Returns
     -------
     DKNMA1(XB, YB, FI2, FI3, VBA, ALBA, VBC, ALBC, VB, ALB, W2, W3, ABCN, ABAN, ABAT,
@@ -374,6 +387,10 @@ DKNMA3 = describe(
 
     Listing IV.18 (L2749-2829), operator function KNMA3 of textbook [1].  The printed
     header lost two outputs, ALAR and VAC (E-DKNMA3-1); BAR is corrected (E-DKNMA3-3).
+
+    Branch: P keeps the book's sign (tests/test_branch_conventions.py): P = +1 gives the
+    direction of link 3 that ``Mechanism.rpr(..., branch=+1)`` and ``DPRM3(..., P=-1)``
+    give; the Mechanism's one rule is explained in the docs' concepts page.
 
     Returns
     -------
