@@ -746,6 +746,15 @@ class Mechanism:
         J, M = self._loads(phi, gravity)
         return motion(phi, J, M, omega0=omega0, t0=t0, omega_mean=omega_mean)
 
+    def simulate(self, t, *, phi0=0.0, omega0=0.0, gravity=0.0, rtol=1e-8,
+                 branches="continuous"):
+        """The motion in time under the mechanism's loads, from phi0, omega0 at t[0]
+        (:func:`sarkp.dynamics.simulate`): through reversals and from rest, turning
+        points, stalls and branch changes reported as events."""
+        from .dynamics import simulate
+        return simulate(self, t, phi0=phi0, omega0=omega0, gravity=gravity, rtol=rtol,
+                        branches=branches)
+
     def flywheel(self, delta, omega_mean, phi=None, *, gravity=0.0, J_constant=None):
         """The moment of inertia to add on the crank so that the steady state has the
         coefficient of speed fluctuation exactly ``delta`` (:func:`sarkp.dynamics.
