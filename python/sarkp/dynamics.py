@@ -968,8 +968,11 @@ def _stage_configs(base, crossings, phis):
     return cfgs
 
 
-def _rhs(mach, base, crossings, ph, om, ts):
-    """epsilon at the stages, and the direct results [(indices, result)]."""
+def _rhs(mach, base, crossings, ph, om, ts, y):
+    """epsilon at the stages (the step from phi = y), and the direct results [(indices,
+    result)]."""
+    lo, hi = min(y, float(ph.min())) - _ZETA, max(y, float(ph.max())) + _ZETA
+    crossings = [cr for cr in crossings if lo < cr.phi < hi]
     if not crossings:
         mach.set_config(base)
         return mach.epsilon(ph, om, ts)
@@ -1115,7 +1118,7 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
     crossings = []
     base = start_cfg                          # the branches at phi = y
     status = "ok"
-    steps = rejected = 0
+    steps = rejected = in_row = 0
     stall = _stall_check(mach, y, w, e, wref, start_cfg)
     if stall:
         events.append(Event("stall", tcur, y, 0.0, 0.0, "at rest and held there by "
@@ -1138,7 +1141,7 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
             for it in range(1, 30):
                 ph = y + h * w * c + h * h * (a2 @ F)
                 om = w + h * (a1 @ F)
-                Fn, parts = _rhs(mach, base, crossings, ph, om, ts)
+                Fn, parts = _rhs(mach, base, crossings, ph, om, ts, y)
                 d = float(np.max(np.abs(Fn - F)))
                 F = Fn
                 size = max(h * d / sc_w, h * h * d / sc_p)
@@ -1164,14 +1167,16 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
             err = math.inf
         if not ok:
             rejected += 1
+            in_row += 1
             h *= 0.5 if not math.isfinite(err) else max(0.2, 0.8 * err ** (-1.0 / s))
-            if h < 1e-14 * max(1.0, abs(tcur)) or h <= 0.0:
+            if h < 1e-12 * span or in_row > 40:
                 raise RangeError(f"simulate: the step size fell to {h!r} s at t = {tcur!r}, "
                                  f"phi = {y!r}: the mechanism's motion cannot be followed "
                                  f"there (a dead centre it cannot pass?)")
             F = np.full(s, e) if not np.isfinite(F).all() else F
             continue
         steps += 1
+        in_row = 0
         t1 = tcur + h
 
         def at(tau, F=F, y=y, w=w, h=h):
@@ -1240,8 +1245,18 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
         hn = h * min(4.0, max(0.2, grow))
         if rho > 0.0:
             hn = min(hn, h * max(0.2, 0.12 / rho))
+        if not follow and mach.groups and parts:
+            S = np.abs(mach.sides(parts[-1][1]))
+            if S.min() < 1e-4:
+                B = mach.groups[int(S[-1].argmin())][0]
+                raise RangeError(
+                    f"simulate: the rrr group placing {B!r} reaches a toggle or change "
+                    f"point at t = {tcur!r}, phi = {y!r}: the geometric branch rule "
+                    f"(branches='geometric') cannot follow the motion there; "
+                    f"branches='continuous' does")
         if follow:
             reach = abs(hn * w) + 0.5 * hn * hn * abs(e) + abs(y1 - float(ph[0]))
+            crossings = [cr for cr in crossings if abs(cr.phi - y) < 8.0 * reach + _ZETA]
             crossings = _predict(mach, base, crossings, parts, ph, y, reach)
         # predictor: the collocation polynomial of this step extrapolated
         F = _lagrange(1.0 + c * (hn / h), c, bary) @ F
