@@ -16,6 +16,8 @@ import numpy as np
 import pytest
 
 import sarkp
+from hypothesis import assume, given, settings
+from hypothesis import strategies as st
 from sarkp import flywheel, motion
 
 # a machine with a variable inertia and a position-dependent load: a constant driving
@@ -429,3 +431,85 @@ def test_steady_motion_is_dzkndv_up_to_the_trapezoid_error():
         r = motion(phi, isc + jv, M, omega_mean=W)
         gaps.append(np.abs(d.WPR - r.omega).max())
     assert np.all(np.abs(_orders(gaps) - 2.0) < 0.05), gaps
+
+
+# -- never silently wrong near omega = 0 (issue 26) -------------------------------------
+PENDULUM_HALF_PERIOD = 1.1839209737881187    # 2 K(1/2)/sqrt(9.81), K from mpmath
+
+
+def test_mpmath_half_period():
+    import mpmath as mp
+    with mp.workdps(30):
+        assert abs(2 * mp.ellipk(0.5) / mp.sqrt(mp.mpf("9.81")) - PENDULUM_HALF_PERIOD) < 1e-15
+
+
+@pytest.mark.parametrize("n", [101, 1001, 100001])
+def test_a_grid_ending_at_a_turning_point_gives_the_right_time(n):
+    """A 1 m pendulum from rest at the horizontal, over phi = pi .. 2 pi: it ends at
+    rest at the other horizontal, where 1/omega is singular as at the start.  The cubic
+    rule alone gave 87563 s, 21788 s, 28 s; now the time on the interpolants (the end's
+    inverse square root taken smoothly), with a warning that the grid does not resolve
+    1/omega there."""
+    phi = np.linspace(np.pi, 2 * np.pi, n)
+    J, M = np.ones(n), -9.81 * np.cos(phi)
+    with pytest.warns(sarkp.dynamics.MotionWarning, match="close to zero"):
+        r = motion(phi, J, M)
+    assert abs(r.t[-1] - PENDULUM_HALF_PERIOD) < 1e-7
+    # t(phi) on the way, from the closed form t = int dphi/sqrt(2 g (-sin phi))
+    import mpmath as mp
+    k = n // 3
+    ref = mp.quad(lambda x: 1 / mp.sqrt(-2 * 9.81 * mp.sin(x)), [mp.pi, phi[k]])
+    assert abs(r.t[k] - float(ref)) < 1e-8
+
+
+def test_a_stop_between_grid_points_is_refused():
+    """J = 1, M = phi - 1.2: E = e + (phi - 1.2)^2/2 with e = -1e-3 < 0, so the crank
+    stops at 1.2 - 0.0447; on the grid 0.85, 0.95, ..., 1.65 the energy is positive at
+    every point (E(1.15) = E(1.25) = 2.5e-4) and zero between 1.15 and 1.25: a refusal
+    (the old rule gave a time, silently)."""
+    e = -1e-3
+    phi = np.linspace(0.85, 1.65, 9)
+    E = e + (phi - 1.2) ** 2 / 2
+    assert np.all(E > 0)
+    with pytest.raises(sarkp.RequirementError, match="between phi\\[3\\]"):
+        motion(phi, np.ones(9), phi - 1.2, omega0=math.sqrt(2 * E[0]))
+
+
+@settings(max_examples=30)
+@given(a=st.floats(1.0, 3.0), b=st.floats(-0.9, 0.9), c=st.floats(0.0, 6.3),
+       m0=st.floats(-3.0, 3.0), m1=st.floats(0.0, 5.0), f=st.floats(0.0, 6.3),
+       w0=st.floats(0.0, 3.0), span=st.floats(0.5, 6.0), n=st.integers(40, 400),
+       grade=st.floats(0.5, 2.0))
+def test_never_silently_wrong_near_omega_zero(a, b, c, m0, m1, f, w0, span, n, grade):
+    """Random machines (J = a + b cos(phi + c), M = m0 + m1 sin(phi + f)) and graded
+    grids: motion gives t[-1] within 1e-3 of the exact time (mpmath quad of
+    sqrt(J/2E) with the exact energy), or warns that the grid does not resolve 1/omega,
+    or refuses because the crank stops (and then the exact energy does come near zero)."""
+    import warnings
+    import mpmath as mp
+    phi = span * np.linspace(0.0, 1.0, n) ** grade
+    Jf = lambda x: a * (1 + b * np.cos(x + c))                        # noqa: E731
+    Mf = lambda x: m0 + m1 * np.sin(x + f)                            # noqa: E731
+    E0 = 0.5 * Jf(0.0) * w0 * w0
+    Ef = lambda x: E0 + m0 * x - m1 * (np.cos(x + f) - np.cos(f))     # noqa: E731
+    assume(w0 > 0 or Mf(0.0) > 0.05)
+    fine = np.linspace(0.0, span, 20001)
+    emin = Ef(fine).min()
+    with warnings.catch_warnings(record=True) as caught:
+        warnings.simplefilter("always")
+        try:
+            r = motion(phi, Jf(phi), Mf(phi), omega0=w0)
+        except sarkp.RequirementError:
+            assert emin < 0.05 * np.abs(Ef(fine)).max()
+            return
+    warned = any(issubclass(w.category, sarkp.dynamics.MotionWarning) for w in caught)
+    if warned:
+        return
+    assert Ef(fine[1:]).min() > 0                # it did not stop: no silent stop
+    with mp.workdps(30):
+        E = lambda x: (mp.mpf(E0) + m0 * x                              # noqa: E731
+                       - m1 * (mp.cos(x + f) - mp.cos(mp.mpf(f))))
+        J = lambda x: a * (1 + b * mp.cos(x + c))                       # noqa: E731
+        ref = float(mp.quad(lambda x: mp.sqrt(J(x) / (2 * E(x))),
+                            np.linspace(0.0, span, 9).tolist()))
+    assert abs(r.t[-1] - ref) <= 1e-3 * ref, (r.t[-1], ref)

@@ -30,7 +30,7 @@ from .modes import get_mode
 from .results import Result, result_type
 
 __all__ = ["DZKNDV", "DMHVK", "DMHVK_EXACT", "motion", "flywheel", "Motion", "Flywheel",
-           "simulate", "Simulation", "Event"]
+           "MotionWarning", "simulate", "Simulation", "Event"]
 
 _COUNT = range(2, 2**31 - 1)
 
@@ -392,6 +392,72 @@ def _stall_message(who, w):
             f"inertia, e.g. a flywheel from sarkp.flywheel")
 
 
+_GAUSS8 = np.polynomial.legendre.leggauss(8)
+
+
+def _time_on_interpolants(phi, J, M, energy, first):
+    """The time over each interval, the integral of sqrt(J/(2E)) with J the cubic
+    through the interval's 4-point stencil and E the energy with M's cubic integrated
+    exactly, by adaptive Gauss-Legendre (8 points, halving) in the variable v with
+    u = 3v^2 - 2v^3 (u the interval's fraction), whose du/dv vanishes at both ends: an
+    inverse square root at either end (a start from rest, a turning point at the end)
+    becomes smooth, and a dip of omega between grid points is resolved.
+
+    Returns (steps, where): steps (n-1,) and the first interval where the interpolated
+    energy reaches zero (the crank stops there), or None."""
+    n = len(phi)
+    h = np.diff(phi)
+    st = first[:, None] + np.arange(4)
+    d = (phi[st] - phi[:-1, None]) / h[:, None]                  # stencil offsets in u
+    V = d[:, :, None] ** np.arange(4)
+    cJ = np.linalg.solve(V, J[st][..., None])[..., 0]            # cubics in u
+    cM = np.linalg.solve(V, M[st][..., None])[..., 0]
+    cE = np.concatenate((energy[:-1, None], h[:, None] * cM / np.arange(1, 5)), axis=1)
+    x, wg = _GAUSS8
+    xg, wg = 0.5 * (x + 1.0), 0.5 * wg
+
+    def piece(k, a, b):
+        """Gauss on [a, b] of v for the intervals k; (value, the least energy seen)."""
+        v = a[:, None] + (b - a)[:, None] * xg
+        u = v * v * (3.0 - 2.0 * v)
+        du = 6.0 * v * (1.0 - v)
+        jj = np.polynomial.polynomial.polyval(u.T, cJ[k].T, tensor=False).T
+        ee = np.polynomial.polynomial.polyval(u.T, cE[k].T, tensor=False).T
+        f = np.sqrt(np.maximum(jj, 0.0) / (2.0 * np.maximum(ee, 1e-300))) * du
+        return (b - a) * (f @ wg), ee.min(axis=1)
+
+    k = np.arange(n - 1)
+    a, b = np.zeros(n - 1), np.ones(n - 1)
+    whole, emin = piece(k, a, b)
+    total = np.zeros(n - 1)
+    low = np.full(n - 1, np.inf)
+    np.minimum.at(low, k, emin)
+    for _ in range(60):
+        if k.size == 0:
+            break
+        mid = 0.5 * (a + b)
+        left, e1 = piece(k, a, mid)
+        right, e2 = piece(k, mid, b)
+        np.minimum.at(low, k, np.minimum(e1, e2))
+        both = left + right
+        done = np.abs(both - whole) <= 1e-12 * np.abs(both) + 1e-300
+        done |= (low[k] <= 0.0) | (b - a < 1e-9) | (k.size > 64 * n)
+        np.add.at(total, k[done], both[done])
+        keep = ~done
+        k = np.concatenate((k[keep], k[keep]))
+        a, b = np.concatenate((a[keep], mid[keep])), np.concatenate((mid[keep], b[keep]))
+        whole = np.concatenate((left[keep], right[keep]))
+    else:
+        np.add.at(total, k, whole)
+    stops = np.flatnonzero(low <= 0.0)
+    return h * total, (int(stops[0]) if stops.size else None)
+
+
+class MotionWarning(UserWarning):
+    """motion: omega comes so close to zero between grid points that the grid does not
+    resolve it; t is computed on the interpolants instead (see the message)."""
+
+
 def motion(phi, J, M, *, omega0=0.0, t0=0.0, omega_mean=None, on_error="raise"):
     """Law of motion of the crank: omega(phi) and t(phi) from the energy equation.
 
@@ -530,6 +596,35 @@ def _motion_law(phi, J, M, omega0, t0, omega_mean, on_error):
     else:
         fs, ws = _cubic_weights(p)
         t[:stop] = t0 + _cumulative(fs, ws, 1.0 / omega[:stop])
+    # the check: the time again on the interpolants of J and the energy, adaptively (a
+    # turning point at the end, a dip of omega between grid points); where the two
+    # differ the grid does not resolve omega: that time is taken, with a warning, and an
+    # energy reaching zero between grid points is a stop
+    steps, where = _time_on_interpolants(p, Jp, M[:stop], Ep, _stencils(stop))
+    rule = np.diff(t[:stop])
+    if where is not None:
+        if on_error == "raise":
+            raise RequirementError(
+                f"{who}: the crank comes to rest between phi[{where}] = "
+                f"{float(phi[where])!r} and phi[{where + 1}] = {float(phi[where + 1])!r} "
+                f"(the interpolated kinetic energy reaches zero between these grid "
+                f"points: a turning point); Mechanism.simulate follows the motion on")
+        omega[where + 1:] = np.nan
+        t[where + 1:] = np.nan
+        return _motion(phi, omega, t, e0, 0.0, Status.REQUIREMENT)
+    off = np.abs(rule - steps) > 1e-4 * np.abs(steps)
+    if off.any():
+        k = int(np.argmax(np.abs(rule - steps)))
+        new = t0 + np.concatenate(([0.0], np.cumsum(steps)))
+        import warnings
+        warnings.warn(MotionWarning(
+            f"{who}: omega comes close to zero near phi = {float(phi[k])!r} (omega = "
+            f"{float(min(omega[k], omega[k + 1]))!r} at the grid points there) and the "
+            f"grid does not resolve 1/omega: t is integrated on the interpolated J and "
+            f"energy instead (t[-1] = {float(new[-1])!r} s; the cubic rule gave "
+            f"{float(t[stop - 1])!r} s); refine the grid there, or use "
+            f"Mechanism.simulate"), stacklevel=3)
+        t[:stop] = new
     return _motion(phi, omega, t, e0, 0.0, status)
 
 
