@@ -386,6 +386,133 @@ def _steady_energy(a, j, w):
     return 0.5 * (lo + hi)
 
 
+class _Cycle:
+    """The interpolants of one cycle: on interval k (u its fraction, 0..1) the work
+    a(u) = asum[k] + h_k * integral of (M's cubic + mc) and J's cubic, each through the
+    interval's 4-point stencil.  omega's extremes between grid points are the extremes
+    of q = (E0 + a)/(J + jf) (omega^2/2), where q' = 0: a polynomial of degree 6."""
+
+    def __init__(self, phi, J, M, asum, mc):
+        P = np.polynomial.polynomial
+        n = len(phi)
+        first = _stencils(n)
+        h = np.diff(phi)
+        st = first[:, None] + np.arange(4)
+        d = (phi[st] - phi[:-1, None]) / h[:, None]
+        V = d[:, :, None] ** np.arange(4)
+        self.cJ = np.linalg.solve(V, J[st][..., None])[..., 0]
+        cM = np.linalg.solve(V, M[st][..., None])[..., 0]
+        cM[:, 0] += mc
+        self.cA = np.concatenate((asum[:-1, None], h[:, None] * cM / np.arange(1, 5)),
+                                 axis=1)
+        self.n, self.P = n, P
+
+    def extreme(self, k, e0, jf, sign):
+        """The largest (sign +1) or least (-1) q on the intervals next to grid point k:
+        (q, a, j) there."""
+        P = self.P
+        ivs = {max(k - 1, 0), min(k, self.n - 2)}
+        if k in (0, self.n - 1):                    # the cycle's ends are one point
+            ivs = {0, self.n - 2}
+        best = None
+        for i in ivs:
+            pa = self.cA[i].copy()
+            pa[0] += e0
+            pj = self.cJ[i].copy()
+            pj[0] += jf
+            pa, pj = pa / np.abs(pa).max(), pj / np.abs(pj).max()      # no overflow
+            num = P.polysub(P.polymul(P.polyder(pa), pj), P.polymul(pa, P.polyder(pj)))
+            roots = P.polyroots(num) if np.any(num[1:]) else np.array([])
+            us = [0.0, 1.0] + [float(r.real) for r in roots
+                               if abs(r.imag) <= 1e-9 and 0.0 <= r.real <= 1.0]
+            for u in us:
+                av = float(P.polyval(u, self.cA[i]))
+                jv = float(P.polyval(u, self.cJ[i]))
+                q = (e0 + av) / (jv + jf)
+                if best is None or sign * q > sign * best[0]:
+                    best = (q, av, jv)
+        return best
+
+
+def _continuous_energy(cyc, a, j, w, e0, jf=0.0):
+    """E0 with (max + min)/2 of the interpolated omega = w: the grid's E0 corrected
+    with the extremes located between the grid points (a few passes)."""
+    for _ in range(6):
+        om = _speeds(e0, a, j + jf)
+        k1, k2 = int(om.argmax()), int(om.argmin())
+        _, a1, j1 = cyc.extreme(k1, e0, jf, 1)
+        _, a2, j2 = cyc.extreme(k2, e0, jf, -1)
+        new = _pair_energy(a1, j1 + jf, a2, j2 + jf, w)
+        if new is None:
+            return e0
+        if abs(new - e0) <= 1e-15 * (abs(e0) + abs(a1)):
+            return new
+        e0 = new
+    return e0
+
+
+def _continuous_flywheel(cyc, a, j, w, delta, jf):
+    """The flywheel with omega's extremes between grid points: the closed form of
+    _exact_flywheel at the located extremes, a few passes from the grid's jf."""
+    x, y = w * (1.0 + 0.5 * delta), w * (1.0 - 0.5 * delta)
+    jf0 = jf
+    for _ in range(8):
+        e0 = _steady_energy(a, j + jf, w)
+        if e0 is None:
+            break
+        om = _speeds(e0, a, j + jf)
+        _, a1, j1 = cyc.extreme(int(om.argmax()), e0, jf, 1)
+        _, a2, j2 = cyc.extreme(int(om.argmin()), e0, jf, -1)
+        new = (a1 - a2 - 0.5 * (j1 * x * x - j2 * y * y)) / (delta * w * w)
+        if not np.all(j + new > 0.0):
+            break
+        done = abs(new - jf) <= 1e-14 * (abs(jf) + float(j.max()))
+        jf = new
+        if done:
+            break
+    if abs(_cycle_delta(cyc, a, j, w, jf) - delta) <= 1e-13 * delta:
+        return jf
+    # the extremes moved between passes: bisection on jf (delta falls as jf grows)
+    step = 1e-3 * (abs(jf0) + float(j.max()))
+    lo, hi = jf0 - step, jf0 + step
+    for _ in range(200):
+        if _cycle_delta(cyc, a, j, w, lo) > delta or not np.all(j + lo > 0):
+            break
+        lo -= (hi - lo)
+    for _ in range(200):
+        if _cycle_delta(cyc, a, j, w, hi) < delta:
+            break
+        hi += (hi - lo)
+    if not np.all(j + lo > 0):
+        lo = -float(j.min()) * (1.0 - 1e-12)
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if not lo < mid < hi:
+            break
+        if _cycle_delta(cyc, a, j, w, mid) > delta:
+            lo = mid
+        else:
+            hi = mid
+    return 0.5 * (lo + hi)
+
+
+def _cycle_delta(cyc, a, j, w, jf):
+    """The coefficient of the steady motion with j + jf, extremes located."""
+    e0 = _steady_energy(a, j + jf, w)
+    if e0 is None:
+        return math.inf
+    e0 = _continuous_energy(cyc, a, j, w, e0, jf)
+    hi, lo = _cycle_extremes(cyc, a, j, e0, jf)
+    return (hi - lo) / w
+
+
+def _cycle_extremes(cyc, a, j, e0, jf=0.0):
+    om = _speeds(e0, a, j + jf)
+    hi = cyc.extreme(int(om.argmax()), e0, jf, 1)[0]
+    lo = cyc.extreme(int(om.argmin()), e0, jf, -1)[0]
+    return math.sqrt(max(2.0 * hi, 0.0)), math.sqrt(max(2.0 * lo, 0.0))
+
+
 def _stall_message(who, w):
     return (f"{who}: no steady motion with mean speed omega_mean = {w!r} rad/s has real "
             f"speeds: the kinetic energy would go negative (the machine stalls); add "
@@ -550,6 +677,13 @@ def _motion_law(phi, J, M, omega0, t0, omega_mean, on_error):
         mc = -A[-1] / (phi[-1] - phi[0])
         asum = A + mc * (phi - phi[0])
         e0 = _steady_energy(asum, J, wm)
+        cyc = None
+        if e0 is not None:
+            try:
+                cyc = _Cycle(phi, J, M, asum, mc)
+                e0 = _continuous_energy(cyc, asum, J, wm, e0)
+            except (np.linalg.LinAlgError, ValueError, FloatingPointError):
+                cyc = None                             # out of range: the grid's extremes
         if e0 is None:
             if on_error == "raise":
                 raise RequirementError(_stall_message(who, wm))
@@ -557,7 +691,11 @@ def _motion_law(phi, J, M, omega0, t0, omega_mean, on_error):
             return _motion(phi, nan, nan.copy(), math.nan, mc, Status.REQUIREMENT)
         omega = _speeds(e0, asum, J)
         t = t0 + _cumulative(first, w, 1.0 / omega)
-        return _motion(phi, omega, t, e0, mc)
+        if cyc is None:
+            return _motion(phi, omega, t, e0, mc)
+        hi, lo = _cycle_extremes(cyc, asum, J, e0)
+        return Motion(phi, omega, t, float(e0), float(mc), 0.5 * (hi + lo),
+                      (hi - lo) / (0.5 * (hi + lo)), Status.OK)
     if not omega0 >= 0.0:
         raise ValueError(f"{who}: omega0 = {omega0!r} must be >= 0 (the crank turns "
                          f"towards increasing phi)")
@@ -768,6 +906,11 @@ def _flywheel(phi, J, M, delta, omega_mean, J_constant):
     mc = -A[-1] / (phi[-1] - phi[0])
     asum = A + mc * (phi - phi[0])
     jf, _ = _exact_flywheel(asum, J, wm, delta)
+    if math.isfinite(jf) and np.isfinite(asum).all():
+        try:
+            jf = _continuous_flywheel(_Cycle(phi, J, M, asum, mc), asum, J, wm, delta, jf)
+        except (np.linalg.LinAlgError, ValueError, FloatingPointError):
+            pass                                       # out of range: the grid's extremes
     mo = motion(phi, J + jf, M, omega_mean=wm)
     return Flywheel(float(jf), _merkalov(asum, J, wm, delta, jc), mo.delta, mo.phi,
                     mo.omega, mo.t)
