@@ -185,3 +185,14 @@ def test_a_start_where_the_mechanism_does_not_assemble():
     m.mass("A", "B", mass=1.0)
     with pytest.raises(ValueError, match="phi0"):
         m.simulate([0.0, 1.0], phi0=math.pi, gravity=G)
+
+
+def test_readme_motion_in_time_example(capsys):
+    """The README's "Motion in time" example runs and prints what the README shows."""
+    import re
+    text = (Path(__file__).resolve().parents[1] / "README.md").read_text(encoding="utf-8")
+    section = text[text.index("## Motion in time"):]
+    code = re.search(r"```python\n(.*?)```", section, re.S).group(1)
+    shown = re.search(r"prints\n\n```\n(.*?)```", section, re.S).group(1)
+    exec(compile(code, "README.md", "exec"), {})
+    assert capsys.readouterr().out == shown
