@@ -18,7 +18,7 @@ branches set from the sign of sin(phi), which scipy cannot find by itself); and
 cubic spline; pendulum: the half period t(2 pi) from the grid pi .. 2 pi, whose end is a
 turning point).
 
-CPU time: time.process_time, best of REPEAT runs, the methods of one problem
+CPU time: time.process_time, best of REPEAT runs (one for the N-four-bar), the methods of one problem
 interleaved in one process.  Writes results/work_precision.csv and .png.  Run from
 outside the source tree: ``python benchmarks/work_precision.py`` (SARKP_BENCH_QUICK=1:
 fewer tolerances, one repeat).
@@ -48,22 +48,22 @@ RTOLS = (1e-4, 1e-6, 1e-8, 1e-10, 1e-12) if not QUICK else (1e-6, 1e-10)
 SCIPY = ("RK45", "DOP853", "Radau", "LSODA")
 
 
-def cpu(fn):
+def cpu(fn, repeat=None):
     best, out = math.inf, None
-    for _ in range(REPEAT):
+    for _ in range(REPEAT if repeat is None else repeat):
         t0 = time.process_time()
         out = fn()
         best = min(best, time.process_time() - t0)
     return best, out
 
 
-def scipy_rhs(m, branch=None):
+def scipy_rhs(m, gravity, branch=None):
     """The right-hand side from one Mechanism.solve per call; branch(phi) -> the
     mechanism to use (the N-four-bar's parallelogram), else m."""
     def rhs(t, y):
         mm = m if branch is None else branch(y[0])
         r = mm.solve(np.array([y[0]]), omega=float(y[1]), epsilon=0.0, need="forces",
-                     gravity=G)
+                     gravity=gravity)
         return [y[1], -r.balancing_moment[0] / r.reduced_inertia[0]]
     return rhs
 
@@ -115,7 +115,7 @@ def squeezer_runs():
                 sec, sim = cpu(lambda: m.simulate([0.0, 0.03], phi0=b0, rtol=rtol))
                 err, nfev = abs(sim.phi[-1] - ref), sim.stats["calls"]
             else:
-                sec, (y, nfev) = cpu(lambda: run_scipy(scipy_rhs(m), (0.0, 0.03),
+                sec, (y, nfev) = cpu(lambda: run_scipy(scipy_rhs(m, 0.0), (0.0, 0.03),
                                                        [b0, 0.0], None, method, rtol))
                 err = abs(y[-1] - ref)
             rows.append(("squeezer", method, rtol, err, sec, nfev))
@@ -140,7 +140,7 @@ def four_bar_runs(N=40):
         down.set_branch(f"A{k}", -1)
     t = np.array([0.0, 5.0, 10.0, 15.0, 20.0])
     ref = four_bar_exact(N, t)
-    rhs = scipy_rhs(m, branch=lambda p: up if math.sin(p) >= 0.0 else down)
+    rhs = scipy_rhs(m, G, branch=lambda p: up if math.sin(p) >= 0.0 else down)
     rows = []
     for rtol in RTOLS:
         for method in ("simulate",) + SCIPY:
@@ -149,13 +149,13 @@ def four_bar_runs(N=40):
             try:
                 if method == "simulate":
                     sec, sim = cpu(lambda: m.simulate(t, phi0=math.pi / 2, omega0=1.0,
-                                                      gravity=G, rtol=rtol))
+                                                      gravity=G, rtol=rtol), 1)
                     y, nfev = sim.phi, sim.stats["calls"]
                 else:
                     with warnings.catch_warnings():
                         warnings.simplefilter("ignore")
                         sec, (y, nfev) = cpu(lambda: run_scipy(
-                            rhs, (0.0, 20.0), [math.pi / 2, 1.0], t, method, rtol))
+                            rhs, (0.0, 20.0), [math.pi / 2, 1.0], t, method, rtol), 1)
                 err = float(np.max(np.abs(y - ref)))
             except Exception as e:                    # a failure is a measured point too
                 print("four-bar", method, rtol, "failed:", str(e)[:100], flush=True)
@@ -179,7 +179,7 @@ def pendulum_runs():
                 sec, sim = cpu(lambda: m.simulate(t, gravity=G, rtol=rtol))
                 y, nfev = sim.phi, sim.stats["calls"]
             else:
-                sec, (y, nfev) = cpu(lambda: run_scipy(scipy_rhs(m), (0.0, 20.0),
+                sec, (y, nfev) = cpu(lambda: run_scipy(scipy_rhs(m, G), (0.0, 20.0),
                                                        [0.0, 0.0], t, method, rtol))
             rows.append(("pendulum", method, rtol, float(np.max(np.abs(y - ref))), sec,
                          nfev))

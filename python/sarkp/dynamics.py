@@ -1441,7 +1441,7 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
             if (a_ > 0.0 and b_ <= 0.0) or (a_ < 0.0 and b_ >= 0.0):
                 tau = _root(lambda u: float(at(u)[1]), taus[i], taus[i + 1], a_)
                 pt, _, et = (float(v) for v in at(tau))
-                tt = tcur + tau * h
+                tt = float(tcur + tau * h)
                 if _stall_check(mach, pt, 0.0, et, wref, _stage_configs(base, crossings, [pt])[0]):
                     events.append(Event("stall", tt, pt, 0.0, 0.0,
                                         "stopped and held at rest by the loads"))
@@ -1473,11 +1473,11 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
                 cr.side = -cr.side
                 names = ", ".join(repr(mach.groups[j][0]) for j in cr.groups)
                 events.append(Event(
-                    "branch", tcur + tau * h, cr.phi, wt_, et,
+                    "branch", float(tcur + tau * h), cr.phi, wt_, et,
                     f"rrr group(s) {names} passed a toggle or change point (the signed "
                     f"side of the new joint went through zero): the continuous motion "
                     f"takes the other geometric branch"))
-                branch_log.append((tcur + tau * h, cfg))
+                branch_log.append((float(tcur + tau * h), cfg))
         base = cfg
         mach.set_config(base)
         # the next step
