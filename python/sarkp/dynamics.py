@@ -1067,14 +1067,21 @@ class _Machine:
         self._warning = SignificanceWarning
         # the groups whose branch follows the motion: (B, A, C) of each rrr group
         self.groups = _groups(self.m)
+        self._cfg = None
 
     def config(self):
-        return tuple(self.m.branch(B) for B, _, _ in self.groups)
+        if self._cfg is None:
+            self._cfg = tuple(self.m.branch(B) for B, _, _ in self.groups)
+        return self._cfg
 
     def set_config(self, cfg):
-        for (B, _, _), b in zip(self.groups, cfg):
-            if self.m.branch(B) != b:
+        now = self.config()
+        if cfg == now:
+            return
+        for (B, _, _), b, was in zip(self.groups, cfg, now):
+            if b != was:
                 self.m.set_branch(B, b)
+        self._cfg = tuple(cfg)
 
     def solve(self, phi, omega, t, need):
         import warnings
@@ -1133,31 +1140,38 @@ class _Machine:
         n = np.size(r.phi)
         if not self.groups:
             return np.zeros((n, 0))
-        idx, xy, frame = self._columns(r)
-        pos = r.positions.reshape(n, -1, 2)
-        P = np.concatenate((pos, np.zeros((n, 1, 2))), axis=1)[:, idx, :]
-        P[:, frame, :] = xy[frame]
-        P = P.reshape(n, -1, 3, 2)
+        P = self._joints(r, "positions")
         b, a, c = P[:, :, 0], P[:, :, 1], P[:, :, 2]
         u, v = c - a, b - a
         lab = np.hypot(v[..., 0], v[..., 1])
         lcb = np.hypot((b - c)[..., 0], (b - c)[..., 1])
         return (u[..., 0] * v[..., 1] - u[..., 1] * v[..., 0]) / (lab * (lab + lcb))
 
+    def _joints(self, r, field):
+        """The groups' (B, A, C) from a result's positions or velocities: (n, G, 3, 2)."""
+        n = np.size(r.phi)
+        idx, xy, frame = self._columns(r)
+        a = getattr(r, field).reshape(n, -1, 2)
+        P = np.concatenate((a, np.zeros((n, 1, 2))), axis=1)[:, idx, :]
+        if field == "positions":
+            P[:, frame, :] = xy[frame]
+        return P.reshape(n, -1, 3, 2)
+
     def side_rate(self, phi, groups):
         """The side of group groups[k] and its derivative with respect to phi at the
         angle phi[k] (the current branches)."""
         r = self.solve(np.asarray(phi, dtype=float), 1.0, 0.0, "velocities")
-        s = np.empty(len(groups))
-        ds = np.empty(len(groups))
-        for k, j in enumerate(groups):
-            B, A, C = self.groups[j]
-            a, b, c = r.position(A)[k], r.position(B)[k], r.position(C)[k]
-            va, vb, vc = r.velocity(A)[k], r.velocity(B)[k], r.velocity(C)[k]
-            u, v, du, dv = c - a, b - a, vc - va, vb - va
-            scale = math.hypot(*v) * (math.hypot(*v) + math.hypot(*(b - c)))
-            s[k] = (u[0] * v[1] - u[1] * v[0]) / scale
-            ds[k] = (du[0] * v[1] - du[1] * v[0] + u[0] * dv[1] - u[1] * dv[0]) / scale
+        rows = np.arange(len(groups))
+        P = self._joints(r, "positions")[rows, groups]             # (n, 3, 2)
+        V = self._joints(r, "velocities")[rows, groups]
+        b, a, c = P[:, 0], P[:, 1], P[:, 2]
+        vb, va, vc = V[:, 0], V[:, 1], V[:, 2]
+        u, v, du, dv = c - a, b - a, vc - va, vb - va
+        lab = np.hypot(v[:, 0], v[:, 1])
+        scale = lab * (lab + np.hypot(*(b - c).T))
+        s = (u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]) / scale
+        ds = (du[:, 0] * v[:, 1] - du[:, 1] * v[:, 0] + u[:, 0] * dv[:, 1]
+              - u[:, 1] * dv[:, 0]) / scale
         return s, ds
 
 
