@@ -1182,6 +1182,7 @@ class _Machine:
 # branches (interpolation error of order (_ZETA)^8).
 _ZETA = 0.02
 _ZONE = 0.75 * _ZETA
+_STRIDE = 0.5
 
 
 class _Crossing:
@@ -1348,6 +1349,10 @@ def simulate(m, t, *, phi0=0.0, omega0=0.0, gravity=0.0, rtol=1e-8,
     except _Failed as e:
         raise ValueError(f"{who}: the mechanism cannot start at phi0 = {phi0!r}: {e}") \
             from None
+    if follow:
+        # steps of looser tolerances can leap past a crossing's warning (a missed
+        # branch change at rtol 1e-4 on the N-four-bar): at most 1e-6 then
+        rtol = min(rtol, 1e-6)
     with np.errstate(all="ignore"):
         return _integrate(mach, t, phi0, omega0, eps0, rtol, follow, max_steps)
 
@@ -1495,12 +1500,18 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
         base = cfg
         mach.set_config(base)
         # the next step
+        y_prev = y
         tcur, y, w, e = t1, y1, w1, float(L1 @ F)
         wref = max(wref, abs(w))
         grow = 0.85 * err ** (-1.0 / s) if err > 0 else 4.0
         hn = h * min(4.0, max(0.2, grow))
         if rho > 0.0:
             hn = min(hn, h * max(0.2, 0.12 / rho))
+        if follow and abs(y1 - y_prev) > _STRIDE:
+            # the crank turns at most _STRIDE per step, so that a group's side seen
+            # falling over the step's last nodes warns of a crossing before a step
+            # reaches it (at loose tolerances steps would otherwise leap past one)
+            hn = min(hn, h * _STRIDE / abs(y1 - y_prev))
         if not follow and mach.groups and parts:
             S = np.abs(mach.sides(parts[-1][1]))
             if S.min() < 1e-4:
@@ -1565,7 +1576,8 @@ def _predict(mach, base, crossings, parts, ph, y1, reach):
             P.append(p)
     if not cand:
         return crossings
-    P = np.array(P)
+    guess = np.array(P)
+    P = guess.copy()
     mach.set_config(base)
     for _ in range(20):
         for _ in range(12):                            # damped: stay where it assembles
@@ -1585,7 +1597,9 @@ def _predict(mach, base, crossings, parts, ph, y1, reach):
     new = list(crossings)
     done = set()
     for i, j in enumerate(cand):
-        if j in done or not (np.isfinite(P[i]) and abs(P[i] - y1) <= 4.0 * reach + _ZETA):
+        if j in done or not (np.isfinite(P[i]) and abs(P[i] - y1) <= 4.0 * reach + _ZETA
+                             and abs(P[i] - y1) <= 1.5 * abs(guess[i] - y1) + _ZETA
+                             and (P[i] - y1) * (guess[i] - y1) > 0.0):
             continue
         together = [cand[k] for k in range(len(cand))
                     if abs(P[k] - P[i]) <= 0.1 * _ZETA and cand[k] not in done]

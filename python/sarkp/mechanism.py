@@ -767,7 +767,9 @@ class Mechanism:
             g (m/s^2) along -y.
         rtol : float
             The error allowed per step, relative to |phi| (at least 1 rad) and to
-            |omega| (at least the largest speed so far); in [1e-14, 0.1].
+            |omega| (at least the largest speed so far); in [1e-14, 0.1].  With RRR
+            groups followed through toggles (branches="continuous") at most 1e-6 is
+            used: looser steps can leap past a crossing's warning.
         branches : {"continuous", "geometric"}
             "continuous": an RRR group passing a toggle or change point takes the
             branch with a continuous velocity (the other geometric one), a "branch"
