@@ -723,7 +723,10 @@ def _motion_law(phi, J, M, omega0, t0, omega_mean, on_error):
     t[0] = t0
     if stop < 4:                                         # too few points for the rule
         return _motion(phi, omega, t, e0, 0.0, status)
-    if M[0] > 0.0:                                       # 1/omega = g/sqrt(s + c)
+    # 1/omega = g/sqrt(s + c): the weight taken exactly while c is not huge against the
+    # grid (M[0] = 2e-308 made c overflow and t NaN or 4e-3 wrong: found by Hypothesis);
+    # for a larger c the weight is smooth and the cubic rule is exact enough
+    if M[0] > 0.0 and e0 / M[0] <= 1e6 * (phi[-1] - phi[0]):
         c = e0 / M[0]
         s = p - p[0]
         g = np.empty(stop)
