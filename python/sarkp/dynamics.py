@@ -27,9 +27,10 @@ from .errors import RangeError, RequirementError, Status
 from . import _wrap_dynamics as _w
 from .library import ST_REQUIREMENT, Check, as_real_array, describe
 from .modes import get_mode
-from .results import result_type
+from .results import Result, result_type
 
-__all__ = ["DZKNDV", "DMHVK", "DMHVK_EXACT", "motion", "flywheel", "Motion", "Flywheel"]
+__all__ = ["DZKNDV", "DMHVK", "DMHVK_EXACT", "motion", "flywheel", "Motion", "Flywheel",
+           "MotionWarning", "simulate", "Simulation", "Event"]
 
 _COUNT = range(2, 2**31 - 1)
 
@@ -385,10 +386,203 @@ def _steady_energy(a, j, w):
     return 0.5 * (lo + hi)
 
 
+class _Cycle:
+    """The interpolants of one cycle: on interval k (u its fraction, 0..1) the work
+    a(u) = asum[k] + h_k * integral of (M's cubic + mc) and J's cubic, each through the
+    interval's 4-point stencil.  omega's extremes between grid points are the extremes
+    of q = (E0 + a)/(J + jf) (omega^2/2), where q' = 0: a polynomial of degree 6."""
+
+    def __init__(self, phi, J, M, asum, mc):
+        P = np.polynomial.polynomial
+        n = len(phi)
+        first = _stencils(n)
+        h = np.diff(phi)
+        st = first[:, None] + np.arange(4)
+        d = (phi[st] - phi[:-1, None]) / h[:, None]
+        V = d[:, :, None] ** np.arange(4)
+        self.cJ = np.linalg.solve(V, J[st][..., None])[..., 0]
+        cM = np.linalg.solve(V, M[st][..., None])[..., 0]
+        cM[:, 0] += mc
+        self.cA = np.concatenate((asum[:-1, None], h[:, None] * cM / np.arange(1, 5)),
+                                 axis=1)
+        self.n, self.P = n, P
+
+    def extreme(self, k, e0, jf, sign):
+        """The largest (sign +1) or least (-1) q on the intervals next to grid point k:
+        (q, a, j) there."""
+        P = self.P
+        ivs = {max(k - 1, 0), min(k, self.n - 2)}
+        if k in (0, self.n - 1):                    # the cycle's ends are one point
+            ivs = {0, self.n - 2}
+        best = None
+        for i in ivs:
+            pa = self.cA[i].copy()
+            pa[0] += e0
+            pj = self.cJ[i].copy()
+            pj[0] += jf
+            pa, pj = pa / np.abs(pa).max(), pj / np.abs(pj).max()      # no overflow
+            num = P.polysub(P.polymul(P.polyder(pa), pj), P.polymul(pa, P.polyder(pj)))
+            roots = P.polyroots(num) if np.any(num[1:]) else np.array([])
+            us = [0.0, 1.0] + [float(r.real) for r in roots
+                               if abs(r.imag) <= 1e-9 and 0.0 <= r.real <= 1.0]
+            for u in us:
+                av = float(P.polyval(u, self.cA[i]))
+                jv = float(P.polyval(u, self.cJ[i]))
+                q = (e0 + av) / (jv + jf)
+                if best is None or sign * q > sign * best[0]:
+                    best = (q, av, jv)
+        return best
+
+
+def _continuous_energy(cyc, a, j, w, e0, jf=0.0):
+    """E0 with (max + min)/2 of the interpolated omega = w: the grid's E0 corrected
+    with the extremes located between the grid points (a few passes)."""
+    for _ in range(6):
+        om = _speeds(e0, a, j + jf)
+        k1, k2 = int(om.argmax()), int(om.argmin())
+        _, a1, j1 = cyc.extreme(k1, e0, jf, 1)
+        _, a2, j2 = cyc.extreme(k2, e0, jf, -1)
+        new = _pair_energy(a1, j1 + jf, a2, j2 + jf, w)
+        if new is None:
+            return e0
+        if abs(new - e0) <= 1e-15 * (abs(e0) + abs(a1)):
+            return new
+        e0 = new
+    return e0
+
+
+def _continuous_flywheel(cyc, a, j, w, delta, jf):
+    """The flywheel with omega's extremes between grid points: the closed form of
+    _exact_flywheel at the located extremes, a few passes from the grid's jf."""
+    x, y = w * (1.0 + 0.5 * delta), w * (1.0 - 0.5 * delta)
+    jf0 = jf
+    for _ in range(8):
+        e0 = _steady_energy(a, j + jf, w)
+        if e0 is None:
+            break
+        om = _speeds(e0, a, j + jf)
+        _, a1, j1 = cyc.extreme(int(om.argmax()), e0, jf, 1)
+        _, a2, j2 = cyc.extreme(int(om.argmin()), e0, jf, -1)
+        new = (a1 - a2 - 0.5 * (j1 * x * x - j2 * y * y)) / (delta * w * w)
+        if not np.all(j + new > 0.0):
+            break
+        done = abs(new - jf) <= 1e-14 * (abs(jf) + float(j.max()))
+        jf = new
+        if done:
+            break
+    if abs(_cycle_delta(cyc, a, j, w, jf) - delta) <= 1e-13 * delta:
+        return jf
+    # the extremes moved between passes: bisection on jf (delta falls as jf grows)
+    step = 1e-3 * (abs(jf0) + float(j.max()))
+    lo, hi = jf0 - step, jf0 + step
+    for _ in range(200):
+        if _cycle_delta(cyc, a, j, w, lo) > delta or not np.all(j + lo > 0):
+            break
+        lo -= (hi - lo)
+    for _ in range(200):
+        if _cycle_delta(cyc, a, j, w, hi) < delta:
+            break
+        hi += (hi - lo)
+    if not np.all(j + lo > 0):
+        lo = -float(j.min()) * (1.0 - 1e-12)
+    for _ in range(200):
+        mid = 0.5 * (lo + hi)
+        if not lo < mid < hi:
+            break
+        if _cycle_delta(cyc, a, j, w, mid) > delta:
+            lo = mid
+        else:
+            hi = mid
+    return 0.5 * (lo + hi)
+
+
+def _cycle_delta(cyc, a, j, w, jf):
+    """The coefficient of the steady motion with j + jf, extremes located."""
+    e0 = _steady_energy(a, j + jf, w)
+    if e0 is None:
+        return math.inf
+    e0 = _continuous_energy(cyc, a, j, w, e0, jf)
+    hi, lo = _cycle_extremes(cyc, a, j, e0, jf)
+    return (hi - lo) / w
+
+
+def _cycle_extremes(cyc, a, j, e0, jf=0.0):
+    om = _speeds(e0, a, j + jf)
+    hi = cyc.extreme(int(om.argmax()), e0, jf, 1)[0]
+    lo = cyc.extreme(int(om.argmin()), e0, jf, -1)[0]
+    return math.sqrt(max(2.0 * hi, 0.0)), math.sqrt(max(2.0 * lo, 0.0))
+
+
 def _stall_message(who, w):
     return (f"{who}: no steady motion with mean speed omega_mean = {w!r} rad/s has real "
             f"speeds: the kinetic energy would go negative (the machine stalls); add "
             f"inertia, e.g. a flywheel from sarkp.flywheel")
+
+
+_GAUSS8 = np.polynomial.legendre.leggauss(8)
+
+
+def _time_on_interpolants(phi, J, M, energy, first):
+    """The time over each interval, the integral of sqrt(J/(2E)) with J the cubic
+    through the interval's 4-point stencil and E the energy with M's cubic integrated
+    exactly, by adaptive Gauss-Legendre (8 points, halving) in the variable v with
+    u = 3v^2 - 2v^3 (u the interval's fraction), whose du/dv vanishes at both ends: an
+    inverse square root at either end (a start from rest, a turning point at the end)
+    becomes smooth, and a dip of omega between grid points is resolved.
+
+    Returns (steps, where): steps (n-1,) and the first interval where the interpolated
+    energy reaches zero (the crank stops there), or None."""
+    n = len(phi)
+    h = np.diff(phi)
+    st = first[:, None] + np.arange(4)
+    d = (phi[st] - phi[:-1, None]) / h[:, None]                  # stencil offsets in u
+    V = d[:, :, None] ** np.arange(4)
+    cJ = np.linalg.solve(V, J[st][..., None])[..., 0]            # cubics in u
+    cM = np.linalg.solve(V, M[st][..., None])[..., 0]
+    cE = np.concatenate((energy[:-1, None], h[:, None] * cM / np.arange(1, 5)), axis=1)
+    x, wg = _GAUSS8
+    xg, wg = 0.5 * (x + 1.0), 0.5 * wg
+
+    def piece(k, a, b):
+        """Gauss on [a, b] of v for the intervals k; (value, the least energy seen)."""
+        v = a[:, None] + (b - a)[:, None] * xg
+        u = v * v * (3.0 - 2.0 * v)
+        du = 6.0 * v * (1.0 - v)
+        jj = np.polynomial.polynomial.polyval(u.T, cJ[k].T, tensor=False).T
+        ee = np.polynomial.polynomial.polyval(u.T, cE[k].T, tensor=False).T
+        f = np.sqrt(np.maximum(jj, 0.0) / (2.0 * np.maximum(ee, 1e-300))) * du
+        return (b - a) * (f @ wg), ee.min(axis=1)
+
+    k = np.arange(n - 1)
+    a, b = np.zeros(n - 1), np.ones(n - 1)
+    whole, emin = piece(k, a, b)
+    total = np.zeros(n - 1)
+    low = np.full(n - 1, np.inf)
+    np.minimum.at(low, k, emin)
+    for _ in range(60):
+        if k.size == 0:
+            break
+        mid = 0.5 * (a + b)
+        left, e1 = piece(k, a, mid)
+        right, e2 = piece(k, mid, b)
+        np.minimum.at(low, k, np.minimum(e1, e2))
+        both = left + right
+        done = np.abs(both - whole) <= 1e-12 * np.abs(both) + 1e-300
+        done |= (low[k] <= 0.0) | (b - a < 1e-9) | (k.size > 64 * n)
+        np.add.at(total, k[done], both[done])
+        keep = ~done
+        k = np.concatenate((k[keep], k[keep]))
+        a, b = np.concatenate((a[keep], mid[keep])), np.concatenate((mid[keep], b[keep]))
+        whole = np.concatenate((left[keep], right[keep]))
+    else:
+        np.add.at(total, k, whole)
+    stops = np.flatnonzero(low <= 0.0)
+    return h * total, (int(stops[0]) if stops.size else None)
+
+
+class MotionWarning(UserWarning):
+    """motion: omega comes so close to zero between grid points that the grid does not
+    resolve it; t is computed on the interpolants instead (see the message)."""
 
 
 def motion(phi, J, M, *, omega0=0.0, t0=0.0, omega_mean=None, on_error="raise"):
@@ -483,6 +677,13 @@ def _motion_law(phi, J, M, omega0, t0, omega_mean, on_error):
         mc = -A[-1] / (phi[-1] - phi[0])
         asum = A + mc * (phi - phi[0])
         e0 = _steady_energy(asum, J, wm)
+        cyc = None
+        if e0 is not None:
+            try:
+                cyc = _Cycle(phi, J, M, asum, mc)
+                e0 = _continuous_energy(cyc, asum, J, wm, e0)
+            except (np.linalg.LinAlgError, ValueError, FloatingPointError):
+                cyc = None                             # out of range: the grid's extremes
         if e0 is None:
             if on_error == "raise":
                 raise RequirementError(_stall_message(who, wm))
@@ -490,7 +691,11 @@ def _motion_law(phi, J, M, omega0, t0, omega_mean, on_error):
             return _motion(phi, nan, nan.copy(), math.nan, mc, Status.REQUIREMENT)
         omega = _speeds(e0, asum, J)
         t = t0 + _cumulative(first, w, 1.0 / omega)
-        return _motion(phi, omega, t, e0, mc)
+        if cyc is None:
+            return _motion(phi, omega, t, e0, mc)
+        hi, lo = _cycle_extremes(cyc, asum, J, e0)
+        return Motion(phi, omega, t, float(e0), float(mc), 0.5 * (hi + lo),
+                      (hi - lo) / (0.5 * (hi + lo)), Status.OK)
     if not omega0 >= 0.0:
         raise ValueError(f"{who}: omega0 = {omega0!r} must be >= 0 (the crank turns "
                          f"towards increasing phi)")
@@ -518,7 +723,10 @@ def _motion_law(phi, J, M, omega0, t0, omega_mean, on_error):
     t[0] = t0
     if stop < 4:                                         # too few points for the rule
         return _motion(phi, omega, t, e0, 0.0, status)
-    if M[0] > 0.0:                                       # 1/omega = g/sqrt(s + c)
+    # 1/omega = g/sqrt(s + c): the weight taken exactly while c is not huge against the
+    # grid (M[0] = 2e-308 made c overflow and t NaN or 4e-3 wrong: found by Hypothesis);
+    # for a larger c the weight is smooth and the cubic rule is exact enough
+    if M[0] > 0.0 and e0 / M[0] <= 1e6 * (phi[-1] - phi[0]):
         c = e0 / M[0]
         s = p - p[0]
         g = np.empty(stop)
@@ -529,6 +737,39 @@ def _motion_law(phi, J, M, omega0, t0, omega_mean, on_error):
     else:
         fs, ws = _cubic_weights(p)
         t[:stop] = t0 + _cumulative(fs, ws, 1.0 / omega[:stop])
+    # the check: the time again on the interpolants of J and the energy, adaptively (a
+    # turning point at the end, a dip of omega between grid points); where the two
+    # differ the grid does not resolve omega: that time is taken, with a warning, and an
+    # energy reaching zero between grid points is a stop
+    steps, where = _time_on_interpolants(p, Jp, M[:stop], Ep, _stencils(stop))
+    rule = np.diff(t[:stop])
+    if where is not None:
+        if on_error == "raise":
+            raise RequirementError(
+                f"{who}: the crank comes to rest between phi[{where}] = "
+                f"{float(phi[where])!r} and phi[{where + 1}] = {float(phi[where + 1])!r} "
+                f"(the interpolated kinetic energy reaches zero between these grid "
+                f"points: a turning point); Mechanism.simulate follows the motion on")
+        omega[where + 1:] = np.nan
+        t[where + 1:] = np.nan
+        return _motion(phi, omega, t, e0, 0.0, Status.REQUIREMENT)
+    # where omega comes near zero (below a fifth of its largest value on the grid) the
+    # cubic rule on 1/omega is not to be trusted when the two differ
+    wk = omega[:stop]
+    slow = np.minimum(wk[:-1], wk[1:]) < 0.2 * float(np.max(wk))
+    off = slow & (np.abs(rule - steps) > 1e-4 * np.abs(steps))
+    if off.any():
+        k = int(np.argmax(np.where(off, np.abs(rule - steps), -1.0)))
+        new = t0 + np.concatenate(([0.0], np.cumsum(steps)))
+        import warnings
+        warnings.warn(MotionWarning(
+            f"{who}: omega comes close to zero near phi = {float(phi[k])!r} (omega = "
+            f"{float(min(omega[k], omega[k + 1]))!r} at the grid points there) and the "
+            f"grid does not resolve 1/omega: t is integrated on the interpolated J and "
+            f"energy instead (t[-1] = {float(new[-1])!r} s; the cubic rule gave "
+            f"{float(t[stop - 1])!r} s); refine the grid there, or use "
+            f"Mechanism.simulate"), stacklevel=3)
+        t[:stop] = new
     return _motion(phi, omega, t, e0, 0.0, status)
 
 
@@ -672,6 +913,11 @@ def _flywheel(phi, J, M, delta, omega_mean, J_constant):
     mc = -A[-1] / (phi[-1] - phi[0])
     asum = A + mc * (phi - phi[0])
     jf, _ = _exact_flywheel(asum, J, wm, delta)
+    if math.isfinite(jf) and np.isfinite(asum).all():
+        try:
+            jf = _continuous_flywheel(_Cycle(phi, J, M, asum, mc), asum, J, wm, delta, jf)
+        except (np.linalg.LinAlgError, ValueError, FloatingPointError):
+            pass                                       # out of range: the grid's extremes
     mo = motion(phi, J + jf, M, omega_mean=wm)
     return Flywheel(float(jf), _merkalov(asum, J, wm, delta, jc), mo.delta, mo.phi,
                     mo.omega, mo.t)
@@ -749,3 +995,716 @@ def DMHVK_EXACT(M, ZM, W1, ISC, MPR, ISPR, DELTA):
         raise RangeError(f"DMHVK_EXACT: no double IMHVK gives DELTA = {delta!r} (it gives "
                          f"{realized!r}): ISC + ISPR + IMHVK is lost in the rounding")
     return _DMHVK_EXACT(float(imh), imerk, realized)
+
+
+# -- motion in time ------------------------------------------------------------------------
+#
+# The crank's equation of motion J(phi) phi'' + J'(phi) phi'^2/2 = M_red(phi, phi', t) is
+# integrated as the first-order system (phi, omega)' = (omega, epsilon).  One solve of the
+# mechanism at (phi, omega) with epsilon = 0 gives the balancing moment, the moment that
+# would hold the crank at epsilon = 0: M_bal = J'(phi) omega^2/2 - M_red, so that the free
+# motion has epsilon = -M_bal/J.  The solve takes every stage of a step at once: the
+# method is Gauss-Legendre collocation (s nodes, order 2s at the step's end, stage order
+# s inside it), its equations solved by fixed-point (Picard) iteration, each sweep one
+# vectorised call of the mechanism over the s nodes.  The collocation polynomial is the
+# dense output; the error estimate is the size of its highest Legendre mode (the stage
+# order's error, so that the dense output too is held to rtol).
+
+_NODES = 8
+
+
+def _collocation(s):
+    """Gauss-Legendre nodes c and weights b on [0, 1], the barycentric weights of the
+    nodes, and the weights of the highest Legendre mode of F on [0, 1]."""
+    x, w = np.polynomial.legendre.leggauss(s)
+    c, b = 0.5 * (x + 1.0), 0.5 * w
+    bary = np.array([1.0 / np.prod(c[j] - np.delete(c, j)) for j in range(s)])
+    p = np.polynomial.legendre.legval(x, np.eye(s)[s - 1])
+    top = (2 * s - 1) * b * p
+    return c, b, bary, top
+
+
+def _lagrange(tau, c, bary):
+    """L_j(tau): the Lagrange basis of the nodes c at the points tau, (len(tau), s)
+    (the barycentric formula; exact at the nodes)."""
+    tau = np.asarray(tau, dtype=float).reshape(-1)
+    d = tau[:, None] - c[None, :]
+    hit = d == 0.0
+    d[hit] = 1.0
+    q = bary / d
+    L = q / q.sum(axis=1, keepdims=True)
+    rows = hit.any(axis=1)
+    if rows.any():
+        L[rows] = hit[rows].astype(float)
+    return L
+
+
+def _integrals(tau, c, b, bary):
+    """(L, P1, P2) at the points tau: L_j(tau), the integral of L_j over [0, tau] and of
+    (tau - u) L_j(u) -- by the s-point Gauss rule on [0, tau], exact for these degrees."""
+    tau = np.asarray(tau, dtype=float).reshape(-1)
+    u = tau[:, None] * c[None, :]                               # (m, s) Gauss points
+    Lu = _lagrange(u.reshape(-1), c, bary).reshape(len(tau), len(c), len(c))
+    wt = tau[:, None] * b[None, :]
+    P1 = np.einsum("mq,mqj->mj", wt, Lu)
+    P2 = np.einsum("mq,mqj->mj", wt * (tau[:, None] - u), Lu)
+    return _lagrange(tau, c, bary), P1, P2
+
+
+class _Failed(Exception):
+    """A mechanism evaluation failed (a stage beyond the reach of a group)."""
+
+
+class _Machine:
+    """The mechanism's acceleration epsilon(phi, omega, t) in one call for many states,
+    with the branches the continuous motion has reached."""
+
+    def __init__(self, m, gravity):
+        import copy
+        from .errors import SarkpError, SignificanceWarning
+        self.m = copy.deepcopy(m)
+        self.gravity = gravity
+        self.calls = 0
+        self.points = 0
+        self._errors = (SarkpError, FloatingPointError)
+        self._warning = SignificanceWarning
+        # the groups whose branch follows the motion: (B, A, C) of each rrr group
+        self.groups = _groups(self.m)
+        self._cfg = None
+
+    def config(self):
+        if self._cfg is None:
+            self._cfg = tuple(self.m.branch(B) for B, _, _ in self.groups)
+        return self._cfg
+
+    def set_config(self, cfg):
+        now = self.config()
+        if cfg == now:
+            return
+        for (B, _, _), b, was in zip(self.groups, cfg, now):
+            if b != was:
+                self.m.set_branch(B, b)
+        self._cfg = tuple(cfg)
+
+    def solve(self, phi, omega, t, need):
+        import warnings
+        self.calls += 1
+        self.points += np.size(phi)
+        with warnings.catch_warnings():
+            warnings.simplefilter("ignore", self._warning)
+            try:
+                return self.m.solve(phi, omega=omega, epsilon=0.0, need=need,
+                                    gravity=self.gravity)
+            except self._errors as e:
+                raise _Failed(str(e)) from e
+
+    def solve_with(self, phi, cfg, need):
+        """The solve at omega = 1, epsilon = 0 with the branches cfg."""
+        self.set_config(cfg)
+        return self.solve(np.asarray(phi, dtype=float), 1.0, 0.0, need)
+
+    def epsilon(self, phi, omega, t, cfgs=None):
+        """epsilon at the states; cfgs: a branch configuration per state (None: the
+        current one).  Returns (epsilon, results by configuration)."""
+        if cfgs is None or len(set(cfgs)) == 1:
+            if cfgs is not None:
+                self.set_config(cfgs[0])
+            r = self.solve(phi, omega, t, "forces")
+            eps = -r.balancing_moment / r.reduced_inertia
+            if not np.isfinite(eps).all():
+                raise _Failed("epsilon is not finite")
+            return eps, [(np.arange(len(phi)), r)]
+        eps = np.empty(len(phi))
+        parts = []
+        for cfg in dict.fromkeys(cfgs):
+            idx = np.array([i for i, c in enumerate(cfgs) if c == cfg])
+            self.set_config(cfg)
+            r = self.solve(phi[idx], omega[idx], t[idx], "forces")
+            eps[idx] = -r.balancing_moment / r.reduced_inertia
+            parts.append((idx, r))
+        if not np.isfinite(eps).all():
+            raise _Failed("epsilon is not finite")
+        return eps, parts
+
+    def _columns(self, r):
+        """Where the groups' joints are in a result's positions (a frame point: its
+        fixed coordinates)."""
+        if getattr(self, "_cols", None) is None:
+            moving, fixed = r.columns
+            nop = r.positions.shape[-2]
+            xy = np.array([fixed.get(nm, (0.0, 0.0)) for g in self.groups for nm in g])
+            idx = np.array([moving.get(nm, nop) for g in self.groups for nm in g])
+            self._cols = (idx, xy, idx == nop)
+        return self._cols
+
+    def sides(self, r):
+        """The signed side of each rrr group (its new joint left of A->C: > 0), scaled
+        to a number of order 1, at every position of the result r."""
+        n = np.size(r.phi)
+        if not self.groups:
+            return np.zeros((n, 0))
+        P = self._joints(r, "positions")
+        b, a, c = P[:, :, 0], P[:, :, 1], P[:, :, 2]
+        u, v = c - a, b - a
+        lab = np.hypot(v[..., 0], v[..., 1])
+        lcb = np.hypot((b - c)[..., 0], (b - c)[..., 1])
+        return (u[..., 0] * v[..., 1] - u[..., 1] * v[..., 0]) / (lab * (lab + lcb))
+
+    def _joints(self, r, field):
+        """The groups' (B, A, C) from a result's positions or velocities: (n, G, 3, 2)."""
+        n = np.size(r.phi)
+        idx, xy, frame = self._columns(r)
+        a = getattr(r, field).reshape(n, -1, 2)
+        P = np.concatenate((a, np.zeros((n, 1, 2))), axis=1)[:, idx, :]
+        if field == "positions":
+            P[:, frame, :] = xy[frame]
+        return P.reshape(n, -1, 3, 2)
+
+    def side_rate(self, phi, groups):
+        """The side of group groups[k] and its derivative with respect to phi at the
+        angle phi[k] (the current branches)."""
+        r = self.solve(np.asarray(phi, dtype=float), 1.0, 0.0, "velocities")
+        rows = np.arange(len(groups))
+        P = self._joints(r, "positions")[rows, groups]             # (n, 3, 2)
+        V = self._joints(r, "velocities")[rows, groups]
+        b, a, c = P[:, 0], P[:, 1], P[:, 2]
+        vb, va, vc = V[:, 0], V[:, 1], V[:, 2]
+        u, v, du, dv = c - a, b - a, vc - va, vb - va
+        lab = np.hypot(v[:, 0], v[:, 1])
+        scale = lab * (lab + np.hypot(*(b - c).T))
+        s = (u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]) / scale
+        ds = (du[:, 0] * v[:, 1] - du[:, 1] * v[:, 0] + u[:, 0] * dv[:, 1]
+              - u[:, 1] * dv[:, 0]) / scale
+        return s, ds
+
+
+# Near a toggle or a change point the group kernels lose digits (positions as eps/d,
+# velocities eps/d^2, accelerations and so J' as eps/d^3, d the distance to it), though
+# the continuous motion is smooth there: within _ZONE of the crossing J, J' and M_red come
+# from the polynomial through 8 samples at phi* +- k _ZETA (k = 1..4), each on its side's
+# branches (interpolation error of order (_ZETA)^8).
+_ZETA = 0.02
+_ZONE = 0.75 * _ZETA
+_STRIDE = 0.5
+
+
+class _Crossing:
+    """A toggle or change point: the groups ``groups`` change branch where phi passes
+    ``phi``; ``side`` is the side the motion is on (+1: phi > it); J, J', M_red near it
+    from the samples (nodes, values)."""
+
+    def __init__(self, phi, side, groups, nodes, values):
+        self.phi, self.side, self.groups = phi, side, groups
+        self.nodes, self.values = nodes, values
+        self.bary = np.array([1.0 / np.prod(x - np.delete(nodes, j))
+                              for j, x in enumerate(nodes)])
+
+    def passed(self, phi):
+        return (phi - self.phi) * self.side < 0.0
+
+    def patch(self, phi):
+        """(J, J', M_red) at the angles phi (interpolated)."""
+        L = _lagrange(phi, self.nodes, self.bary)
+        return (L @ self.values).T
+
+
+def _flip(cfg, groups):
+    cfg = list(cfg)
+    for j in groups:
+        cfg[j] = -cfg[j]
+    return tuple(cfg)
+
+
+def _stage_configs(base, crossings, phis):
+    """The branch configuration at each angle: the base one, flipped for the groups of
+    every crossing the angle lies beyond."""
+    cfgs = []
+    for p in phis:
+        cfg = base
+        for cr in crossings:
+            if cr.passed(p):
+                cfg = _flip(cfg, cr.groups)
+        cfgs.append(cfg)
+    return cfgs
+
+
+def _rhs(mach, base, crossings, ph, om, ts, y):
+    """epsilon at the stages (the step from phi = y), and the direct results [(indices,
+    result)]."""
+    lo, hi = min(y, float(ph.min())) - _ZETA, max(y, float(ph.max())) + _ZETA
+    crossings = [cr for cr in crossings if lo < cr.phi < hi]
+    if not crossings:
+        mach.set_config(base)
+        return mach.epsilon(ph, om, ts)
+    F = np.empty(len(ph))
+    zone = np.zeros(len(ph), dtype=bool)
+    for cr in crossings:
+        near = np.abs(ph - cr.phi) < _ZONE
+        if near.any():
+            J, Jp, M = cr.patch(ph[near])
+            F[near] = (M - 0.5 * Jp * om[near] ** 2) / J
+            zone |= near
+    parts = []
+    idx = np.flatnonzero(~zone)
+    if idx.size:
+        cfgs = _stage_configs(base, crossings, ph[idx])
+        F[idx], sub = mach.epsilon(ph[idx], om[idx], ts[idx], cfgs)
+        parts = [(idx[i], r) for i, r in sub]
+    return F, parts
+
+
+def _crossing(mach, base, groups, rough, side):
+    """The crossing of ``groups`` near ``rough`` (the motion on ``side`` of it): its
+    angle, the root of the polynomial through the groups' signed side at 8 samples, and
+    the samples of J, J', M_red there; None when the mechanism does not assemble."""
+    k = np.arange(1, 5) * _ZETA
+    g0 = groups[0]
+    for _ in range(3):
+        near, far = rough + side * k, rough - side * k
+        try:
+            rn = mach.solve_with(near, base, "forces")
+            rf = mach.solve_with(far, _flip(base, groups), "forces")
+        except _Failed:
+            return None
+        x = np.concatenate((near, far))
+        sv = np.concatenate((mach.sides(rn)[:, g0], mach.sides(rf)[:, g0])) * base[g0]
+        # the root of the interpolating polynomial (in units of _ZETA about rough)
+        u = (x - rough) / _ZETA
+        coef = np.polynomial.polynomial.polyfit(u, sv, len(u) - 1)
+        der = np.polynomial.polynomial.polyder(coef)
+        r = 0.0
+        for _ in range(50):
+            step = np.polynomial.polynomial.polyval(r, coef) / \
+                np.polynomial.polynomial.polyval(r, der)
+            r -= step
+            if not abs(step) > 1e-15:
+                break
+        if not (math.isfinite(r) and abs(r) <= 1.0):
+            return None
+        star = rough + r * _ZETA
+        if abs(r) <= 0.25:
+            vals = []
+            for res in (rn, rf):
+                J, Mr, Mb = res.reduced_inertia, res.reduced_moment, res.balancing_moment
+                vals.append(np.stack((J, 2.0 * (Mb + Mr), Mr), axis=1))
+            return _Crossing(float(star), side, list(groups), x, np.concatenate(vals))
+        rough = star
+    return None
+
+
+def _root(f, a, b, fa):
+    """A root of f in [a, b] where f changes sign (bisection to rounding)."""
+    for _ in range(200):
+        mid = 0.5 * (a + b)
+        if not a < mid < b:
+            break
+        fm = f(mid)
+        if (fm > 0.0) == (fa > 0.0) and fm != 0.0:
+            a, fa = mid, fm
+        else:
+            b = mid
+    return 0.5 * (a + b)
+
+
+Event = result_type("Event", ("kind", "t", "phi", "omega", "epsilon", "note"),
+                    doc="""An event of a simulation: ``kind`` "turning point" (the crank
+    stops and turns back: omega = 0, epsilon != 0), "stall" (it stops and stays: the
+    loads at rest hold it), or "branch" (a group passed a toggle or change point and
+    took the other geometric branch, which is the continuation of the motion), at time
+    ``t`` and angle ``phi``; ``note`` says which groups and why.""")
+
+
+def _check_time(who, t):
+    t = _real_vector(who, "t", t)
+    if len(t) < 2:
+        raise ValueError(f"{who}: t needs at least 2 times (the start and an end), not "
+                         f"{len(t)}")
+    steps = np.diff(t)
+    if not np.all(steps > 0):
+        k = int(np.flatnonzero(~(steps > 0))[0])
+        raise ValueError(f"{who}: t must be strictly increasing: t[{k + 1}] = "
+                         f"{float(t[k + 1])!r} <= t[{k}] = {float(t[k])!r}")
+    return t
+
+
+def simulate(m, t, *, phi0=0.0, omega0=0.0, gravity=0.0, rtol=1e-8,
+             branches="continuous", max_steps=1_000_000):
+    """The motion of a mechanism in time from a start (phi0, omega0) at t[0]; see
+    :meth:`sarkp.Mechanism.simulate`."""
+    who = "simulate"
+    t = _check_time(who, t)
+    phi0 = _scalar(who, "phi0", phi0)
+    omega0 = _scalar(who, "omega0", omega0)
+    g = _scalar(who, "gravity", gravity)
+    rtol = _scalar(who, "rtol", rtol)
+    if not 1e-14 <= rtol <= 0.1:
+        raise ValueError(f"{who}: rtol = {rtol!r} must lie in [1e-14, 0.1]")
+    if branches not in ("continuous", "geometric"):
+        raise ValueError(f"{who}: branches must be 'continuous' or 'geometric', not "
+                         f"{branches!r}")
+    if m._crank is None:
+        raise ValueError(f"{who}: the mechanism has no crank (m.crank)")
+    mach = _Machine(m, g)
+    follow = branches == "continuous" and bool(mach.groups)
+    try:
+        eps0 = float(mach.epsilon(np.array([phi0]), np.array([omega0]),
+                                  np.array([t[0]]))[0][0])
+    except _Failed as e:
+        raise ValueError(f"{who}: the mechanism cannot start at phi0 = {phi0!r}: {e}") \
+            from None
+    if follow:
+        # steps of looser tolerances can leap past a crossing's warning (a missed
+        # branch change at rtol 1e-4 on the N-four-bar): at most 1e-6 then
+        rtol = min(rtol, 1e-6)
+    with np.errstate(all="ignore"):
+        return _integrate(mach, t, phi0, omega0, eps0, rtol, follow, max_steps)
+
+
+def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
+    s = _NODES
+    c, b, bary, top = _collocation(s)
+    _, a1, a2 = _integrals(c, c, b, bary)
+    b2 = b * (1.0 - c)
+    L1 = _lagrange([1.0], c, bary)[0]
+    n = len(t_out)
+    phi_o, om_o, ep_o = np.empty(n), np.empty(n), np.empty(n)
+    phi_o[0], om_o[0], ep_o[0] = phi0, omega0, eps0
+    start_cfg = mach.config()
+    events, branch_log = [], [(float(t_out[0]), start_cfg)]
+    tcur, tend = float(t_out[0]), float(t_out[-1])
+    y, w, e = phi0, omega0, eps0
+    wref = max(abs(omega0), math.sqrt(abs(eps0)), 1e-300)
+    span = tend - tcur
+    # the first step: the crank turns by about 0.05 rad
+    h = min(span, 0.05 / max(abs(w) + math.sqrt(abs(e)), 1e-300))
+    F = np.full(s, e)
+    ko = 1                                    # the next output
+    crossings = []
+    base = start_cfg                          # the branches at phi = y
+    status = "ok"
+    steps = rejected = in_row = 0
+    stall = _stall_check(mach, y, w, e, wref, start_cfg)
+    if stall:
+        events.append(Event("stall", tcur, y, 0.0, 0.0, "at rest and held there by "
+                                                        "the loads"))
+        status = "stalled"
+    while not stall and tcur < tend:
+        if steps + rejected >= max_steps:
+            raise RangeError(f"simulate: more than {max_steps} steps before t = {tend!r} "
+                             f"(reached t = {tcur!r})")
+        h = min(h, tend - tcur)
+        if tcur + h >= tend * (1.0 - 1e-15) - 1e-300 or tend - (tcur + h) < 1e-9 * h:
+            h = tend - tcur
+        ts = tcur + c * h
+        ok, rho, it = False, 0.0, 0
+        sc_p = rtol * max(1.0, abs(y))
+        sc_w = rtol * max(wref, abs(w))
+        prev = math.inf
+        parts = None
+        try:
+            for it in range(1, 30):
+                ph = y + h * w * c + h * h * (a2 @ F)
+                om = w + h * (a1 @ F)
+                Fn, parts = _rhs(mach, base, crossings, ph, om, ts, y)
+                d = float(np.max(np.abs(Fn - F)))
+                F = Fn
+                size = max(h * d / sc_w, h * h * d / sc_p)
+                if it > 1 and prev > 0.0:
+                    rho = d / prev
+                prev = d
+                if size < 1e-3 or d <= 1e-15 * float(np.max(np.abs(F))):
+                    ok = True
+                    break
+                if it > 2 and rho > 0.8:
+                    break
+        except _Failed:
+            ok = False
+        if ok:
+            w1 = w + h * float(b @ F)
+            y1 = y + h * w + h * h * float(b2 @ F)
+            sc_p = rtol * max(1.0, abs(y), abs(y1))
+            sc_w = rtol * max(wref, abs(w), abs(w1))
+            amp = abs(float(top @ F))
+            err = max(h * amp / sc_w, 0.5 * h * h * amp / sc_p)
+            ok = err <= 1.0
+        else:
+            err = math.inf
+        if not ok:
+            rejected += 1
+            in_row += 1
+            h *= 0.5 if not math.isfinite(err) else max(0.2, 0.8 * err ** (-1.0 / s))
+            if h < 1e-12 * span or in_row > 40:
+                raise RangeError(f"simulate: the step size fell to {h!r} s at t = {tcur!r}, "
+                                 f"phi = {y!r}: the mechanism's motion cannot be followed "
+                                 f"there (a dead centre it cannot pass?)")
+            F = np.full(s, e) if not np.isfinite(F).all() else F
+            continue
+        steps += 1
+        in_row = 0
+        t1 = tcur + h
+
+        def at(tau, F=F, y=y, w=w, h=h):
+            """phi, omega, epsilon at the fractions tau of the step (the collocation
+            polynomial)."""
+            shape = np.shape(tau)
+            L, P1, P2 = _integrals(tau, c, b, bary)
+            tau = np.asarray(tau, dtype=float).reshape(-1)
+            out = (y + h * w * tau + h * h * (P2 @ F), w + h * (P1 @ F), L @ F)
+            return tuple(v.reshape(shape) for v in out)
+
+        # turning points and stalls: omega's sign changes inside the step
+        taus = np.concatenate(([0.0], c, [1.0]))
+        wt = np.concatenate(([w], w + h * (a1 @ F), [w1]))
+        stop = None
+        for i in range(len(taus) - 1):
+            a_, b_ = wt[i], wt[i + 1]
+            if i == 0 and a_ == 0.0:
+                continue
+            if (a_ > 0.0 and b_ <= 0.0) or (a_ < 0.0 and b_ >= 0.0):
+                tau = _root(lambda u: float(at(u)[1]), taus[i], taus[i + 1], a_)
+                pt, _, et = (float(v) for v in at(tau))
+                tt = float(tcur + tau * h)
+                if _stall_check(mach, pt, 0.0, et, wref, _stage_configs(base, crossings, [pt])[0]):
+                    events.append(Event("stall", tt, pt, 0.0, 0.0,
+                                        "stopped and held at rest by the loads"))
+                    stop = (tau, pt)
+                    break
+                events.append(Event("turning point", tt, pt, 0.0, et,
+                                    "omega = 0, epsilon != 0: the crank turns back"))
+        # outputs inside the step
+        ke = ko + int(np.searchsorted(t_out[ko:], t1, side="right"))
+        if ke > ko:
+            tau = (t_out[ko:ke] - tcur) / h
+            pp, ww, ee = at(tau)
+            phi_o[ko:ke], om_o[ko:ke], ep_o[ko:ke] = pp, ww, ee
+            if stop is not None:
+                late = tau >= stop[0]
+                phi_o[ko:ke][late], om_o[ko:ke][late], ep_o[ko:ke][late] = stop[1], 0.0, 0.0
+            ko = ke
+        if stop is not None:
+            phi_o[ko:], om_o[ko:], ep_o[ko:] = stop[1], 0.0, 0.0
+            status = "stalled"
+            break
+        # branches: the crossings passed in this step take effect
+        cfg = base
+        for cr in crossings:
+            if cr.passed(y1):
+                tau = _root(lambda u: float(at(u)[0]) - cr.phi, 0.0, 1.0, y - cr.phi)
+                pt, wt_, et = (float(v) for v in at(tau))
+                cfg = _flip(cfg, cr.groups)
+                cr.side = -cr.side
+                names = ", ".join(repr(mach.groups[j][0]) for j in cr.groups)
+                events.append(Event(
+                    "branch", float(tcur + tau * h), cr.phi, wt_, et,
+                    f"rrr group(s) {names} passed a toggle or change point (the signed "
+                    f"side of the new joint went through zero): the continuous motion "
+                    f"takes the other geometric branch"))
+                branch_log.append((float(tcur + tau * h), cfg))
+        base = cfg
+        mach.set_config(base)
+        # the next step
+        y_prev = y
+        tcur, y, w, e = t1, y1, w1, float(L1 @ F)
+        wref = max(wref, abs(w))
+        grow = 0.85 * err ** (-1.0 / s) if err > 0 else 4.0
+        hn = h * min(4.0, max(0.2, grow))
+        if rho > 0.0:
+            hn = min(hn, h * max(0.2, 0.12 / rho))
+        if follow and abs(y1 - y_prev) > _STRIDE:
+            # the crank turns at most _STRIDE per step, so that a group's side seen
+            # falling over the step's last nodes warns of a crossing before a step
+            # reaches it (at loose tolerances steps would otherwise leap past one)
+            hn = min(hn, h * _STRIDE / abs(y1 - y_prev))
+        if not follow and mach.groups and parts:
+            S = np.abs(mach.sides(parts[-1][1]))
+            if S.min() < 1e-4:
+                B = mach.groups[int(S[-1].argmin())][0]
+                raise RangeError(
+                    f"simulate: the rrr group placing {B!r} reaches a toggle or change "
+                    f"point at t = {tcur!r}, phi = {y!r}: the geometric branch rule "
+                    f"(branches='geometric') cannot follow the motion there; "
+                    f"branches='continuous' does")
+        if follow:
+            reach = abs(hn * w) + 0.5 * hn * hn * abs(e) + abs(y1 - float(ph[0]))
+            crossings = [cr for cr in crossings if abs(cr.phi - y) < 8.0 * reach + _ZETA]
+            crossings = _predict(mach, base, crossings, parts, ph, y, reach)
+        # predictor: the collocation polynomial of this step extrapolated
+        F = _lagrange(1.0 + c * (hn / h), c, bary) @ F
+        h = hn
+    if ko < n:
+        phi_o[ko:], om_o[ko:], ep_o[ko:] = y, w, e
+    stats = {"steps": steps, "rejected": rejected, "calls": mach.calls,
+             "positions": mach.points, "order": 2 * s, "stage_order": s}
+    mach.set_config(start_cfg)
+    return Simulation(t_out, phi_o, om_o, ep_o, tuple(events), tuple(branch_log), status,
+                      stats, mach.m, mach.gravity)
+
+
+def _stall_check(mach, phi, w, e, wref, cfg):
+    """At rest (w = 0): whether the loads hold the crank there -- epsilon just after
+    the stop, on either side, points back to rest (or is zero)."""
+    if w != 0.0:
+        return False
+    d = 1e-9 * wref
+    cfgs = [cfg, cfg]
+    try:
+        ee = mach.epsilon(np.array([phi, phi]), np.array([d, -d]), np.zeros(2), cfgs)[0]
+    except _Failed:
+        return False
+    return bool(ee[0] <= 0.0 <= ee[1])
+
+
+def _predict(mach, base, crossings, parts, ph, y1, reach):
+    """The crossings ahead: groups whose signed side, falling towards zero over the
+    last nodes of the step, would reach it within ``reach`` of phi = y1; Newton's method
+    on |side| from this side (the one-sided derivative) brings the angle within _ZETA,
+    :func:`_crossing` finds it."""
+    G = len(mach.groups)
+    S = np.full((len(ph), G), np.nan)
+    last = {len(ph) - 2, len(ph) - 1}
+    for idx, r in parts:
+        if last & set(np.atleast_1d(idx).tolist()):
+            S[idx] = np.abs(mach.sides(r))
+    busy = {j for cr in crossings if abs(cr.phi - y1) < 4.0 * reach + _ZETA
+            for j in cr.groups}
+    pa, pb = float(ph[-2]), float(ph[-1])
+    sa, sb = S[-2], S[-1]
+    cand, P = [], []
+    for j in range(G):
+        if j in busy or not sb[j] < sa[j] or pa == pb:
+            continue
+        p = pb - sb[j] * (pb - pa) / (sb[j] - sa[j])
+        if abs(p - y1) <= 2.0 * reach + _ZETA and (p - pb) * (pb - pa) > 0.0:
+            cand.append(j)
+            P.append(p)
+    if not cand:
+        return crossings
+    guess = np.array(P)
+    P = guess.copy()
+    mach.set_config(base)
+    for _ in range(20):
+        for _ in range(12):                            # damped: stay where it assembles
+            try:
+                sv, dv = mach.side_rate(P, cand)
+                break
+            except _Failed:
+                P = 0.5 * (P + y1)
+        else:
+            return crossings
+        sv, dv = np.abs(sv), dv * np.sign(sv)
+        with np.errstate(all="ignore"):
+            step = np.where(dv != 0.0, sv / dv, 0.0)
+        P = P - step
+        if np.all(np.abs(step) <= 0.05 * _ZETA):
+            break
+    new = list(crossings)
+    done = set()
+    for i, j in enumerate(cand):
+        if j in done or not (np.isfinite(P[i]) and abs(P[i] - y1) <= 4.0 * reach + _ZETA
+                             and abs(P[i] - y1) <= 1.5 * abs(guess[i] - y1) + _ZETA
+                             and (P[i] - y1) * (guess[i] - y1) > 0.0):
+            continue
+        together = [cand[k] for k in range(len(cand))
+                    if abs(P[k] - P[i]) <= 0.1 * _ZETA and cand[k] not in done]
+        done.update(together)
+        cr = _crossing(mach, base, together, float(P[i]), 1 if y1 > P[i] else -1)
+        mach.set_config(base)
+        if cr is not None:
+            new.append(cr)
+    return new
+
+
+class _SimulationBase(Result):
+    """What :meth:`Mechanism.simulate` returns."""
+
+    __slots__ = ()
+
+    def _repr_header(self):
+        kinds = [e.kind for e in self.events]
+        parts = [f"{len(self.t)} times", f"status {self.status!r}"]
+        for k in ("turning point", "stall", "branch"):
+            if k in kinds:
+                parts.append(f"{kinds.count(k)} {k} event(s)")
+        return ", ".join(parts)
+
+    def __repr__(self):
+        return f"Simulation({self._repr_header()})"
+
+    __str__ = __repr__
+
+    def _frame_columns(self):
+        return {"t": self.t, "phi": self.phi, "omega": self.omega,
+                "epsilon": self.epsilon}, np.shape(self.t)
+
+    def events_of(self, kind):
+        """The events of one kind ("turning point", "stall", "branch")."""
+        return [e for e in self.events if e.kind == kind]
+
+    def solve(self, need="forces", *, on_error="raise"):
+        """The mechanism solved along the motion: positions, velocities, accelerations,
+        forces at the simulated phi, omega and epsilon, each time with the branches the
+        motion had then (a :class:`sarkp.MechanismResult` over the times t)."""
+        m = self.mechanism
+        cuts = [tb for tb, _ in self.branches[1:]]
+        seg = np.searchsorted(np.asarray(cuts, dtype=float), self.t, side="right")
+        results, order = [], []
+        try:
+            for k in np.unique(seg):
+                idx = np.flatnonzero(seg == k)
+                for (B, _, _), b in zip(_groups(m), self.branches[k][1]):
+                    if m.branch(B) != b:
+                        m.set_branch(B, b)
+                results.append(m.solve(self.phi[idx], omega=self.omega[idx],
+                                       epsilon=self.epsilon[idx], need=need,
+                                       gravity=self.gravity, on_error=on_error))
+                order.append(idx)
+        finally:
+            for (B, _, _), b in zip(_groups(m), self.branches[0][1]):
+                if m.branch(B) != b:
+                    m.set_branch(B, b)
+        if len(results) == 1:
+            return results[0]
+        n = len(self.t)
+        first = results[0]
+        fields = []
+        for name, v in zip(first._fields, first):
+            if isinstance(v, np.ndarray) and v.ndim and v.shape[0] == len(order[0]):
+                out = np.empty((n,) + v.shape[1:], dtype=v.dtype)
+                for idx, r in zip(order, results):
+                    out[idx] = getattr(r, name)
+                fields.append(out)
+            else:
+                fields.append(v)
+        return type(first)._make(fields)
+
+    def animate(self, path, *, fps=None, paths=()):
+        """An animation of the motion in real time (one frame per time of t, or every
+        k-th so that at most 30 frames a second are drawn): .gif or .mp4."""
+        dt = float(np.median(np.diff(self.t)))
+        every = max(1, int(round(1.0 / (30.0 * dt)))) if fps is None else 1
+        rate = 1.0 / (dt * every) if fps is None else fps
+        return self.solve(need="positions").animate(path, fps=rate, every=every,
+                                                    paths=paths)
+
+
+def _groups(m):
+    names = {i: nm for nm, i in m._points.items()}
+    return [(B, names[ints[1]], names[ints[2]]) for kind, ints, _, B in m._steps
+            if kind == 1]
+
+
+Simulation = result_type(
+    "Simulation", ("t", "phi", "omega", "epsilon", "events", "branches", "status",
+                   "stats", "mechanism", "gravity"),
+    base=_SimulationBase,
+    doc="""A motion in time (:meth:`sarkp.Mechanism.simulate`).
+
+    Fields: ``t`` -- the times asked for (s); ``phi``, ``omega``, ``epsilon`` -- the
+    crank's angle (rad), angular velocity (rad/s) and acceleration (rad/s^2) there;
+    ``events`` -- the turning points, stalls and branch changes, in time order (each an
+    :data:`Event`); ``branches`` -- ``(t, branches)`` from the start and at each branch
+    change, the branches (+1/-1) of the rrr groups in their order; ``status`` -- "ok" or
+    "stalled"; ``stats`` -- steps, rejected steps, mechanism calls and positions solved,
+    the method's order; ``mechanism`` -- a copy of the mechanism at the start;
+    ``gravity``.  ``sim.solve(need)`` gives positions and forces along the motion,
+    ``sim.animate(path)`` draws it in real time.""")

@@ -1179,6 +1179,54 @@ class Mechanism:
         J, M = self._loads(phi, gravity)
         return motion(phi, J, M, omega0=omega0, t0=t0, omega_mean=omega_mean)
 
+    def simulate(self, t, *, phi0=0.0, omega0=0.0, gravity=0.0, rtol=1e-8,
+                 branches="continuous"):
+        """The motion in time under the mechanism's loads, from phi0, omega0 at t[0].
+
+        Integrates J(phi) phi'' + J'(phi) phi'^2/2 = M(phi) (masses, inertias, gravity,
+        springs, forces, torques) through reversals and from rest, by Gauss-Legendre
+        collocation with 8 nodes (order 16 at the step ends, 8 for the dense output,
+        whose error estimate is held to rtol), each sweep of the stages one vectorised
+        :meth:`solve`.  Turning points (omega = 0, epsilon != 0), stalls (at rest and
+        held there) and branch changes are events.  The mechanism itself is not changed.
+
+        Parameters
+        ----------
+        t : array_like
+            The times (s), strictly increasing, at least 2; t[0] is the start.
+        phi0, omega0 : float
+            The crank's angle (rad) and angular velocity (rad/s) at t[0]; 0: from rest.
+        gravity : float
+            g (m/s^2) along -y.
+        rtol : float
+            The error allowed per step, relative to |phi| (at least 1 rad) and to
+            |omega| (at least the largest speed so far); in [1e-14, 0.1].  With RRR
+            groups followed through toggles (branches="continuous") at most 1e-6 is
+            used: looser steps can leap past a crossing's warning.
+        branches : {"continuous", "geometric"}
+            "continuous": an RRR group passing a toggle or change point takes the
+            branch with a continuous velocity (the other geometric one), a "branch"
+            event; the branch given is the start's.  "geometric": the book's rule kept
+            (an error at a toggle the motion passes).
+
+        Returns
+        -------
+        Simulation
+            ``.t, .phi, .omega, .epsilon`` (shaped like t), ``.events``, ``.branches``,
+            ``.status``, ``.stats``; ``.solve(need)`` and ``.animate(path)``.
+
+        Raises
+        ------
+        ValueError
+            Bad input, naming it (t not increasing, rtol, NaN phi0/omega0), or a start
+            where the mechanism does not assemble.
+        RangeError
+            The step size collapses (a dead centre the motion cannot pass).
+        """
+        from .dynamics import simulate
+        return simulate(self, t, phi0=phi0, omega0=omega0, gravity=gravity, rtol=rtol,
+                        branches=branches)
+
     def flywheel(self, delta, omega_mean, phi=None, *, gravity=0.0, J_constant=None):
         """The moment of inertia to add on the crank so that the steady state has the
         coefficient of speed fluctuation exactly ``delta`` (:func:`sarkp.dynamics.
