@@ -82,6 +82,10 @@ contains
     y(1) = b1
     y(2) = b2
     call gelg2_solve(f%lu, f%ipv, f%jpv, f%amax, f%r, y, st)
+    ! the matrix factored (f%st ok): a refusal of the solve is DGESC2's scaling test or
+    ! an overflow, a right-hand side too large for the answer -- a range problem, not a
+    ! dead centre (DSKOR1 with VA = 1e300, where W2 = 1.41e300: issue 27)
+    if (st == st_singular) st = st_range
     if (failed(st)) return
     y1 = y(1)
     y2 = y(2)

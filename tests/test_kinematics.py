@@ -862,3 +862,14 @@ def test_vertical_guides():
     assert (r.XB, r.YB) == pytest.approx((1.0, math.sqrt(3.0)), abs=1e-14)
     q = K.DPRM4(0, 0, 2.0, 0.0, math.pi / 2, 0, 0, 0.0, 1.0, 0.0, 0.0, 0.0, 0.0, 0.0)
     assert (q.XB, q.YB) == pytest.approx((2.0, 1.0), abs=1e-14)
+
+
+def test_dskor1_too_fast_is_a_range_error_not_a_dead_centre():
+    """Far from a dead centre (FI2 = 1, FI3 = 2), VA = 1e300 makes W2 = 1.41e300: DGESC2's
+    scaling test refuses the solve, which is a range problem, not a singular position
+    (issue 27).  Just below, the answer is linear in VA: W2 scales exactly with it."""
+    slow = sarkp.DSKOR1(0.35, 1.0, 0.3, 2.0, 1.0, 0.0, 0.0, 0.0)
+    fast = sarkp.DSKOR1(0.35, 1.0, 0.3, 2.0, 1e250, 0.0, 0.0, 0.0)
+    assert fast.W2 == pytest.approx(slow.W2 * 1e250, rel=1e-14)
+    with pytest.raises(sarkp.RangeError):
+        sarkp.DSKOR1(0.35, 1.0, 0.3, 2.0, 1e300, 0.0, 0.0, 0.0)
