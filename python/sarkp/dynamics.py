@@ -1130,7 +1130,7 @@ class _Machine:
         """Where the groups' joints are in a result's positions (a frame point: its
         fixed coordinates)."""
         if getattr(self, "_cols", None) is None:
-            moving, fixed = r.columns
+            moving, fixed = r.columns[:2]      # ({joint: column}, {frame point: (x, y)}, ...)
             nop = r.positions.shape[-2]
             xy = np.array([fixed.get(nm, (0.0, 0.0)) for g in self.groups for nm in g])
             idx = np.array([moving.get(nm, nop) for g in self.groups for nm in g])
