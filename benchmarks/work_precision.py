@@ -89,32 +89,6 @@ def run_scipy(rhs, span, y0, t_eval, method, rtol):
     return sol.y[0], sol.nfev
 
 
-# -- references ------------------------------------------------------------------------
-def pendulum_exact(t):
-    with mp.workdps(30):
-        k = mp.sin(mp.pi / 4)
-        K = mp.ellipk(k**2)
-        return np.array([float(-mp.pi / 2 + 2 * mp.asin(
-            k * mp.ellipfun("sn", K - mp.sqrt(mp.mpf("9.81")) * mp.mpf(x), m=k**2)))
-            for x in t])
-
-
-def four_bar_exact(N, t):
-    with mp.workdps(25):
-        J = mp.mpf(4 * N + 1) / 3
-        Gm = mp.mpf("9.81") * (3 * N + 1) / 2
-        w = lambda x: mp.sqrt(1 + 2 * Gm * (1 - mp.sin(x)) / J)       # noqa: E731
-        tof = lambda x: mp.quad(lambda y: 1 / w(y), [mp.pi / 2, x])   # noqa: E731
-        T = mp.quad(lambda y: 1 / w(y), [mp.pi / 2, 3 * mp.pi / 2, 5 * mp.pi / 2])
-        out = []
-        for x in t:
-            k = mp.floor(mp.mpf(x) / T)
-            r = mp.mpf(x) - k * T
-            out.append(float(mp.findroot(lambda p: tof(p) - r, mp.pi / 2 + r * w(mp.pi))
-                             + 2 * mp.pi * k))
-        return np.array(out)
-
-
 # -- problems ---------------------------------------------------------------------------
 def squeezer_runs():
     m = machines.squeezer()
@@ -152,7 +126,7 @@ def four_bar_runs(N=40):
     for k in range(1, N + 1):
         down.set_branch(f"A{k}", -1)
     t = np.array([0.0, 5.0, 10.0, 15.0, 20.0])
-    ref = four_bar_exact(N, t)
+    ref = machines.four_bar_exact(N, t)[0]
     def rhs_():
         return scipy_rhs(m, G, lambda p: up if math.sin(p) >= 0.0 else down, 30000)
     rows = []
@@ -183,7 +157,7 @@ def four_bar_runs(N=40):
 def pendulum_runs():
     m = machines.pendulum()
     t = np.linspace(0.0, 20.0, 41)
-    ref = pendulum_exact(t)
+    ref = machines.pendulum_exact(t)
     rows = []
     for rtol in RTOLS:
         for method in ("simulate",) + SCIPY:

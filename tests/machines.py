@@ -15,7 +15,12 @@ and benchmarks/work_precision.py).
 
 import math
 
+import mpmath as mp
+import numpy as np
+
 import sarkp
+
+G = 9.81
 
 
 def pendulum(L=1.0, mass=1.0):
@@ -79,3 +84,32 @@ def squeezer():
     m.spring("D", "C", p["c0"], p["lo"])
     m.torque("O", "F", p["mom"])
     return m
+
+
+# -- exact references (mpmath) ----------------------------------------------------------
+def pendulum_exact(t, L=1.0, g=G):
+    """phi(t) of the pendulum from rest at phi = 0 (horizontal), phi from +x."""
+    with mp.workdps(30):
+        k = mp.sin(mp.pi / 4)
+        K = mp.ellipk(k**2)
+        w0 = mp.sqrt(mp.mpf(g) / L)
+        return np.array([float(-mp.pi / 2 + 2 * mp.asin(
+            k * mp.ellipfun("sn", K - w0 * mp.mpf(tt), m=k**2))) for tt in t])
+
+
+def four_bar_exact(N, t, g=G):
+    """The N-four-bar's crank angle from the energy integral J w^2/2 + G sin(phi) =
+    J/2 + G (start vertical at 1 rad/s), J = (4N + 1)/3, G = g (3N + 1)/2."""
+    with mp.workdps(25):
+        J = mp.mpf(4 * N + 1) / 3
+        Gm = mp.mpf(g) * (3 * N + 1) / 2
+        w = lambda x: mp.sqrt(1 + 2 * Gm * (1 - mp.sin(x)) / J)       # noqa: E731
+        time = lambda x: mp.quad(lambda y: 1 / w(y), [mp.pi / 2, x])  # noqa: E731
+        T = mp.quad(lambda y: 1 / w(y), [mp.pi / 2, 3 * mp.pi / 2, 5 * mp.pi / 2])
+        out = []
+        for tt in t:
+            k = mp.floor(mp.mpf(tt) / T)
+            r = mp.mpf(tt) - k * T
+            x = mp.findroot(lambda x: time(x) - r, mp.pi / 2 + r * w(mp.pi))
+            out.append(float(x + 2 * mp.pi * k))
+        return np.array(out), float(T), time

@@ -26,39 +26,13 @@ import machines  # noqa: E402
 G = 9.81
 
 
-def pendulum_exact(t, L=1.0, g=G):
-    """phi(t) of the pendulum from rest at phi = 0 (horizontal), phi from +x."""
-    with mp.workdps(30):
-        k = mp.sin(mp.pi / 4)
-        K = mp.ellipk(k**2)
-        w0 = mp.sqrt(mp.mpf(g) / L)
-        return np.array([float(-mp.pi / 2 + 2 * mp.asin(
-            k * mp.ellipfun("sn", K - w0 * mp.mpf(tt), m=k**2))) for tt in t])
-
-
-def four_bar_exact(N, t, g=G):
-    """The N-four-bar's crank angle from the energy integral J w^2/2 + G sin(phi) =
-    J/2 + G (start vertical at 1 rad/s), J = (4N + 1)/3, G = g (3N + 1)/2."""
-    with mp.workdps(25):
-        J = mp.mpf(4 * N + 1) / 3
-        Gm = mp.mpf(g) * (3 * N + 1) / 2
-        w = lambda x: mp.sqrt(1 + 2 * Gm * (1 - mp.sin(x)) / J)       # noqa: E731
-        time = lambda x: mp.quad(lambda y: 1 / w(y), [mp.pi / 2, x])  # noqa: E731
-        T = mp.quad(lambda y: 1 / w(y), [mp.pi / 2, 3 * mp.pi / 2, 5 * mp.pi / 2])
-        out = []
-        for tt in t:
-            k = mp.floor(mp.mpf(tt) / T)
-            r = mp.mpf(tt) - k * T
-            x = mp.findroot(lambda x: time(x) - r, mp.pi / 2 + r * w(mp.pi))
-            out.append(float(x + 2 * mp.pi * k))
-        return np.array(out), float(T), time
 
 
 def test_pendulum_against_jacobi_through_16_reversals():
     m = machines.pendulum()
     t = np.linspace(0.0, 20.0, 201)
     sim = m.simulate(t, phi0=0.0, omega0=0.0, gravity=G, rtol=1e-10)
-    exact = pendulum_exact(t)
+    exact = machines.pendulum_exact(t)
     assert np.max(np.abs(sim.phi - exact)) < 1e-9
     # omega from the energy integral, epsilon from the law of motion
     w_exact = np.sqrt(np.maximum(2 * G * (-np.sin(exact)), 0.0))
@@ -78,7 +52,7 @@ def test_pendulum_against_jacobi_through_16_reversals():
 def test_pendulum_error_follows_rtol():
     m = machines.pendulum()
     t = np.linspace(0.0, 5.0, 26)
-    exact = pendulum_exact(t)
+    exact = machines.pendulum_exact(t)
     errors = [np.max(np.abs(m.simulate(t, gravity=G, rtol=r).phi - exact))
               for r in (1e-4, 1e-7, 1e-10)]
     assert errors[0] < 1e-3 and errors[1] < 1e-6 and errors[2] < 1e-9
@@ -89,7 +63,7 @@ def test_pendulum_error_follows_rtol():
 def test_n_four_bar_against_the_energy_integral(N, rtol, bound):
     m = machines.n_four_bar(N)
     t = np.linspace(0.0, 20.0, 5)
-    exact, T, time = four_bar_exact(N, t)
+    exact, T, time = machines.four_bar_exact(N, t)
     sim = m.simulate(t, phi0=math.pi / 2, omega0=1.0, gravity=G, rtol=rtol)
     assert np.max(np.abs(sim.phi - exact)) < bound
     # every toggle (phi = pi mod 2 pi) and change point (0 mod 2 pi) passed is a branch
@@ -204,6 +178,6 @@ def test_a_loose_tolerance_does_not_lose_a_branch_change():
     tolerance is at most 1e-6."""
     m = machines.n_four_bar(1)
     t = np.array([0.0, 10.0, 20.0])
-    exact, _, _ = four_bar_exact(1, t)
+    exact, _, _ = machines.four_bar_exact(1, t)
     sim = m.simulate(t, phi0=math.pi / 2, omega0=1.0, gravity=G, rtol=1e-4)
     assert np.max(np.abs(sim.phi - exact)) < 1e-7

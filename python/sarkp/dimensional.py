@@ -1153,6 +1153,16 @@ def _requirement_report(problem, res):
     return text
 
 
+def _transmission_limit(min_transmission):
+    """The least transmission angle asked for, rad (0: none), from degrees in (0, 90)."""
+    if min_transmission is None:
+        return 0.0
+    mt = float(min_transmission)
+    if not (0.0 < mt < 90.0):
+        raise ValueError(f"min_transmission must be in (0, 90) degrees, not {mt}")
+    return math.radians(mt)
+
+
 def path_generation(targets, phi=None, bounds=None, min_transmission=None, seed=None,
                     workers=None, *, popsize=20, maxiter=300, refine=True):
     """A four-bar with a coupler point P passing through ``targets``.
@@ -1224,12 +1234,7 @@ def path_generation(targets, phi=None, bounds=None, min_transmission=None, seed=
         phi = _angles("phi", phi, 5)
         if phi.size != T.shape[0]:
             raise ValueError(f"phi has {phi.size} angles for {T.shape[0]} targets")
-    gamma = 0.0
-    if min_transmission is not None:
-        mt = float(min_transmission)
-        if not (0.0 < mt < 90.0):
-            raise ValueError(f"min_transmission must be in (0, 90) degrees, not {mt}")
-        gamma = math.radians(mt)
+    gamma = _transmission_limit(min_transmission)
     sb, length, span = _bounds_of(T, bounds)
     for name, v in (("popsize", popsize), ("maxiter", maxiter)):
         if not isinstance(v, (int, np.integer)) or v < 1:
@@ -1316,12 +1321,7 @@ def fourbar_search(objective, phi, bounds, min_transmission=None, seed=None,
     (xlo, xhi), (ylo, yhi) = bounds["pivot"]
     box = np.array([[xlo, ylo], [xhi, yhi]], dtype=float)
     sb, length, span = _bounds_of(box, bounds)
-    gamma = 0.0
-    if min_transmission is not None:
-        mt = float(min_transmission)
-        if not (0.0 < mt < 90.0):
-            raise ValueError(f"min_transmission must be in (0, 90) degrees, not {mt}")
-        gamma = math.radians(mt)
+    gamma = _transmission_limit(min_transmission)
     T = np.zeros((phi.size, 2))
     problem = _Problem(T, phi, length, gamma, span, objective)
     out = _run(problem, sb, seed, workers, popsize, maxiter, False, "fourbar_search")
