@@ -349,7 +349,7 @@ contains
     real(dp), intent(out) :: xb(2), vb(2), ab(2), u3(2), w3, e3, sv, sa, est
     integer, intent(out) :: st
     real(dp) :: dx, dy, d, hh, sq, cq, u(2), nn(2), fb(2), e3v(2), n3(2), sl, ds
-    real(dp) :: rac(2), y1, y2, rel, sb, sd, ev
+    real(dp) :: rac(2), y1, y2, rel, sb, sd, ev, sx
     type(cram) :: f
     hh = abs(h)
     dx = xc(1) - xa(1)
@@ -383,6 +383,11 @@ contains
     u3 = e3v
     ds = 4.0_dp*uround*(1.0_dp + sq)
     est = angle_sensitivity(sq, ds)
+    ! A - C carries the rounding of the coordinates it is the difference of (far from the
+    ! origin more than d's own): its direction, link 3's, moves by about u sx/d, and the
+    ! accelerations' term w3**2 (A - C) by w3**2 u sx
+    sx = abs(xa(1)) + abs(xa(2)) + abs(xc(1)) + abs(xc(2))
+    if (sx > d) est = est + uround*(sx/d)
     st = st_ok
     if (level < 2) return
     ! v_A = v_C + w3 k x (A - C) + s' e3
@@ -401,7 +406,7 @@ contains
     ev = abs_err(f, y1, sd, sb, rel)
     call cramer(f, aa(1) - ac(1) + y1**2*rac(1) - 2.0_dp*y1*sd*n3(1), &
                 aa(2) - ac(2) + y1**2*rac(2) - 2.0_dp*y1*sd*n3(2), &
-                est + 4.0_dp*uround, 4.0_dp*uround*(sb + y1**2*d + abs(y1*sd)) &
+                est + 4.0_dp*uround, 4.0_dp*uround*(sb + y1**2*d + abs(y1*sd)) + uround*y1**2*sx &
                 + ev*(2.0_dp*abs(y1) + ev/d) + 2.0_dp*(abs(y1)*ev + abs(sd)*ev/d), sb, &
                 y1, y2, st, rel)
     if (failed(st)) return
