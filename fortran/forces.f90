@@ -54,6 +54,9 @@ module forces
 
   ! The book's GELG tolerance (EPS = 0.0001, L525): a smaller denominator is reported.
   real(dp), parameter :: eps_den = 1.0e-4_dp
+  ! The kernel's points of DNMA4/DNMAF4 and DNMA5/DNMAF5, all at the origin of the
+  ! adapter's coordinates (B, A).
+  real(dp), parameter :: origin(2, 3) = 0.0_dp
 
 contains
 
@@ -222,14 +225,17 @@ contains
     real(dp), intent(in) :: xa, ya, xb, yb, xc, yc, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3
     real(dp), intent(out) :: f21, g21, f23, g23, f34, g34
     integer, intent(out) :: ier
-    real(dp) :: r(3, 3), u(2, 3)
+    real(dp) :: p(2, 3), r(3, 3), u(2, 3)
     integer :: st
     f21 = 0.0_dp; g21 = 0.0_dp; f23 = 0.0_dp; g23 = 0.0_dp; f34 = 0.0_dp; g34 = 0.0_dp
     ier = sine_status(xa - xc, ya - yc, xb - xa, yb - ya)   ! SIN(FI - FICA)
     if (ier == st_singular) return
     u = 0.0_dp
-    call group_reactions(reshape([xa, ya, xb, yb, xc, yc], [2, 3]), kind_pairs(:, 1), u, &
-                         vec(f2, g2), t2, [xs2, ys2], vec(f3, g3), t3, [xs3, ys3], r, st)
+    p(:, 1) = [xa, ya]
+    p(:, 2) = [xb, yb]
+    p(:, 3) = [xc, yc]
+    call group_reactions(p, kind_pairs(:, 1), u, vec(f2, g2), t2, [xs2, ys2], vec(f3, g3), &
+                         t3, [xs3, ys3], r, st)
     if (st /= st_ok) then
       ier = st
       return
@@ -246,7 +252,7 @@ contains
     real(dp), intent(in) :: xa, ya, xb, yb, fim, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3
     real(dp), intent(out) :: f21, g21, f23, g23, f34, g34, h34
     integer, intent(out) :: ier
-    real(dp) :: r(3, 3), u(2, 3)
+    real(dp) :: p(2, 3), r(3, 3), u(2, 3)
     integer :: st
     f21 = 0.0_dp; g21 = 0.0_dp; f23 = 0.0_dp; g23 = 0.0_dp; f34 = 0.0_dp; g34 = 0.0_dp
     h34 = 0.0_dp
@@ -254,8 +260,11 @@ contains
     u(:, 3) = unit(fim)
     ier = sine_status(-u(2, 3), u(1, 3), xa - xb, ya - yb)  ! SIN(FIM + PID2 - FI)
     if (ier == st_singular) return
-    call group_reactions(reshape([xa, ya, xb, yb, xb, yb], [2, 3]), kind_pairs(:, 2), u, &
-                         vec(f2, g2), t2, [xs2, ys2], vec(f3, g3), t3, [xs3, ys3], r, st)
+    p(:, 1) = [xa, ya]
+    p(:, 2) = [xb, yb]
+    p(:, 3) = [xb, yb]
+    call group_reactions(p, kind_pairs(:, 2), u, vec(f2, g2), t2, [xs2, ys2], vec(f3, g3), &
+                         t3, [xs3, ys3], r, st)
     if (st /= st_ok) then
       ier = st
       return
@@ -273,7 +282,7 @@ contains
     real(dp), intent(in) :: xa, ya, xc, yc, fi3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3
     real(dp), intent(out) :: f21, g21, f23, g23, h23, f34, g34
     integer, intent(out) :: ier
-    real(dp) :: r(3, 3), u(2, 3)
+    real(dp) :: p(2, 3), r(3, 3), u(2, 3)
     integer :: st
     f21 = 0.0_dp; g21 = 0.0_dp; f23 = 0.0_dp; g23 = 0.0_dp; h23 = 0.0_dp; f34 = 0.0_dp
     g34 = 0.0_dp
@@ -281,8 +290,11 @@ contains
     u(:, 2) = unit(fi3)
     ier = sine_status(xa - xc, ya - yc, -u(2, 2), u(1, 2))  ! SIN(FI3 + PID2 - FICA)
     if (ier == st_singular) return
-    call group_reactions(reshape([xa, ya, xc, yc, xc, yc], [2, 3]), kind_pairs(:, 3), u, &
-                         vec(f2, g2), t2, [xs2, ys2], vec(f3, g3), t3, [xs3, ys3], r, st)
+    p(:, 1) = [xa, ya]
+    p(:, 2) = [xc, yc]
+    p(:, 3) = [xc, yc]
+    call group_reactions(p, kind_pairs(:, 3), u, vec(f2, g2), t2, [xs2, ys2], vec(f3, g3), &
+                         t3, [xs3, ys3], r, st)
     if (st /= st_ok) then
       ier = st
       return
@@ -301,12 +313,14 @@ contains
     real(dp), intent(in) :: u1(2), u3(2), s2(2), v2(2), t2, s3(2), v3(2), t3
     real(dp), intent(out) :: r(3, 3)
     integer, intent(inout) :: ier
+    real(dp) :: u(2, 3)
     integer :: st
     r = 0.0_dp
     if (ier == st_singular) return
-    call group_reactions(spread([0.0_dp, 0.0_dp], 2, 3), kind_pairs(:, 4), &
-                         reshape([u1, 0.0_dp, 0.0_dp, u3], [2, 3]), v2, t2, s2, v3, t3, s3, &
-                         r, st)
+    u(:, 1) = u1
+    u(:, 2) = 0.0_dp
+    u(:, 3) = u3
+    call group_reactions(origin, kind_pairs(:, 4), u, v2, t2, s2, v3, t3, s3, r, st)
     if (st /= st_ok) ier = st
   end subroutine prp_kernel
 
@@ -343,12 +357,14 @@ contains
     real(dp), intent(in) :: u1(2), u2(2), s2(2), v2(2), t2, s3(2), v3(2), t3
     real(dp), intent(out) :: r(3, 3)
     integer, intent(inout) :: ier
+    real(dp) :: u(2, 3)
     integer :: st
     r = 0.0_dp
     if (ier == st_singular) return
-    call group_reactions(spread([0.0_dp, 0.0_dp], 2, 3), kind_pairs(:, 5), &
-                         reshape([u1, u2, 0.0_dp, 0.0_dp], [2, 3]), v3, t3, s3, v2, t2, s2, &
-                         r, st)
+    u(:, 1) = u1
+    u(:, 2) = u2
+    u(:, 3) = 0.0_dp
+    call group_reactions(origin, kind_pairs(:, 5), u, v3, t3, s3, v2, t2, s2, r, st)
     if (st /= st_ok) ier = st
   end subroutine rpp_kernel
 
@@ -380,7 +396,7 @@ contains
     real(dp), intent(in) :: l2, fi2, l3, fi3, bs2, bs3, m2, q2, g2, m3, q3, g3
     real(dp), intent(out) :: ra, ga, rb, gb, rc, gc
     integer, intent(out) :: ier
-    real(dp) :: r(3, 3), u(2, 3), e2(2), e3(2)
+    real(dp) :: p(2, 3), r(3, 3), u(2, 3), e2(2), e3(2)
     integer :: st
     ra = 0.0_dp; ga = 0.0_dp; rb = 0.0_dp; gb = 0.0_dp; rc = 0.0_dp; gc = 0.0_dp
     e2 = unit(fi2)
@@ -388,8 +404,11 @@ contains
     ier = den_status(e2(1)*e3(2) - e3(1)*e2(2))             ! the links' sine (GELG)
     if (ier == st_singular) return
     u = 0.0_dp
-    call group_reactions(reshape([-l2*e2, 0.0_dp, 0.0_dp, -l3*e3], [2, 3]), kind_pairs(:, 1), &
-                         u, vec(q2, g2), m2, bs2*e2, vec(q3, g3), m3, bs3*e3, r, st)
+    p(:, 1) = -l2*e2
+    p(:, 2) = 0.0_dp
+    p(:, 3) = -l3*e3
+    call group_reactions(p, kind_pairs(:, 1), u, vec(q2, g2), m2, bs2*e2, vec(q3, g3), m3, &
+                         bs3*e3, r, st)
     if (st /= st_ok) then
       ier = st
       return
@@ -405,7 +424,7 @@ contains
     real(dp), intent(in) :: l2, fi2, eta, fio, bs2, bs3, m2, q2, g2, m3, q3, g3
     real(dp), intent(out) :: ra, ga, rb, gb, rc, hc, gc
     integer, intent(out) :: ier
-    real(dp) :: r(3, 3), u(2, 3), e2(2)
+    real(dp) :: p(2, 3), r(3, 3), u(2, 3), e2(2)
     integer :: st
     ra = 0.0_dp; ga = 0.0_dp; rb = 0.0_dp; gb = 0.0_dp; rc = 0.0_dp; hc = 0.0_dp
     gc = 0.0_dp
@@ -414,8 +433,9 @@ contains
     u(:, 3) = unit(fio)
     ier = gelg_status(e2(1), -u(2, 3), e2(2), u(1, 3))
     if (ier == st_singular) return
-    call group_reactions(reshape([-l2*e2, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp], [2, 3]), &
-                         kind_pairs(:, 2), u, vec(q2, g2), m2, bs2*e2, vec(q3, g3), m3, &
+    p(:, 1) = -l2*e2
+    p(:, 2:3) = 0.0_dp
+    call group_reactions(p, kind_pairs(:, 2), u, vec(q2, g2), m2, bs2*e2, vec(q3, g3), m3, &
                          bs3*unit(fio + eta), r, st)
     if (st /= st_ok) then
       ier = st
@@ -433,7 +453,7 @@ contains
     real(dp), intent(in) :: fi3, cs2, fics2, cs3, fics3, ac, fiac, m2, q2, g2, m3, q3, g3
     real(dp), intent(out) :: ra, ga, rb, hb, gb, rc, gc
     integer, intent(out) :: ier
-    real(dp) :: r(3, 3), u(2, 3), eac(2), a(2)
+    real(dp) :: p(2, 3), r(3, 3), u(2, 3), eac(2), a(2)
     integer :: st
     ra = 0.0_dp; ga = 0.0_dp; rb = 0.0_dp; hb = 0.0_dp; gb = 0.0_dp; rc = 0.0_dp
     gc = 0.0_dp
@@ -443,9 +463,11 @@ contains
     ier = gelg_status(eac(1), -u(2, 2), eac(2), u(1, 2))
     if (ier == st_singular) return
     a = -ac*eac
-    call group_reactions(reshape([a, a, 0.0_dp, 0.0_dp], [2, 3]), kind_pairs(:, 3), u, &
-                         vec(q2, g2), m2, cs2*unit(fics2), vec(q3, g3), m3, cs3*unit(fics3), &
-                         r, st)
+    p(:, 1) = a
+    p(:, 2) = a
+    p(:, 3) = 0.0_dp
+    call group_reactions(p, kind_pairs(:, 3), u, vec(q2, g2), m2, cs2*unit(fics2), &
+                         vec(q3, g3), m3, cs3*unit(fics3), r, st)
     if (st /= st_ok) then
       ier = st
       return

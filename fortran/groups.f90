@@ -71,19 +71,19 @@ contains
     ! row 1: link 2 without pair 1
     if (ty(1) == pair_revolute) then
       d = p(:, 2) - p(:, 1)                    ! -(d x R) - C = -M2 (about p1)
-      call coefficients(d(2), -d(1), -1.0_dp, ty(2), n2, a(1, :))
+      call coefficients(d(2), -d(1), -1.0_dp, ty(2), n2, a(1, 1), a(1, 2))
       b(1) = -moment(f2, m2, q2, p(:, 1))
     else
-      call coefficients(-u(1, 1), -u(2, 1), 0.0_dp, ty(2), n2, a(1, :))   ! -R.u1 = -F2.u1
+      call coefficients(-u(1, 1), -u(2, 1), 0.0_dp, ty(2), n2, a(1, 1), a(1, 2))   ! -R.u1 = -F2.u1
       b(1) = -(f2(1)*u(1, 1) + f2(2)*u(2, 1))
     end if
     ! row 2: link 3 without pair 3
     if (ty(3) == pair_revolute) then
       d = p(:, 2) - p(:, 3)                    ! d x R + C = -M3 (about p3)
-      call coefficients(-d(2), d(1), 1.0_dp, ty(2), n2, a(2, :))
+      call coefficients(-d(2), d(1), 1.0_dp, ty(2), n2, a(2, 1), a(2, 2))
       b(2) = -moment(f3, m3, q3, p(:, 3))
     else
-      call coefficients(u(1, 3), u(2, 3), 0.0_dp, ty(2), n2, a(2, :))     ! R.u3 = -F3.u3
+      call coefficients(u(1, 3), u(2, 3), 0.0_dp, ty(2), n2, a(2, 1), a(2, 2))     ! R.u3 = -F3.u3
       b(2) = -(f3(1)*u(1, 3) + f3(2)*u(2, 3))
     end if
     call cramer2(a, b, z, st)
@@ -122,14 +122,16 @@ contains
 
   ! The coefficients of pair 2's unknowns in one equation: (cx, cy) multiply R (a
   ! revolute's two unknowns; a slider's N through R = N n2), cc its couple C.
-  pure subroutine coefficients(cx, cy, cc, t2, n2, row)
+  pure subroutine coefficients(cx, cy, cc, t2, n2, c1, c2)
     real(dp), intent(in) :: cx, cy, cc, n2(2)
     integer, intent(in) :: t2
-    real(dp), intent(out) :: row(2)
+    real(dp), intent(out) :: c1, c2
     if (t2 == pair_revolute) then
-      row = [cx, cy]
+      c1 = cx
+      c2 = cy
     else
-      row = [cx*n2(1) + cy*n2(2), cc]
+      c1 = cx*n2(1) + cy*n2(2)
+      c2 = cc
     end if
   end subroutine coefficients
 
@@ -158,7 +160,7 @@ contains
     real(dp), intent(in) :: a(2, 2), b(2)
     real(dp), intent(out) :: z(2)
     integer, intent(out) :: st
-    real(dp) :: s(2, 2), sc, det, rdet, na
+    real(dp) :: s(2, 2), sc, det, rdet, na, t
     integer :: e
     z = 0.0_dp
     st = st_singular
@@ -171,11 +173,15 @@ contains
       s = scale(a, -e)
       sc = scale(sc, -e)
     end if
-    na = sqrt((s(1, 1)/sc)**2 + (s(2, 1)/sc)**2 + (s(1, 2)/sc)**2 + (s(2, 2)/sc)**2)
     det = s(1, 1)*s(2, 2) - s(1, 2)*s(2, 1)
     if (det == 0.0_dp) return
     rdet = 1.0_dp/det
-    if (.not. na*abs(sc*(sc*rdet)) <= huge(1.0_dp)) return
+    ! na <= 2 (every entry / sc is at most 1): the norm is needed only near the limit
+    t = abs(sc*(sc*rdet))
+    if (.not. t <= huge(1.0_dp)/2) then
+      na = sqrt((s(1, 1)/sc)**2 + (s(2, 1)/sc)**2 + (s(1, 2)/sc)**2 + (s(2, 2)/sc)**2)
+      if (.not. na*t <= huge(1.0_dp)) return
+    end if
     z(1) = (b(1)*s(2, 2) - s(1, 2)*b(2))*rdet
     z(2) = (s(1, 1)*b(2) - s(2, 1)*b(1))*rdet
     if (e /= 0) z = scale(z, -e)
