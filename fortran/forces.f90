@@ -216,18 +216,18 @@ contains
   ! -- with its kind's pair declaration, and turns the kernel's reactions r(:, j)
   ! (pair 1's on link 2 from the outside, pair 2's on link 3 from link 2, pair 3's on
   ! link 3 from the outside; a slider's couple about its point p(:, j)) into the book's
-  ! outputs.  The status is the book's denominator's, as the printed code divides by it;
-  ! the kernel's own (st_singular, st_range) where it fails; every output 0 then.
+  ! outputs, which come in as the calling routine's zeros and stay so where it fails.  The
+  ! status is the book's denominator's, as the printed code divides by it; the kernel's
+  ! own (st_singular, st_range) where that fails.
 
   ! DNMAF1: kind 1, pairs A, B, C.
   subroutine dnmaf1_kernel(xa, ya, xb, yb, xc, yc, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, &
                            t3, f21, g21, f23, g23, f34, g34, ier)
     real(dp), intent(in) :: xa, ya, xb, yb, xc, yc, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3
-    real(dp), intent(out) :: f21, g21, f23, g23, f34, g34
+    real(dp), intent(inout) :: f21, g21, f23, g23, f34, g34
     integer, intent(out) :: ier
     real(dp) :: p(2, 3), r(3, 3), u(2, 3)
     integer :: st
-    f21 = 0.0_dp; g21 = 0.0_dp; f23 = 0.0_dp; g23 = 0.0_dp; f34 = 0.0_dp; g34 = 0.0_dp
     ier = sine_status(xa - xc, ya - yc, xb - xa, yb - ya)   ! SIN(FI - FICA)
     if (ier == st_singular) return
     u = 0.0_dp
@@ -250,12 +250,10 @@ contains
   subroutine dnmaf2_kernel(xa, ya, xb, yb, fim, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
                            f21, g21, f23, g23, f34, g34, h34, ier)
     real(dp), intent(in) :: xa, ya, xb, yb, fim, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3
-    real(dp), intent(out) :: f21, g21, f23, g23, f34, g34, h34
+    real(dp), intent(inout) :: f21, g21, f23, g23, f34, g34, h34
     integer, intent(out) :: ier
     real(dp) :: p(2, 3), r(3, 3), u(2, 3)
     integer :: st
-    f21 = 0.0_dp; g21 = 0.0_dp; f23 = 0.0_dp; g23 = 0.0_dp; f34 = 0.0_dp; g34 = 0.0_dp
-    h34 = 0.0_dp
     u = 0.0_dp
     u(:, 3) = unit(fim)
     ier = sine_status(-u(2, 3), u(1, 3), xa - xb, ya - yb)  ! SIN(FIM + PID2 - FI)
@@ -280,12 +278,10 @@ contains
   subroutine dnmaf3_kernel(xa, ya, xc, yc, fi3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
                            f21, g21, f23, g23, h23, f34, g34, ier)
     real(dp), intent(in) :: xa, ya, xc, yc, fi3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3
-    real(dp), intent(out) :: f21, g21, f23, g23, h23, f34, g34
+    real(dp), intent(inout) :: f21, g21, f23, g23, h23, f34, g34
     integer, intent(out) :: ier
     real(dp) :: p(2, 3), r(3, 3), u(2, 3)
     integer :: st
-    f21 = 0.0_dp; g21 = 0.0_dp; f23 = 0.0_dp; g23 = 0.0_dp; h23 = 0.0_dp; f34 = 0.0_dp
-    g34 = 0.0_dp
     u = 0.0_dp
     u(:, 2) = unit(fi3)
     ier = sine_status(xa - xc, ya - yc, -u(2, 2), u(1, 2))  ! SIN(FI3 + PID2 - FICA)
@@ -328,11 +324,9 @@ contains
   subroutine dnmaf4_kernel(fim, fin, xb, yb, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
                            f21, g21, h21, f23, g23, f34, g34, h34, ier)
     real(dp), intent(in) :: fim, fin, xb, yb, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3
-    real(dp), intent(out) :: f21, g21, h21, f23, g23, f34, g34, h34
+    real(dp), intent(inout) :: f21, g21, h21, f23, g23, f34, g34, h34
     integer, intent(out) :: ier
     real(dp) :: r(3, 3), u1(2), u3(2)
-    f21 = 0.0_dp; g21 = 0.0_dp; h21 = 0.0_dp; f23 = 0.0_dp; g23 = 0.0_dp; f34 = 0.0_dp
-    g34 = 0.0_dp; h34 = 0.0_dp
     u1 = unit(fim)
     u3 = unit(fin)
     ier = sine_status(u1(1), u1(2), u3(1), u3(2))           ! COS(FIM + PID2 - FIN)
@@ -372,11 +366,9 @@ contains
   subroutine dnmaf5_kernel(xa, ya, fim, tt3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
                            f21, g21, f32, g32, h32, f34, g34, h34, ier)
     real(dp), intent(in) :: xa, ya, fim, tt3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3
-    real(dp), intent(out) :: f21, g21, f32, g32, h32, f34, g34, h34
+    real(dp), intent(inout) :: f21, g21, f32, g32, h32, f34, g34, h34
     integer, intent(out) :: ier
     real(dp) :: r(3, 3), u1(2)
-    f21 = 0.0_dp; g21 = 0.0_dp; f32 = 0.0_dp; g32 = 0.0_dp; h32 = 0.0_dp; f34 = 0.0_dp
-    g34 = 0.0_dp; h34 = 0.0_dp
     u1 = unit(fim)
     ier = den_status(sin(tt3))                               ! COS(PID2 - TT3)
     call rpp_kernel(u1, unit(fim + tt3), [xs2 - xa, ys2 - ya], vec(f2, g2), t2, &
@@ -394,11 +386,10 @@ contains
   subroutine dnma1_kernel(l2, fi2, l3, fi3, bs2, bs3, m2, q2, g2, m3, q3, g3, &
                           ra, ga, rb, gb, rc, gc, ier)
     real(dp), intent(in) :: l2, fi2, l3, fi3, bs2, bs3, m2, q2, g2, m3, q3, g3
-    real(dp), intent(out) :: ra, ga, rb, gb, rc, gc
+    real(dp), intent(inout) :: ra, ga, rb, gb, rc, gc
     integer, intent(out) :: ier
     real(dp) :: p(2, 3), r(3, 3), u(2, 3), e2(2), e3(2)
     integer :: st
-    ra = 0.0_dp; ga = 0.0_dp; rb = 0.0_dp; gb = 0.0_dp; rc = 0.0_dp; gc = 0.0_dp
     e2 = unit(fi2)
     e3 = unit(fi3)
     ier = den_status(e2(1)*e3(2) - e3(1)*e2(2))             ! the links' sine (GELG)
@@ -422,12 +413,10 @@ contains
   subroutine dnma2_kernel(l2, fi2, eta, fio, bs2, bs3, m2, q2, g2, m3, q3, g3, &
                           ra, ga, rb, gb, rc, hc, gc, ier)
     real(dp), intent(in) :: l2, fi2, eta, fio, bs2, bs3, m2, q2, g2, m3, q3, g3
-    real(dp), intent(out) :: ra, ga, rb, gb, rc, hc, gc
+    real(dp), intent(inout) :: ra, ga, rb, gb, rc, hc, gc
     integer, intent(out) :: ier
     real(dp) :: p(2, 3), r(3, 3), u(2, 3), e2(2)
     integer :: st
-    ra = 0.0_dp; ga = 0.0_dp; rb = 0.0_dp; gb = 0.0_dp; rc = 0.0_dp; hc = 0.0_dp
-    gc = 0.0_dp
     e2 = unit(fi2)
     u = 0.0_dp
     u(:, 3) = unit(fio)
@@ -451,12 +440,10 @@ contains
   subroutine dnma3_kernel(fi3, cs2, fics2, cs3, fics3, ac, fiac, m2, q2, g2, m3, q3, g3, &
                           ra, ga, rb, hb, gb, rc, gc, ier)
     real(dp), intent(in) :: fi3, cs2, fics2, cs3, fics3, ac, fiac, m2, q2, g2, m3, q3, g3
-    real(dp), intent(out) :: ra, ga, rb, hb, gb, rc, gc
+    real(dp), intent(inout) :: ra, ga, rb, hb, gb, rc, gc
     integer, intent(out) :: ier
     real(dp) :: p(2, 3), r(3, 3), u(2, 3), eac(2), a(2)
     integer :: st
-    ra = 0.0_dp; ga = 0.0_dp; rb = 0.0_dp; hb = 0.0_dp; gb = 0.0_dp; rc = 0.0_dp
-    gc = 0.0_dp
     eac = unit(fiac)
     u = 0.0_dp
     u(:, 2) = unit(fi3)
@@ -483,11 +470,9 @@ contains
   subroutine dnma4_kernel(fim, eta2, fin, eta3, bs2, bs3, m2, q2, g2, m3, q3, g3, &
                           ra, ha, ga, rb, gb, rc, hc, gc, ier)
     real(dp), intent(in) :: fim, eta2, fin, eta3, bs2, bs3, m2, q2, g2, m3, q3, g3
-    real(dp), intent(out) :: ra, ha, ga, rb, gb, rc, hc, gc
+    real(dp), intent(inout) :: ra, ha, ga, rb, gb, rc, hc, gc
     integer, intent(out) :: ier
     real(dp) :: r(3, 3), u1(2), u3(2)
-    ra = 0.0_dp; ha = 0.0_dp; ga = 0.0_dp; rb = 0.0_dp; gb = 0.0_dp; rc = 0.0_dp
-    hc = 0.0_dp; gc = 0.0_dp
     u1 = unit(fim)
     u3 = unit(fin)
     ier = gelg_status(-u1(2), -u3(2), u1(1), u3(1))
@@ -505,11 +490,9 @@ contains
   subroutine dnma5_kernel(eta3, fim, as2, as3, fias2, fias3, m2, q2, g2, m3, q3, g3, &
                           ra, ga, rb, hb, gb, rc, hc, gc, ier)
     real(dp), intent(in) :: eta3, fim, as2, as3, fias2, fias3, m2, q2, g2, m3, q3, g3
-    real(dp), intent(out) :: ra, ga, rb, hb, gb, rc, hc, gc
+    real(dp), intent(inout) :: ra, ga, rb, hb, gb, rc, hc, gc
     integer, intent(out) :: ier
     real(dp) :: r(3, 3), u1(2), u2(2)
-    ra = 0.0_dp; ga = 0.0_dp; rb = 0.0_dp; hb = 0.0_dp; gb = 0.0_dp; rc = 0.0_dp
-    hc = 0.0_dp; gc = 0.0_dp
     u1 = unit(fim)
     u2 = unit(fim + eta3)
     ier = gelg_status(-u1(2), -u2(2), u1(1), u2(1))
