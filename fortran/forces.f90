@@ -58,6 +58,23 @@ module forces
   ! adapter's coordinates (B, A).
   real(dp), parameter :: origin(2, 3) = 0.0_dp
 
+  ! The argument lines of the loads, shared by DNMAF1-DNMAF5 (loads_f) and DNMA1-DNMA5
+  ! (loads_q): gen_drivers puts them where a routine says !:insert.
+  !:define loads_f
+  !: XS2, YS2 : real -- Reduction point S2 of link 2 (m).
+  !: F2, G2 : real >= 0; real -- Resultant of the loads on link 2 (N, >= 0) and its
+  !:     direction (rad).
+  !: XS3, YS3, F3, G3 : real; real; real >= 0; real -- The same for link 3.
+  !: T2, T3 : real -- Main moments of the loads on links 2 and 3 about S2, S3 (N*m, CCW
+  !:     +).
+  !: AAA : flag -- The book's print flag; unused (the routine prints nothing).
+  !:end
+  !:define loads_q
+  !: M2, Q2, G2 : real; real >= 0; real -- Main moment (N*m, CCW +), resultant (N, >= 0)
+  !:     and its direction (rad) of the loads on link 2, reduced to S2.
+  !: M3, Q3, G3 : real; real >= 0; real -- The same for link 3, reduced to S3.
+  !:end
+
 contains
 
   ! ============================================================================
@@ -524,13 +541,7 @@ contains
     !:     2, 3), m.
     !: FIM : real -- Direction of the guide m of the prismatic pair C (slider 3 on link 4),
     !:     rad.
-    !: XS2, YS2 : real -- Reduction point S2 of link 2 (m).
-    !: F2, G2 : real >= 0; real -- Resultant of the loads on link 2 (N, >= 0) and its
-    !:     direction (rad).
-    !: XS3, YS3, F3, G3 : real; real; real >= 0; real -- The same for link 3.
-    !: T2, T3 : real -- Main moments of the loads on links 2 and 3 about S2, S3 (N*m, CCW
-    !:     +).
-    !: AAA : flag -- The book's print flag; unused (the routine prints nothing).
+    !:insert loads_f
     real(dp), intent(in) :: xa, ya, xb, yb, fim, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
                             aaa
     real(dp), intent(out) :: f21, g21, f23, g23, f34, g34, h34
@@ -573,13 +584,7 @@ contains
                     f21, g21, f23, g23, f34, g34, ier)
     !: XA, YA, XB, YB, XC, YC : real -- Centres of the revolutes A (link 2 on link 1), B
     !:     (links 2, 3) and C (link 3 on link 4), m.
-    !: XS2, YS2 : real -- Reduction point S2 of link 2 (m).
-    !: F2, G2 : real >= 0; real -- Resultant of the loads on link 2 (N, >= 0) and its
-    !:     direction (rad).
-    !: XS3, YS3, F3, G3 : real; real; real >= 0; real -- The same for link 3.
-    !: T2, T3 : real -- Main moments of the loads on links 2 and 3 about S2, S3 (N*m, CCW
-    !:     +).
-    !: AAA : flag -- The book's print flag; unused (the routine prints nothing).
+    !:insert loads_f
     real(dp), intent(in) :: xa, ya, xb, yb, xc, yc, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, &
                             t3, aaa
     real(dp), intent(out) :: f21, g21, f23, g23, f34, g34
@@ -627,13 +632,7 @@ contains
     !: FIM, FIN : real -- Directions of the guides of the prismatic pairs A (link 2 on link
     !:     1) and C (link 3 on link 4), rad.
     !: XB, YB : real -- Centre of the revolute B joining links 2 and 3, m.
-    !: XS2, YS2 : real -- Reduction point S2 of link 2 (m).
-    !: F2, G2 : real >= 0; real -- Resultant of the loads on link 2 (N, >= 0) and its
-    !:     direction (rad).
-    !: XS3, YS3, F3, G3 : real; real; real >= 0; real -- The same for link 3.
-    !: T2, T3 : real -- Main moments of the loads on links 2 and 3 about S2, S3 (N*m, CCW
-    !:     +).
-    !: AAA : flag -- The book's print flag; unused (the routine prints nothing).
+    !:insert loads_f
     real(dp), intent(in) :: fim, fin, xb, yb, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, aaa
     real(dp), intent(out) :: f21, g21, h21, f23, g23, f34, g34, h34
     integer, intent(out) :: ier
@@ -672,13 +671,7 @@ contains
     !:     on link 4), m.
     !: FI3 : real -- Direction of the guide on link 3 along which link 2 slides, rad
     !:     (printed ``F/3`` and ``F13``: ERRATA E-DNMAF3-1).
-    !: XS2, YS2 : real -- Reduction point S2 of link 2 (m).
-    !: F2, G2 : real >= 0; real -- Resultant of the loads on link 2 (N, >= 0) and its
-    !:     direction (rad).
-    !: XS3, YS3, F3, G3 : real; real; real >= 0; real -- The same for link 3.
-    !: T2, T3 : real -- Main moments of the loads on links 2 and 3 about S2, S3 (N*m, CCW
-    !:     +).
-    !: AAA : flag -- The book's print flag; unused (the routine prints nothing).
+    !:insert loads_f
     real(dp), intent(in) :: xa, ya, xc, yc, fi3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
                             aaa
     real(dp), intent(out) :: f21, g21, f23, g23, h23, f34, g34
@@ -726,13 +719,7 @@ contains
     !: FIM : real -- Direction of the guide of pair C (link 3 slides on link 4), rad.
     !: TT3 : real -- Direction of the inner guide (pair B, link 2 slides in link 3) relative
     !:     to FIM; its absolute direction is FIM + TT3.
-    !: XS2, YS2 : real -- Reduction point S2 of link 2 (m).
-    !: F2, G2 : real >= 0; real -- Resultant of the loads on link 2 (N, >= 0) and its
-    !:     direction (rad).
-    !: XS3, YS3, F3, G3 : real; real; real >= 0; real -- The same for link 3.
-    !: T2, T3 : real -- Main moments of the loads on links 2 and 3 about S2, S3 (N*m, CCW
-    !:     +).
-    !: AAA : flag -- The book's print flag; unused (the routine prints nothing).
+    !:insert loads_f
     real(dp), intent(in) :: xa, ya, fim, tt3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, aaa
     real(dp), intent(out) :: f21, g21, f32, g32, h32, f34, g34, h34
     integer, intent(out) :: ier
@@ -784,9 +771,7 @@ contains
     !: BS2, BS3 : real -- Signed distances from B to the reduction points: **S2 = B + BS2
     !:     e(FI2)** and **S3 = B + BS3 e(FI3)**, i.e. measured from B away from A (from C);
     !:     a point between A and B has a negative BS2 (ERRATA E-DNMA1-3).
-    !: M2, Q2, G2 : real; real >= 0; real -- Main moment (N*m, CCW +), resultant (N, >= 0)
-    !:     and its direction (rad) of the loads on link 2, reduced to S2.
-    !: M3, Q3, G3 : real; real >= 0; real -- The same for link 3, reduced to S3.
+    !:insert loads_q
     real(dp), intent(in) :: l2, fi2, l3, fi3, bs2, bs3, m2, q2, g2, m3, q3, g3
     real(dp), intent(out) :: ra, ga, rb, gb, rc, gc
     integer, intent(out) :: ier
@@ -846,9 +831,7 @@ contains
     !:     ``FIO`` in the body: ERRATA E-DNMA2-1), rad.
     !: BS2, BS3 : real -- Signed distances: **S2 = B + BS2 e(FI2)**, **S3 = B + BS3 e(FIO +
     !:     ETA)** (ERRATA E-DNMA2-3).
-    !: M2, Q2, G2 : real; real >= 0; real -- Main moment (N*m, CCW +), resultant (N, >= 0)
-    !:     and its direction (rad) of the loads on link 2, reduced to S2.
-    !: M3, Q3, G3 : real; real >= 0; real -- The same for link 3, reduced to S3.
+    !:insert loads_q
     real(dp), intent(in) :: l2, fi2, l3, eta, fio, bs2, bs3, m2, q2, g2, m3, q3, g3
     real(dp), intent(out) :: ra, ga, rb, gb, rc, hc, gc
     integer, intent(out) :: ier
@@ -904,9 +887,7 @@ contains
     !:     **A->C** (ERRATA E-DNMA3-4): the printed ``DUGL3(FIAC, -PID2, RAT)`` acts as
     !:     ``DUGL3(FIAC, +PID2, RAT)`` because Fortran's SIGN keeps only the magnitude of
     !:     its first argument.
-    !: M2, Q2, G2 : real; real >= 0; real -- Main moment (N*m, CCW +), resultant (N, >= 0)
-    !:     and its direction (rad) of the loads on link 2, reduced to S2.
-    !: M3, Q3, G3 : real; real >= 0; real -- The same for link 3, reduced to S3.
+    !:insert loads_q
     real(dp), intent(in) :: l2, eta2, fi3, cs2, fics2, cs3, fics3, ac, fiac, m2, q2, g2, m3, &
                             q3, g3
     real(dp), intent(out) :: ra, ga, rb, hb, gb, rc, gc
@@ -955,25 +936,13 @@ contains
   ! ERRATA: E-DNMA4-1 (FIM for FIN in HC's moment), E-DNMA-1 (HA, HC for zero forces).
   subroutine dnma4(fim, eta2, fin, eta3, bs2, bs3, m2, q2, g2, m3, q3, g3, &
                    ra, ha, ga, rb, gb, rc, hc, gc, ier)
-    !: FIM : real -- Directions of the guides of pairs A (link 2 on link 1) and C (link 3 on
-    !:     link 4).
-    !: ETA2 : real -- Directions of the lines B->S2, B->S3 relative to FIM and FIN.
-    !: FIN : real -- Directions of the guides of pairs A (link 2 on link 1) and C (link 3 on
-    !:     link 4).
-    !: ETA3 : real -- Directions of the lines B->S2, B->S3 relative to FIM and FIN.
-    !: BS2 : real -- Signed distances: **S2 = B + BS2 e(FIM + ETA2)**, **S3 = B + BS3 e(FIN
-    !:     + ETA3)** (ERRATA E-DNMA4-2).
-    !: BS3 : real -- Signed distances: **S2 = B + BS2 e(FIM + ETA2)**, **S3 = B + BS3 e(FIN
-    !:     + ETA3)** (ERRATA E-DNMA4-2).
-    !: M2 : real -- Main moment (N*m, CCW +), resultant (N, >= 0) and its direction (rad) of
-    !:     the loads on link 2, reduced to S2.
-    !: Q2 : real >= 0 -- Main moment (N*m, CCW +), resultant (N, >= 0) and its direction
-    !:     (rad) of the loads on link 2, reduced to S2.
-    !: G2 : real -- Main moment (N*m, CCW +), resultant (N, >= 0) and its direction (rad) of
-    !:     the loads on link 2, reduced to S2.
-    !: M3 : real -- The same for link 3, reduced to S3.
-    !: Q3 : real >= 0 -- The same for link 3, reduced to S3.
-    !: G3 : real -- The same for link 3, reduced to S3.
+    !: FIM : real -- Direction of the guide of pair A (link 2 on link 1), rad.
+    !: ETA2 : real -- Direction of the line B->S2 relative to FIM, rad.
+    !: FIN : real -- Direction of the guide of pair C (link 3 on link 4), rad.
+    !: ETA3 : real -- Direction of the line B->S3 relative to FIN, rad.
+    !: BS2, BS3 : real -- Signed distances: **S2 = B + BS2 e(FIM + ETA2)**, **S3 = B + BS3
+    !:     e(FIN + ETA3)** (ERRATA E-DNMA4-2).
+    !:insert loads_q
     real(dp), intent(in) :: fim, eta2, fin, eta3, bs2, bs3, m2, q2, g2, m3, q3, g3
     real(dp), intent(out) :: ra, ha, ga, rb, gb, rc, hc, gc
     integer, intent(out) :: ier
@@ -1020,9 +989,7 @@ contains
     !: AS2, AS3, FIAS2, FIAS3 : real >= 0; real >= 0; real; real -- Lengths (m, >= 0) and
     !:     directions of the segments joining A and the reduction points; the directions run
     !:     **from S to A**: S2 = A - AS2 e(FIAS2), S3 = A - AS3 e(FIAS3) (ERRATA E-DNMA5-3).
-    !: M2, Q2, G2 : real; real >= 0; real -- Main moment (N*m, CCW +), resultant (N, >= 0)
-    !:     and its direction (rad) of the loads on link 2, reduced to S2.
-    !: M3, Q3, G3 : real; real >= 0; real -- The same for link 3, reduced to S3.
+    !:insert loads_q
     real(dp), intent(in) :: eta3, fim, as2, as3, fias2, fias3, m2, q2, g2, m3, q3, g3
     real(dp), intent(out) :: ra, ga, rb, hb, gb, rc, hc, gc
     integer, intent(out) :: ier
