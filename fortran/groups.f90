@@ -73,8 +73,8 @@ contains
       d = p(:, 2) - p(:, 1)                    ! -(d x R) - C = -M2 (about p1)
       call coefficients(d(2), -d(1), -1.0_dp, ty(2), n2, a(1, 1), a(1, 2))
       b(1) = -moment(f2, m2, q2, p(:, 1))
-    else
-      call coefficients(-u(1, 1), -u(2, 1), 0.0_dp, ty(2), n2, a(1, 1), a(1, 2))   ! -R.u1 = -F2.u1
+    else                                       ! -R.u1 = -F2.u1
+      call coefficients(-u(1, 1), -u(2, 1), 0.0_dp, ty(2), n2, a(1, 1), a(1, 2))
       b(1) = -(f2(1)*u(1, 1) + f2(2)*u(2, 1))
     end if
     ! row 2: link 3 without pair 3
@@ -82,8 +82,8 @@ contains
       d = p(:, 2) - p(:, 3)                    ! d x R + C = -M3 (about p3)
       call coefficients(-d(2), d(1), 1.0_dp, ty(2), n2, a(2, 1), a(2, 2))
       b(2) = -moment(f3, m3, q3, p(:, 3))
-    else
-      call coefficients(u(1, 3), u(2, 3), 0.0_dp, ty(2), n2, a(2, 1), a(2, 2))     ! R.u3 = -F3.u3
+    else                                       ! R.u3 = -F3.u3
+      call coefficients(u(1, 3), u(2, 3), 0.0_dp, ty(2), n2, a(2, 1), a(2, 2))
       b(2) = -(f3(1)*u(1, 3) + f3(2)*u(2, 3))
     end if
     call cramer2(a, b, z, st)
