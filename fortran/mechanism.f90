@@ -42,8 +42,8 @@ module mechanism
   use prmtr, only: dp, st_ok, st_assembly, st_singular, st_range, st_missing, st_digits, &
                    norm2d
   use numerics, only: policy, failed
-  use groups, only: cram, cramer_set, cramer, crank_kernel, rigid_kernel, rrr_kernel, &
-                    rrp_kernel, rpr_kernel, prp_kernel, rpp_kernel
+  use groups, only: crank_kernel, rigid_kernel, rrr_kernel, rrp_kernel, rpr_kernel, &
+                    prp_kernel, rpp_kernel, kind_pairs, group_reactions
   implicit none
   private
   public :: mech_solve, mech_solve_many
@@ -497,132 +497,45 @@ contains
       owner = powner(p)
     end function owner
 
-    ! One group's reactions (the chapter 7 method): its six equilibrium equations (forces
-    ! and moment of link 2, of link 3) in the reactions of its three pairs -- 1 (the
-    ! outside on link 2), 2 (link 2 on link 3), 3 (the outside on link 3); a revolute's
-    ! unknowns are the force (fx, fy) at its joint, a slider's the normal force N (along its
-    ! sliding direction turned by +pi/2) and the couple C.  Pair 1 drops out of one
-    ! equation of link 2 (a revolute: the moment about its joint; a slider: the forces
-    ! along its direction), pair 3 out of one of link 3: two equations in pair 2's two
-    ! unknowns (numerics' Cramer kernel), then pairs 1 and 3 from the rest.
+    ! One group's reactions: its pairs' points, types and sliding directions and its two
+    ! links' loads (gathered about their first points) gathered for groups'
+    ! group_reactions (the chapter 7 kernel of every kind); the reactions scattered into
+    ! react and, opposite, onto the outside links.
     subroutine group_forces(k, kind, slot, i)
       integer, intent(in) :: k, kind, slot, i
       integer :: pt(3), ty(3), frl(3), l2, l3, j, st
-      real(dp) :: dir(2, 3), n2(2), a(2, 2), b(2), z(2), rel, r(2), c2, d(2), f(2), cp
-      real(dp) :: out(3, 3), mp, sc
-      type(cram) :: sys
+      real(dp) :: dir(2, 3), pp(2, 3), out(3, 3)
       l2 = gi(5, k); l3 = gi(6, k)
       call pairs(k, kind, pt, ty, dir, frl)
-      n2 = [-dir(2, 2), dir(1, 2)]
-      ! pair 2 as unknowns z: R = (z1, z2), C = 0 (revolute) or R = z1 n2, C = z2 (slider)
-      ! row 1: link 2 without pair 1
-      if (ty(1) == 0) then
-        d = x(:, pt(2)) - x(:, pt(1))           ! -(d x R) - C = -M2(about P1)
-        call coefficients(d(2), -d(1), -1.0_dp, ty(2), n2, a(1, :))
-        b(1) = -moment_about(l2, pt(1))
-      else
-        call coefficients(-dir(1, 1), -dir(2, 1), 0.0_dp, ty(2), n2, a(1, :))  ! -R.u1 = -F2.u1
-        b(1) = -(fl(1, l2)*dir(1, 1) + fl(2, l2)*dir(2, 1))
-      end if
-      ! row 2: link 3 without pair 3
-      if (ty(3) == 0) then
-        d = x(:, pt(2)) - x(:, pt(3))           ! d x R + C = -M3(about P3)
-        call coefficients(-d(2), d(1), 1.0_dp, ty(2), n2, a(2, :))
-        b(2) = -moment_about(l3, pt(3))
-      else
-        call coefficients(dir(1, 3), dir(2, 3), 0.0_dp, ty(2), n2, a(2, :))    ! R.u3 = -F3.u3
-        b(2) = -(fl(1, l3)*dir(1, 3) + fl(2, l3)*dir(2, 3))
-      end if
-      ! column scales: the entries' size (only the singularity test uses the estimate
-      ! here; it must not overflow for a mechanism of 1e200 m)
-      sc = max(abs(a(1, 1)), abs(a(1, 2)), abs(a(2, 1)), abs(a(2, 2)))
-      if (.not. (sc > 0.0_dp .and. sc <= huge(sc))) sc = 1.0_dp
-      call cramer_set(a(1, 1), a(1, 2), a(2, 1), a(2, 2), sys, sc, sc)
-      call cramer(sys, b(1), b(2), 0.0_dp, 0.0_dp, 0.0_dp, z(1), z(2), st, rel)
+      do j = 1, 3
+        pp(:, j) = x(:, pt(j))
+      end do
+      call group_reactions(pp, ty, dir, fl(:, l2), ml(l2), x(:, base(l2)), fl(:, l3), &
+                           ml(l3), x(:, base(l3)), out, st)
       if (st /= st_ok) then
         status(i) = st
         fgroup(i) = k
       end if
-      if (ty(2) == 0) then
-        r = z
-        c2 = 0.0_dp
-      else
-        r = z(1)*n2
-        c2 = z(2)
-      end if
-      out(:, 2) = [r(1), r(2), c2]
-      ! pair 1: F2 + f1 - R = 0 (and, a slider, its couple from the moment about P1)
-      f = r - fl(:, l2)
-      if (ty(1) == 0) then
-        out(:, 1) = [f(1), f(2), 0.0_dp]
-      else
-        call normal(f, dir(:, 1), out(:, 1))
-        d = x(:, pt(2)) - x(:, pt(1))
-        mp = moment_about(l2, pt(1))
-        out(3, 1) = -mp + (d(1)*r(2) - d(2)*r(1)) + c2
-      end if
-      ! pair 3: F3 + R + f3 = 0
-      f = -r - fl(:, l3)
-      if (ty(3) == 0) then
-        out(:, 3) = [f(1), f(2), 0.0_dp]
-      else
-        call normal(f, dir(:, 3), out(:, 3))
-        d = x(:, pt(2)) - x(:, pt(3))
-        mp = moment_about(l3, pt(3))
-        out(3, 3) = -mp - (d(1)*r(2) - d(2)*r(1)) - c2
-      end if
       do j = 1, 3
         react(:, slot + j - 1, i) = out(:, j)
         if (j /= 2 .and. frl(j) > 0) then
-          cp = out(3, j)
           call load(frl(j), pt(j), -out(1, j), -out(2, j))   ! the outside bears the opposite
-          ml(frl(j)) = ml(frl(j)) - cp
+          ml(frl(j)) = ml(frl(j)) - out(3, j)
         end if
       end do
-
     end subroutine group_forces
 
-    ! the coefficients of pair 2's unknowns in one equation: (cx, cy) multiply R (a
-    ! revolute's two unknowns; a slider's N through R = N n2) and cc its couple C
-    pure subroutine coefficients(cx, cy, cc, t2, n2, row)
-      real(dp), intent(in) :: cx, cy, cc, n2(2)
-      integer, intent(in) :: t2
-      real(dp), intent(out) :: row(2)
-      if (t2 == 0) then
-        row = [cx, cy]
-      else
-        row = [cx*n2(1) + cy*n2(2), cc]
-      end if
-    end subroutine coefficients
-
-    ! a slider's reaction f: its normal part (the guide takes no force along u)
-    pure subroutine normal(f, u, out)
-      real(dp), intent(in) :: f(2), u(2)
-      real(dp), intent(out) :: out(3)
-      real(dp) :: nn
-      nn = -f(1)*u(2) + f(2)*u(1)
-      out = [-nn*u(2), nn*u(1), 0.0_dp]
-    end subroutine normal
-
-    ! the moment of link l's loads about point p (they are gathered about its base)
-    real(dp) function moment_about(l, p)
-      integer, intent(in) :: l, p
-      integer :: b
-      b = base(l)
-      moment_about = ml(l) + (x(1, b) - x(1, p))*fl(2, l) - (x(2, b) - x(2, p))*fl(1, l)
-    end function moment_about
-
-    ! the pairs of a group: point, type (0 revolute, 1 slider, with its sliding direction),
-    ! the outside link of pairs 1 and 3
+    ! The pairs of a group, in group_reactions' order: their points, types (the kind's
+    ! declaration, groups' kind_pairs) and sliding directions, and the outside links of
+    ! pairs 1 and 3 (0: the frame)
     subroutine pairs(k, kind, pt, ty, dir, frl)
       integer, intent(in) :: k, kind
       integer, intent(out) :: pt(3), ty(3), frl(3)
       real(dp), intent(out) :: dir(2, 3)
       integer :: pb, pa, pc, l2, l3
-      real(dp) :: u(2)
       pb = gi(2, k); pa = gi(3, k); pc = gi(4, k); l2 = gi(5, k); l3 = gi(6, k)
       dir = 0.0_dp
-      ty = 0
+      ty = kind_pairs(:, kind)
       frl = 0
       select case (kind)
       case (1)
@@ -630,25 +543,20 @@ contains
         frl(1) = owner(pa); frl(3) = owner(pc)
       case (2)
         pt = [pa, pb, pb]
-        ty(3) = 1
         dir(:, 3) = [c(l3), s(l3)]
         frl(1) = owner(pa); frl(3) = gi(7, k)
       case (3)
         pt = [pa, pb, pc]
-        ty(2) = 1
         dir(:, 2) = [c(l3), s(l3)]
         frl(1) = owner(pa); frl(3) = owner(pc)
       case (4)
         pt = [pb, pb, pb]
-        ty(1) = 1; ty(3) = 1
         dir(:, 1) = [c(l2), s(l2)]
         dir(:, 3) = [c(l3), s(l3)]
         frl(1) = gi(7, k); frl(3) = gi(8, k)
-      case default
+      case (5)
         pt = [pb, pc, pc]
-        ty(1) = 1; ty(2) = 1
-        u = [c(l2), s(l2)]
-        dir(:, 1) = u
+        dir(:, 1) = [c(l2), s(l2)]
         dir(:, 2) = [c(l3), s(l3)]
         frl(1) = gi(7, k); frl(3) = owner(pc)
       end select
