@@ -109,9 +109,10 @@ def test_rrr_kernel(branch):
         d = mp.sqrt(d2)
         f = (d2 + mp.mpf(l2) ** 2 - mp.mpf(l3) ** 2) / (2 * d2)
         h = mp.sqrt(mp.mpf(l2) ** 2 / d2 - f * f)
-        cands = [(ax + f * (cx - ax) - s * h * (cy - ay), ay + f * (cy - ay) + s * h * (cx - ax))
-                 for s in (1, -1)]
-        bx, by = [b for b in cands if cross((cx - ax, cy - ay), (b[0] - ax, b[1] - ay)) * branch > 0][0]
+        cands = [(ax + f * (cx - ax) - s * h * (cy - ay),
+                  ay + f * (cy - ay) + s * h * (cx - ax)) for s in (1, -1)]
+        bx, by = [b for b in cands
+                  if cross((cx - ax, cy - ay), (b[0] - ax, b[1] - ay)) * branch > 0][0]
         return (bx, by, mp.atan2(by - ay, bx - ax), mp.atan2(by - cy, bx - cx))
 
     def ref_d(t):
