@@ -30,7 +30,7 @@ import warnings
 import numpy as np
 
 from . import _sarkp
-from .errors import AssemblyError, RangeError, SignificanceWarning, SingularError, Status
+from .errors import AssemblyError, RangeError, SarkpError, SignificanceWarning, SingularError, Status
 from .modes import MODE_CODE
 from .results import Result, result_type
 
@@ -1174,10 +1174,13 @@ class Mechanism:
         """omega(phi) and t(phi) of the crank under the mechanism's loads (a constant
         driving torque is ``m.torque(O, A, M)``), from its J_red and M_red
         (:func:`sarkp.dynamics.motion`): from ``omega0`` at phi[0] (0: from rest), or,
-        with ``omega_mean``, the steady state over one cycle (phi spanning exactly one)."""
+        with ``omega_mean``, the steady state over one cycle (phi spanning exactly one).
+        With designs (:attr:`designs`) every design from the same start, J and M from
+        one solve: the fields get a leading design axis (``phi`` stays the grid)."""
         from .dynamics import motion
         J, M = self._loads(phi, gravity)
-        return motion(phi, J, M, omega0=omega0, t0=t0, omega_mean=omega_mean)
+        return _each_design(lambda j, m: motion(phi, j, m, omega0=omega0, t0=t0,
+                                                omega_mean=omega_mean), J, M)
 
     def simulate(self, t, *, phi0=0.0, omega0=0.0, gravity=0.0, rtol=1e-8,
                  branches="continuous"):
@@ -1231,13 +1234,32 @@ class Mechanism:
         """The moment of inertia to add on the crank so that the steady state has the
         coefficient of speed fluctuation exactly ``delta`` (:func:`sarkp.dynamics.
         flywheel`; DMHVK's approximation beside it, the realized delta returned); phi:
-        one cycle (default 361 points over 0..2 pi)."""
+        one cycle (default 361 points over 0..2 pi).  With designs, a flywheel per
+        design: the fields get a leading design axis (``phi`` stays the grid)."""
         from .dynamics import flywheel
         if phi is None:
             phi = np.linspace(0.0, 2.0 * math.pi, 361)
         J, M = self._loads(phi, gravity)
-        return flywheel(phi, J, M, delta=delta, omega_mean=omega_mean,
-                        J_constant=J_constant)
+        return _each_design(lambda j, m: flywheel(phi, j, m, delta=delta,
+                                                  omega_mean=omega_mean,
+                                                  J_constant=J_constant), J, M)
+
+
+def _each_design(law, J, M):
+    """``law(J, M)`` of one mechanism, or, for J and M of shape (D, n), of each design,
+    stacked along a leading design axis (``phi`` shared); an error names the design."""
+    if np.ndim(J) < 2:
+        return law(J, M)
+    runs = []
+    for d in range(J.shape[0]):
+        try:
+            runs.append(law(J[d], M[d]))
+        except SarkpError as exc:
+            raise type(exc)(f"design {d}: {exc}", status=exc.status,
+                            index=(d,) + (exc.index or ())) from exc
+    first = runs[0]
+    return type(first)(*(getattr(first, f) if f == "phi" else
+                         np.stack([getattr(r, f) for r in runs]) for f in first._fields))
 
 
 def _field(name, doc):
