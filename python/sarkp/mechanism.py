@@ -1359,7 +1359,7 @@ class _MechanismBase(Result):
             return np.zeros(shape)
         x, y = fixed[name]
         xy = np.stack(np.broadcast_arrays(np.asarray(x, float), np.asarray(y, float)), -1)
-        if lead:
+        if lead and xy.ndim > 1:                 # a frame point given per design
             xy = xy.reshape(lead + (1,) * np.ndim(self.phi) + (2,))
         return np.broadcast_to(xy, shape).copy()
 
@@ -1514,14 +1514,39 @@ class _MechanismBase(Result):
         return cols, shape
 
     # -- pictures ---------------------------------------------------------------------
-    def _drawing(self):
+    def _drawing(self, design=None):
+        """(points, links, frame points) to draw: ``points`` {name: (x, y)} over the
+        positions, of one design (``design``, an index) or, for ``design="all"`` or a
+        sequence of indices, with a leading axis over those designs."""
         m = self.mechanism
-        if self._lead():
-            raise ValueError("plot/animate draw one mechanism: this result has "
-                             f"{self._lead()[0]} designs; solve one design to draw it")
+        lead = self._lead()
+        if not lead:
+            if design is not None:
+                raise ValueError(f"design={design!r}: this result has no designs (the "
+                                 f"mechanism's values are numbers, not arrays)")
+            pick = ...
+        elif design is None:
+            raise ValueError(f"this result has {lead[0]} designs: plot(design=i) or "
+                             f"animate(path, design=i) draws design i (0 to {lead[0] - 1}); "
+                             f"plot(design='all') overlays them")
+        elif isinstance(design, str):
+            if design != "all":
+                raise ValueError(f"design must be an index, a sequence of indices or "
+                                 f"'all', not {design!r}")
+            pick = slice(None)
+        else:
+            pick = np.asarray(design)
+            if pick.dtype.kind not in "iu" or pick.ndim > 1 or pick.size == 0 or not (
+                    (-lead[0] <= pick) & (pick < lead[0])).all():
+                raise ValueError(f"design must be an index from 0 to {lead[0] - 1}, a "
+                                 f"sequence of them or 'all', not {design!r}")
+            pick = int(pick) if pick.ndim == 0 else pick
         known = set(self.columns[0]) | set(self.columns[1])
-        pts = {n: (self.position(n)[..., 0], self.position(n)[..., 1])
-               for n in m.joints if n in known}
+        pts = {}
+        for n in m.joints:
+            if n in known:
+                p = self.position(n)[pick]
+                pts[n] = (p[..., 0], p[..., 1])
         links = []
         for lk in m._links[1:]:
             names = [n for n in lk.name if not n.startswith("\x00")]
@@ -1535,27 +1560,42 @@ class _MechanismBase(Result):
                 links.append(tuple(names))
         return pts, links, list(m._fixed)
 
-
-    def plot(self, position=0, *, every=None, paths=(), title="", ax=None):
+    def plot(self, position=0, *, design=None, every=None, paths=(), title="", ax=None):
         """The mechanism at one position (in colour) over the sweep (grey); returns the
-        matplotlib figure (sarkp.plot.mechanism)."""
+        matplotlib figure (sarkp.plot.mechanism).  A result with designs draws design
+        ``design`` (an index), or overlays the designs at that position
+        (``design="all"`` or a sequence of indices: sarkp.plot.designs)."""
         from . import plot
-        pts, links, fixed = self._drawing()
+        pts, links, fixed = self._drawing(design)
+        # frame points that carry a link are pivots; a guide's frame point is not
+        pivots = [f for f in fixed if any(f in link for link in links)]
+        if self._lead() and not isinstance(design, (int, np.integer)):
+            chosen = np.arange(self._lead()[0])[slice(None) if isinstance(design, str)
+                                                  else np.asarray(design)]
+            return plot.designs(pts, links, fixed=pivots, highlight=position, paths=paths,
+                                names=[f"design {d}" for d in chosen], title=title, ax=ax)
         n = int(np.size(self.phi))
         if every is None:
             every = max(1, n // 12)
-        # frame points that carry a link are pivots; a guide's frame point is not
-        pivots = [f for f in fixed if any(f in link for link in links)]
+        if not title and self._lead():
+            title = f"design {design} in its positions"
         return plot.mechanism(pts, links, fixed=pivots, highlight=position, every=every,
                               paths=paths, title=title, ax=ax)
 
-    def animate(self, path, *, fps=20, every=1, paths=(), title=""):
+    def animate(self, path, *, design=None, fps=20, every=1, paths=(), title=""):
         """An animation over the sweep written to ``path`` (.gif through Pillow, .mp4
         through ffmpeg: matplotlib's writers), each frame drawn as :meth:`plot` draws
-        (the joints' names, the title, the frame pivots): sarkp.plot.animate."""
+        (the joints' names, the title, the frame pivots): sarkp.plot.animate.  A
+        result with designs animates design ``design`` (an index)."""
         from . import plot
-        pts, links, fixed = self._drawing()
+        if self._lead() and not isinstance(design, (int, np.integer)):
+            raise ValueError(f"animate draws one design: this result has "
+                             f"{self._lead()[0]} designs, pass design=i (0 to "
+                             f"{self._lead()[0] - 1}); plot(design='all') overlays them")
+        pts, links, fixed = self._drawing(design)
         pivots = [f for f in fixed if any(f in link for link in links)]
+        if not title and self._lead():
+            title = f"design {design} in motion"
         return plot.animate(pts, links, path, fixed=pivots, paths=paths, title=title,
                             fps=fps, every=every)
 
