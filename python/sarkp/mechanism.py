@@ -1227,6 +1227,9 @@ class Mechanism:
             The step size collapses (a dead centre the motion cannot pass).
         """
         from .dynamics import simulate
+        if self.designs is not None:
+            raise ValueError(f"simulate integrates one mechanism: this one has "
+                             f"{self.designs} designs (describe one design to simulate it)")
         return simulate(self, t, phi0=phi0, omega0=omega0, gravity=gravity, rtol=rtol,
                         branches=branches)
 
