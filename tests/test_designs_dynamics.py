@@ -109,3 +109,11 @@ def test_a_single_design_keeps_its_result():
     """Without designs the result is motion's own (numbers where they were numbers)."""
     r = machine().motion(PHI, omega0=4.0)
     assert r.omega.shape == PHI.shape and np.ndim(r.E0) == 0
+
+
+def test_simulate_with_designs_says_it_takes_one():
+    """simulate integrates one mechanism in time (its steps adapt to that mechanism):
+    a clear error, not numpy's "only 0-dimensional arrays can be converted"."""
+    with pytest.raises(ValueError, match="simulate integrates one mechanism: this one "
+                                         "has 3 designs"):
+        designs().simulate(np.linspace(0.0, 1.0, 11))
