@@ -305,7 +305,7 @@ def test_printout_as_printed_pictures_corrected_by_default(tmp_path, capsys):
 # ---- sarkp.plot as a matplotlib user expects it ------------------------------------------------
 
 def test_public_names():
-    assert set(plot.__all__) == {"mechanism", "animate", "diagrams", "cam_profile",
+    assert set(plot.__all__) == {"mechanism", "designs", "animate", "diagrams", "cam_profile",
                                  "cam_diagrams",
                                  "reaction_hodograph", "speed_diagram", "gear_mesh",
                                  "internal_mesh", "save",
@@ -607,3 +607,113 @@ def test_cam_profile_roller_default_working_profile():
         errors.append(np.max(np.abs(line.get_xdata() - x)))
     assert errors[1] < errors[0] / 3.0
     assert errors[1] < 1e-3 * 0.01                      # a thousandth of the roller
+
+
+# ---- results with designs (a Mechanism whose values are arrays over D designs) ---------------
+
+L2S = np.array([0.33, 0.35, 0.37])
+
+
+def _designs_four_bar(l2, n=37):
+    """The four-bar of _four_bar with coupler lengths ``l2`` (an array: designs) and a
+    frame pivot C given per design when ``l2`` is an array."""
+    m = sarkp.Mechanism()
+    m.fixed("O", 0.0, 0.0)
+    m.fixed("C", 0.32 + 0.0 * np.asarray(l2), 0.0)
+    m.crank("A", "O", 0.1)
+    m.rrr("B", "A", "C", l2, 0.3)
+    m.point("S", "A", "B", 0.1, 0.3)
+    return m.solve(np.linspace(0.0, 2 * np.pi, n), need="positions")
+
+
+def _lines(figure):
+    """The polylines drawn in colour (the links at the highlighted position): their
+    vertices, in drawing order."""
+    return [np.column_stack(line.get_data()) for line in figure.axes[0].lines
+            if line.get_marker() == "o" and len(line.get_xdata()) >= 2]
+
+
+def test_plot_of_one_design_is_the_plot_of_that_design_alone():
+    """plot(design=d) of a result with designs draws exactly what plot() of design d
+    solved alone draws: the same links at the same points, the same grey positions."""
+    together = _designs_four_bar(L2S)
+    for d in (0, 2, -1):
+        alone = _designs_four_bar(float(L2S[d]))
+        a, b = together.plot(design=d, position=7), alone.plot(position=7)
+        assert _title(a).strip() == f"design {d} in its positions"
+        for x, y in zip(a.axes[0].lines, b.axes[0].lines):
+            np.testing.assert_array_equal(x.get_xydata(), y.get_xydata())
+        assert len(a.axes[0].lines) == len(b.axes[0].lines)
+        assert sheet_problems(a) == []
+
+
+def test_plot_overlays_the_designs_at_one_position():
+    """design='all' draws every design at the position asked, each in its own colour
+    and named in the legend; a sequence of indices draws those designs."""
+    r = _designs_four_bar(L2S)
+    figure = r.plot(design="all", position=5, paths=("B",))
+    lines = _lines(figure)
+    k = len(r._drawing(0)[1])                        # three links a design: O-A, A-S-B, C-B
+    assert k == 3 and len(lines) == 3 * k
+    for d in range(3):
+        alone = _designs_four_bar(float(L2S[d]))
+        ours = np.concatenate(lines[k * d:k * d + k])
+        want = np.concatenate([[alone.position(n)[5] for n in link]
+                               for link in alone._drawing()[1]])
+        np.testing.assert_array_equal(ours, want)
+    legend = [t.get_text() for t in figure.axes[0].get_legend().get_texts()]
+    assert legend == ["path of B", "design 0", "design 1", "design 2"]
+    assert _title(figure).strip() == "3 designs at position 6"
+    assert sheet_problems(figure) == []
+    two = r.plot(design=[2, 0], position=5)
+    assert [t.get_text() for t in two.axes[0].get_legend().get_texts()] == [
+        "design 2", "design 0"]
+    np.testing.assert_array_equal(np.concatenate(_lines(two)[:k]),
+                                  np.concatenate(lines[2 * k:3 * k]))
+
+
+def test_plot_of_many_designs_has_a_colour_bar():
+    r = _designs_four_bar(np.linspace(0.33, 0.40, 12), n=13)
+    figure = r.plot(design="all")
+    assert figure.axes[0].get_legend() is None
+    assert len(figure.axes) == 2 and figure.axes[1].get_ylabel() == "design"
+    assert len(_lines(figure)) == 12 * 3
+
+
+def test_animate_one_design(tmp_path):
+    from PIL import Image
+    r = _designs_four_bar(L2S, n=25)
+    path = r.animate(tmp_path / "d.gif", design=1, every=8)
+    with Image.open(path) as gif:
+        assert gif.format == "GIF" and gif.n_frames == 4
+
+
+@pytest.mark.parametrize("call, message", [
+    (lambda r: r.plot(), r"3 designs: plot\(design=i\) .* \(0 to 2\); "
+                         r"plot\(design='all'\) overlays them"),
+    (lambda r: r.animate("x.gif"), r"animate draws one design: .* pass design=i \(0 to 2\)"),
+    (lambda r: r.animate("x.gif", design="all"), r"animate draws one design"),
+    (lambda r: r.plot(design=3), r"index from 0 to 2.*not 3"),
+    (lambda r: r.plot(design=1.0), r"index from 0 to 2.*not 1.0"),
+    (lambda r: r.plot(design=True), r"index from 0 to 2.*not True"),
+    (lambda r: r.plot(design="every"), r"or 'all', not 'every'"),
+    (lambda r: r.plot(design=[]), r"index from 0 to 2"),
+])
+def test_designs_drawn_only_when_named(call, message):
+    r = _designs_four_bar(L2S, n=13)
+    with pytest.raises(ValueError, match=message):
+        call(r)
+
+
+def test_design_of_a_result_without_designs_is_an_error():
+    with pytest.raises(ValueError, match="design=0: this result has no designs"):
+        _four_bar(13).plot(design=0)
+
+
+def test_a_shared_frame_point_of_a_result_with_designs():
+    """A frame point given by numbers in a mechanism with designs is at the same place
+    in every design (position() raised 'cannot reshape' before)."""
+    r = _designs_four_bar(L2S, n=13)
+    o = r.position("O")
+    assert o.shape == (3, 13, 2) and not o.any()
+    np.testing.assert_array_equal(r.position("C"), np.broadcast_to([0.32, 0.0], (3, 13, 2)))

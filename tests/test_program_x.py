@@ -732,7 +732,8 @@ def test_stage_alone_prints_only_that_stage():
 
 
 def test_task_card_without_a_mechanism(monkeypatch):
-    monkeypatch.setattr(prog_x, "X5", (0.82, 0.82, 0.82))
+    from sarkp.book import x_stages              # where the synthesis reads the task card
+    monkeypatch.setattr(x_stages, "X5", (0.82, 0.82, 0.82))
     with pytest.raises(sarkp.SarkpError, match="stage 'synthesis'.*DSNTZR"):
         prog_x.run(["kinematics"])
 
@@ -832,3 +833,35 @@ def test_corrected_cam_is_convex_with_the_books_radius_beside():
         book_cam = prog_x.run(["cam"])["cam"]
     assert book_cam["NCONC"] == int(np.sum(np.asarray(book_cam["ROK"]) < 0.0)) > 0
     assert f"{c['RKSH']:.6f}" in text and f"{book_cam['RKSH']:.6f}" in text
+
+
+def test_program_x_modules_import_no_circle():
+    """prog_x and its x_* modules form no import circle (issue 25): the stages are
+    x_stages', the constants x_data's, and neither imports prog_x.  The graph is read
+    from every import statement of the installed modules, inside functions too."""
+    import ast
+    from pathlib import Path
+    here = Path(book.__file__).parent
+    names = {p.stem for p in here.glob("*.py")}
+    graph = {}
+    for name in names:
+        seen = set()
+        for node in ast.walk(ast.parse((here / f"{name}.py").read_text(encoding="utf-8"))):
+            if isinstance(node, ast.ImportFrom) and node.level == 1:
+                targets = [node.module] if node.module else [a.name for a in node.names]
+                seen.update(t.split(".")[0] for t in targets)
+        graph[name] = seen & names
+
+    def reaches(start, goal):
+        todo, done = [start], set()
+        while todo:
+            for n in graph[todo.pop()] - done:
+                if n == goal:
+                    return True
+                done.add(n)
+                todo.append(n)
+        return False
+
+    ours = sorted(n for n in names if n == "prog_x" or n.startswith("x_"))
+    assert "x_stages" in ours and graph["x_mechanism"] >= {"x_stages"}
+    assert [n for n in ours if reaches(n, n)] == []

@@ -30,7 +30,7 @@ import warnings
 import numpy as np
 
 from . import _sarkp
-from .errors import AssemblyError, RangeError, SignificanceWarning, SingularError, Status
+from .errors import AssemblyError, RangeError, SarkpError, SignificanceWarning, SingularError, Status
 from .modes import MODE_CODE
 from .results import Result, result_type
 
@@ -1175,10 +1175,13 @@ class Mechanism:
         """omega(phi) and t(phi) of the crank under the mechanism's loads (a constant
         driving torque is ``m.torque(O, A, M)``), from its J_red and M_red
         (:func:`sarkp.dynamics.motion`): from ``omega0`` at phi[0] (0: from rest), or,
-        with ``omega_mean``, the steady state over one cycle (phi spanning exactly one)."""
+        with ``omega_mean``, the steady state over one cycle (phi spanning exactly one).
+        With designs (:attr:`designs`) every design from the same start, J and M from
+        one solve: the fields get a leading design axis (``phi`` stays the grid)."""
         from .dynamics import motion
         J, M = self._loads(phi, gravity)
-        return motion(phi, J, M, omega0=omega0, t0=t0, omega_mean=omega_mean)
+        return _each_design(lambda j, m: motion(phi, j, m, omega0=omega0, t0=t0,
+                                                omega_mean=omega_mean), J, M)
 
     def simulate(self, t, *, phi0=0.0, omega0=0.0, gravity=0.0, rtol=1e-8,
                  branches="continuous"):
@@ -1225,6 +1228,9 @@ class Mechanism:
             The step size collapses (a dead centre the motion cannot pass).
         """
         from .dynamics import simulate
+        if self.designs is not None:
+            raise ValueError(f"simulate integrates one mechanism: this one has "
+                             f"{self.designs} designs (describe one design to simulate it)")
         return simulate(self, t, phi0=phi0, omega0=omega0, gravity=gravity, rtol=rtol,
                         branches=branches)
 
@@ -1232,13 +1238,32 @@ class Mechanism:
         """The moment of inertia to add on the crank so that the steady state has the
         coefficient of speed fluctuation exactly ``delta`` (:func:`sarkp.dynamics.
         flywheel`; DMHVK's approximation beside it, the realized delta returned); phi:
-        one cycle (default 361 points over 0..2 pi)."""
+        one cycle (default 361 points over 0..2 pi).  With designs, a flywheel per
+        design: the fields get a leading design axis (``phi`` stays the grid)."""
         from .dynamics import flywheel
         if phi is None:
             phi = np.linspace(0.0, 2.0 * math.pi, 361)
         J, M = self._loads(phi, gravity)
-        return flywheel(phi, J, M, delta=delta, omega_mean=omega_mean,
-                        J_constant=J_constant)
+        return _each_design(lambda j, m: flywheel(phi, j, m, delta=delta,
+                                                  omega_mean=omega_mean,
+                                                  J_constant=J_constant), J, M)
+
+
+def _each_design(law, J, M):
+    """``law(J, M)`` of one mechanism, or, for J and M of shape (D, n), of each design,
+    stacked along a leading design axis (``phi`` shared); an error names the design."""
+    if np.ndim(J) < 2:
+        return law(J, M)
+    runs = []
+    for d in range(J.shape[0]):
+        try:
+            runs.append(law(J[d], M[d]))
+        except SarkpError as exc:
+            raise type(exc)(f"design {d}: {exc}", status=exc.status,
+                            index=(d,) + (exc.index or ())) from exc
+    first = runs[0]
+    return type(first)(*(getattr(first, f) if f == "phi" else
+                         np.stack([getattr(r, f) for r in runs]) for f in first._fields))
 
 
 def _field(name, doc):
@@ -1338,7 +1363,7 @@ class _MechanismBase(Result):
             return np.zeros(shape)
         x, y = fixed[name]
         xy = np.stack(np.broadcast_arrays(np.asarray(x, float), np.asarray(y, float)), -1)
-        if lead:
+        if lead and xy.ndim > 1:                 # a frame point given per design
             xy = xy.reshape(lead + (1,) * np.ndim(self.phi) + (2,))
         return np.broadcast_to(xy, shape).copy()
 
@@ -1493,14 +1518,39 @@ class _MechanismBase(Result):
         return cols, shape
 
     # -- pictures ---------------------------------------------------------------------
-    def _drawing(self):
+    def _drawing(self, design=None):
+        """(points, links, frame points) to draw: ``points`` {name: (x, y)} over the
+        positions, of one design (``design``, an index) or, for ``design="all"`` or a
+        sequence of indices, with a leading axis over those designs."""
         m = self.mechanism
-        if self._lead():
-            raise ValueError("plot/animate draw one mechanism: this result has "
-                             f"{self._lead()[0]} designs; solve one design to draw it")
+        lead = self._lead()
+        if not lead:
+            if design is not None:
+                raise ValueError(f"design={design!r}: this result has no designs (the "
+                                 f"mechanism's values are numbers, not arrays)")
+            pick = ...
+        elif design is None:
+            raise ValueError(f"this result has {lead[0]} designs: plot(design=i) or "
+                             f"animate(path, design=i) draws design i (0 to {lead[0] - 1}); "
+                             f"plot(design='all') overlays them")
+        elif isinstance(design, str):
+            if design != "all":
+                raise ValueError(f"design must be an index, a sequence of indices or "
+                                 f"'all', not {design!r}")
+            pick = slice(None)
+        else:
+            pick = np.asarray(design)
+            if pick.dtype.kind not in "iu" or pick.ndim > 1 or pick.size == 0 or not (
+                    (-lead[0] <= pick) & (pick < lead[0])).all():
+                raise ValueError(f"design must be an index from 0 to {lead[0] - 1}, a "
+                                 f"sequence of them or 'all', not {design!r}")
+            pick = int(pick) if pick.ndim == 0 else pick
         known = set(self.columns[0]) | set(self.columns[1])
-        pts = {n: (self.position(n)[..., 0], self.position(n)[..., 1])
-               for n in m.joints if n in known}
+        pts = {}
+        for n in m.joints:
+            if n in known:
+                p = self.position(n)[pick]
+                pts[n] = (p[..., 0], p[..., 1])
         links = []
         for lk in m._links[1:]:
             names = [n for n in lk.name if not n.startswith("\x00")]
@@ -1514,27 +1564,42 @@ class _MechanismBase(Result):
                 links.append(tuple(names))
         return pts, links, list(m._fixed)
 
-
-    def plot(self, position=0, *, every=None, paths=(), title="", ax=None):
+    def plot(self, position=0, *, design=None, every=None, paths=(), title="", ax=None):
         """The mechanism at one position (in colour) over the sweep (grey); returns the
-        matplotlib figure (sarkp.plot.mechanism)."""
+        matplotlib figure (sarkp.plot.mechanism).  A result with designs draws design
+        ``design`` (an index), or overlays the designs at that position
+        (``design="all"`` or a sequence of indices: sarkp.plot.designs)."""
         from . import plot
-        pts, links, fixed = self._drawing()
+        pts, links, fixed = self._drawing(design)
+        # frame points that carry a link are pivots; a guide's frame point is not
+        pivots = [f for f in fixed if any(f in link for link in links)]
+        if self._lead() and not isinstance(design, (int, np.integer)):
+            chosen = np.arange(self._lead()[0])[slice(None) if isinstance(design, str)
+                                                  else np.asarray(design)]
+            return plot.designs(pts, links, fixed=pivots, highlight=position, paths=paths,
+                                names=[f"design {d}" for d in chosen], title=title, ax=ax)
         n = int(np.size(self.phi))
         if every is None:
             every = max(1, n // 12)
-        # frame points that carry a link are pivots; a guide's frame point is not
-        pivots = [f for f in fixed if any(f in link for link in links)]
+        if not title and self._lead():
+            title = f"design {design} in its positions"
         return plot.mechanism(pts, links, fixed=pivots, highlight=position, every=every,
                               paths=paths, title=title, ax=ax)
 
-    def animate(self, path, *, fps=20, every=1, paths=(), title=""):
+    def animate(self, path, *, design=None, fps=20, every=1, paths=(), title=""):
         """An animation over the sweep written to ``path`` (.gif through Pillow, .mp4
         through ffmpeg: matplotlib's writers), each frame drawn as :meth:`plot` draws
-        (the joints' names, the title, the frame pivots): sarkp.plot.animate."""
+        (the joints' names, the title, the frame pivots): sarkp.plot.animate.  A
+        result with designs animates design ``design`` (an index)."""
         from . import plot
-        pts, links, fixed = self._drawing()
+        if self._lead() and not isinstance(design, (int, np.integer)):
+            raise ValueError(f"animate draws one design: this result has "
+                             f"{self._lead()[0]} designs, pass design=i (0 to "
+                             f"{self._lead()[0] - 1}); plot(design='all') overlays them")
+        pts, links, fixed = self._drawing(design)
         pivots = [f for f in fixed if any(f in link for link in links)]
+        if not title and self._lead():
+            title = f"design {design} in motion"
         return plot.animate(pts, links, path, fixed=pivots, paths=paths, title=title,
                             fps=fps, every=every)
 

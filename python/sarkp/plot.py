@@ -44,7 +44,7 @@ import textwrap
 
 import numpy as np
 
-__all__ = ["mechanism", "animate", "diagrams", "cam_profile", "cam_diagrams", "reaction_hodograph",
+__all__ = ["mechanism", "designs", "animate", "diagrams", "cam_profile", "cam_diagrams", "reaction_hodograph",
            "speed_diagram", "gear_mesh", "internal_mesh", "save", "mode_title", "FORMATS"]
 
 #: The file formats :func:`save` writes (the file's suffix is set to the format).
@@ -499,6 +499,103 @@ def mechanism(points, links, *, fixed=(), guide=None, highlight=0, every=1, path
     _place_labels(figure, labels)
     figure._sarkp_moving = moving
     return figure
+
+
+def designs(points, links, *, fixed=(), highlight=0, paths=(), names=None, title="",
+            ax=None):
+    """Several designs of one linkage overlaid, each at the same position.
+
+    Parameters
+    ----------
+    points : dict
+        ``{name: (x, y)}`` with x, y arrays of shape (D, n) over D designs and n
+        positions, (D,) for a point that does not move, or floats shared by every design
+        (m): the points of a :class:`sarkp.Mechanism` result with designs.
+    links, fixed, paths
+        As for :func:`mechanism`; ``paths`` are drawn for every design, thin, in its colour.
+    highlight : int
+        The position (index along n) at which every design is drawn.
+    names : sequence of str, optional
+        The designs' names in the legend (default "design 0", "design 1", ...); beyond
+        ten designs a colour bar over the designs' numbers replaces the legend.
+    title : str
+        The title (default: "D designs at position highlight + 1").
+    ax : matplotlib.axes.Axes, optional
+        Draw there instead of on a new figure.
+
+    Returns
+    -------
+    matplotlib.figure.Figure
+    """
+    xy = {n: (np.asarray(x, float), np.asarray(y, float)) for n, (x, y) in points.items()}
+    count = max([v[0].shape[0] for v in xy.values() if v[0].ndim >= 1] or [0])
+    if count == 0:
+        raise ValueError("points: no array over the designs (use mechanism() for one design)")
+    for name, (x, y) in xy.items():
+        if x.shape != y.shape or x.ndim > 2 or (x.ndim >= 1 and x.shape[0] != count):
+            raise ValueError(f"points[{name!r}]: x and y must be numbers or arrays of "
+                             f"shape (D,) or (D, n) over the {count} designs, not of "
+                             f"shapes {x.shape} and {y.shape}")
+    for link in links:
+        for name in link:
+            if name not in xy:
+                raise ValueError(f"links: {name!r} is not a name of points")
+    sizes = {v[0].shape[1] for v in xy.values() if v[0].ndim == 2}
+    if len(sizes) > 1 or not (-max(sizes or {1}) <= highlight < max(sizes or {1})):
+        raise ValueError(f"highlight = {highlight!r} must index the positions "
+                         f"{sorted(sizes) or [1]}")
+    names = [f"design {d}" for d in range(count)] if names is None else list(names)
+    if len(names) != count:
+        raise ValueError(f"names has {len(names)} names for {count} designs")
+
+    def at(name, d):
+        x, y = xy[name]
+        if x.ndim == 0:
+            return float(x), float(y)
+        if x.ndim == 1:
+            return x[d], y[d]
+        return x[d, highlight], y[d, highlight]
+    figure, (ax,) = _axes(ax, size=(7.5, 6.8))
+    allx = np.concatenate([np.ravel(v[0]) for v in xy.values()])
+    ally = np.concatenate([np.ravel(v[1]) for v in xy.values()])
+    size = 0.035 * max(np.nanmax(allx) - np.nanmin(allx), np.nanmax(ally) - np.nanmin(ally),
+                       1e-9)
+    many = count > 10
+    cmap = _colormap("viridis")
+    colour = [cmap(d / max(count - 1, 1)) if many else f"C{d}" for d in range(count)]
+    for d in range(count):
+        for name in paths:
+            x, y = xy[name]
+            if x.ndim == 2:
+                ax.plot(x[d], y[d], "-", color=colour[d], lw=0.9, alpha=0.6,
+                        label=f"path of {name}" if d == 0 and not many else None)
+        for i, link in enumerate(links):
+            c = [at(n, d) for n in link]
+            ax.plot([p[0] for p in c], [p[1] for p in c], "o-", color=colour[d], lw=1.8,
+                    ms=3, label=names[d] if i == 0 and not many else None)
+        for name in fixed:
+            _pivot(ax, *at(name, d), size)
+    labels = [_label(ax, name, at(name, 0), color="k", fontsize=9) for name in xy]
+    ax.set_aspect("equal", adjustable="datalim")
+    ax.set_xlabel("x, m")
+    ax.set_ylabel("y, m")
+    ax.grid(True, lw=0.3)
+    if many:
+        from matplotlib.cm import ScalarMappable
+        from matplotlib.colors import Normalize
+        bar = figure.colorbar(ScalarMappable(Normalize(0, count - 1), cmap), ax=ax,
+                              shrink=0.8)
+        bar.set_label("design")
+    else:
+        _legend(ax)
+    _title(figure, [ax], title or f"{count} designs at position {highlight + 1}")
+    _place_labels(figure, labels)
+    return figure
+
+
+def _colormap(name):
+    from matplotlib import colormaps
+    return colormaps[name]
 
 
 def _animation(points, links, *, fixed=(), paths=(), title="", guide=None, slider=None,

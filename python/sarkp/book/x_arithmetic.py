@@ -14,11 +14,11 @@ one reason an emulated cell can miss where the printed run did not).  Independen
 run's own errors are kept as the printed figures have them: DUSKR1's ``ABS(Y(1))``
 (E-DUSKR1-1), omega2 passed for omega4 (E-X-W4), the m3 term counted twice
 (E-X-IPR-1), delta = 0.01 (E-X-DELTA-1); the 13-argument DPRM2 call (L7512) is read
-as sarkp reads it (E-X-DPRM2-1).  The link lengths are :data:`prog_x.FITTED_LINKS`
+as sarkp reads it (E-X-DPRM2-1).  The link lengths are :data:`sarkp.book.x_data.FITTED_LINKS`
 (E-X-LINKS-1) converted to the arithmetic.
 
 ``run(arithmetic)`` returns the stages "kinematics", "forces", "dynamics" as
-:func:`sarkp.book.prog_x.stage_cells` takes them; ``figure_cells(number, arithmetic)``
+:func:`sarkp.book.x_stages.stage_cells` takes them; ``figure_cells(number, arithmetic)``
 Figs. 91, 94, 96 as cells.
 """
 
@@ -29,7 +29,7 @@ from functools import lru_cache
 
 import numpy as np
 
-from . import es_evm, x_data
+from . import es_evm, x_data, x_stages
 from .prog_ii_13 import _gelg_es_evm
 
 #: the arithmetics this module runs ("double": the same statements in IEEE double, the
@@ -75,7 +75,6 @@ LENGTHS = ("ROA", "RAB", "ROC", "RCD", "RDE")
 
 @lru_cache(maxsize=64)
 def _run(arithmetic: str, model, lengths) -> dict:
-    from . import prog_x
     R, fn = _number(arithmetic)
     if arithmetic == "es-evm":                        # the stated library model
         sin, cos, tan, atan, acos, sqrt = (es_evm.SIN, es_evm.COS, es_evm.TAN, es_evm.ATAN,
@@ -226,7 +225,7 @@ def _run(arithmetic: str, model, lengths) -> dict:
 
     from .. import as_printed
     with as_printed():
-        links = prog_x.synthesis()
+        links = x_stages.synthesis()
     if lengths is not None:
         links.update(zip(LENGTHS, lengths))
     roa, r2, roc = R(links["ROA"]), R(links["RAB"]), R(links["ROC"])
@@ -339,6 +338,5 @@ def _run(arithmetic: str, model, lengths) -> dict:
 
 def figure_cells(number: str, arithmetic: str = "es-evm") -> dict:
     """Fig. ``number`` (91, 94 or 96) of program X in ``arithmetic``, as cells."""
-    from . import prog_x
     stage = {"91": "kinematics", "94": "forces", "96": "dynamics"}[str(number)]
-    return prog_x.stage_cells(stage, run(arithmetic)[stage])
+    return x_stages.stage_cells(stage, run(arithmetic)[stage])

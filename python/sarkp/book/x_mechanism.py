@@ -7,7 +7,7 @@ of A->C, branch +1 here), the lever point D on link C-B at RCD from C opposite B
 (L7510), and the group D-E with the slider E on the horizontal guide through (0, H5 + YC)
 (DPRM2 with FIM = 0: E ahead of the foot of the perpendicular from D, branch +1).
 
-Masses as L7542-7550 (:func:`sarkp.book.prog_x.masses`): link 2 at its middle, the lever
+Masses as L7542-7550 (:func:`sarkp.book.x_stages.masses`): link 2 at its middle, the lever
 B-C-D with its centre 0.15 RCD from C towards D, link 4 at 0.3 RDE from D, the slider
 5 at E; the forces stage's loads: the weights (g = 9.81) and the resistance FS on the
 slider against x (2000 N while W3 < 0, the working stroke, 400 N otherwise; L7551).
@@ -26,7 +26,7 @@ import math
 import numpy as np
 
 from ..mechanism import Mechanism
-from . import prog_x
+from . import x_data, x_stages
 
 
 def mechanism(links: dict, resistance=None, *, crank_inertia: bool = False) -> Mechanism:
@@ -37,16 +37,16 @@ def mechanism(links: dict, resistance=None, *, crank_inertia: bool = False) -> M
     roa, rab, roc = links["ROA"], links["RAB"], links["ROC"]
     rcd = links["RCD"]
     rde = links["RDE"]
-    xc, yc = -roc * math.sin(prog_x.DELTA), roc * math.cos(prog_x.DELTA)   # formula 27
+    xc, yc = -roc * math.sin(x_data.DELTA), roc * math.cos(x_data.DELTA)   # formula 27
     m = Mechanism()
     m.fixed("O", 0.0, 0.0)
     m.fixed("C", xc, yc)
-    m.fixed("K", 0.0, prog_x.H5 + yc)
+    m.fixed("K", 0.0, x_data.H5 + yc)
     m.crank("A", "O", roa)
     m.rrr("B", "A", "C", rab, rcd, branch=1)
     m.point("D", "C", "B", rcd, math.pi)
     m.rrp("E", "D", "K", 0.0, rde, branch=1)
-    w = prog_x.masses(links)
+    w = x_stages.masses(links)
     if crank_inertia:
         m.mass("O", "A", mass=0.0, inertia=w["IS1"])
     m.mass("A", "B", mass=w["M2"], inertia=w["IS2"], centre=0.5 * rab)
@@ -67,13 +67,13 @@ def solve(links: dict, angles=None) -> dict:
     """Kinematics, static forces and J_red of program X's mechanism from Mechanism
     solves, with the book's names (the corrected path's conventions: directions as
     atan2 gives them, moduli >= 0)."""
-    f = prog_x.crank_angles() if angles is None else np.asarray(angles, dtype=float)
-    w1 = prog_x.W1
+    f = x_stages.crank_angles() if angles is None else np.asarray(angles, dtype=float)
+    w1 = x_data.W1
     kin = mechanism(links).solve(f, omega=w1, epsilon=0.0, need="accelerations")
     w3 = kin.omega("C", "B")
     fs = np.where(w3 < 0.0, 2000.0, 400.0)                     # IF(W3(K))15,16,16
     m = mechanism(links, fs)
-    st = m.solve(f, omega=0.0, epsilon=0.0, need="forces", gravity=prog_x.G)
+    st = m.solve(f, omega=0.0, epsilon=0.0, need="forces", gravity=x_data.G)
     out = {"FI1": f, "FI2": kin.angle("A", "B"), "FICB": kin.angle("C", "B"),
            "XE": kin.position("E")[..., 0], "YE": kin.position("E")[..., 1],
            "FIDE": kin.angle("D", "E"), "XB": kin.position("B")[..., 0],
@@ -106,9 +106,9 @@ def flywheel(links: dict, delta: float | None = None, positions: int = 361):
     ``delta``: the program's corrected 0.02 by default.  Returns the
     :class:`sarkp.dynamics.Flywheel` (exact J_flywheel, DMHVK's J_merkalov, the realized
     delta)."""
-    delta = prog_x.DELTA_FLYWHEEL["corrected"] if delta is None else delta
+    delta = x_data.DELTA_FLYWHEEL["corrected"] if delta is None else delta
     phi = np.linspace(0.0, 2.0 * math.pi, positions)
     w3 = mechanism(links).solve(phi, omega=1.0, need="velocities").omega("C", "B")
     fs = np.where(w3 < 0.0, 2000.0, 400.0)
     m = mechanism(links, fs, crank_inertia=True)
-    return m.flywheel(delta, prog_x.W1, phi, gravity=prog_x.G)
+    return m.flywheel(delta, x_data.W1, phi, gravity=x_data.G)

@@ -12,6 +12,7 @@ import math
 import numpy as np
 
 import sarkp
+from . import x_data, x_stages
 
 
 def design(done: dict) -> dict:
@@ -20,7 +21,7 @@ def design(done: dict) -> dict:
     rocker's extreme positions) and the coefficient of speed change it realizes, over a
     fine sweep of the mechanism (:func:`sarkp.book.x_mechanism.mechanism`); with the
     dynamics, the delta the flywheel realizes."""
-    from . import prog_x, x_mechanism
+    from . import x_mechanism
     out = {}
     if "kinematics" in done:
         # the six-bar as a sarkp.Mechanism (x_mechanism), swept in one compiled call
@@ -30,7 +31,7 @@ def design(done: dict) -> dict:
         fine = np.linspace(0.0, 2.0 * math.pi, 3601)
         with mode("corrected"):
             k = x_mechanism.mechanism(done["synthesis"]).solve(
-                fine, omega=prog_x.W1, epsilon=0.0, need="velocities")
+                fine, omega=x_data.W1, epsilon=0.0, need="velocities")
         xe = k.position("E")[..., 0]
         ficb = np.unwrap(k.angle("C", "B"))            # continuous through +-pi
         out["stroke"] = float(xe.max() - xe.min())
@@ -39,24 +40,23 @@ def design(done: dict) -> dict:
         i = np.flatnonzero(np.sign(w3[:-1]) != np.sign(w3[1:]))
         zeros = fine[i] - w3[i] * (fine[i + 1] - fine[i]) / (w3[i + 1] - w3[i])
         if zeros.size != 2:
-            raise prog_x.StageError(f"program X, stage 'kinematics' (Fig. 91): link 3 stops "
-                                    f"{zeros.size} times per turn, not twice: the "
-                                    f"mechanism is no crank-rocker")
+            raise x_stages.StageError(f"program X, stage 'kinematics' (Fig. 91): link 3 "
+                                      f"stops {zeros.size} times per turn, not twice: "
+                                      f"the mechanism is no crank-rocker")
         inside = (zeros[1] - zeros[0]) / (2.0 * math.pi)
         work = inside if w3[i[0] + 1] < 0.0 else 1.0 - inside
         out["working_stroke_deg"] = 360.0 * work
         out["K_realized"] = max(work, 1 - work) / min(work, 1 - work)
     if "dynamics" in done:
         w = done["dynamics"]["WPRM"]
-        out["delta_realized"] = float((w.max() - w.min()) / prog_x.W1)
+        out["delta_realized"] = float((w.max() - w.min()) / x_data.W1)
     return out
 
 
 def corrected_report(done: dict, stages) -> str:
     """Where the corrected design differs from the book's run, and its measures."""
-    from . import prog_x
     with sarkp.as_printed():
-        book = prog_x.run([s for s in stages if s in prog_x.STAGES])
+        book = x_stages.run([s for s in stages if s in x_data.STAGES])
         cb = design(book)
     c = design(done)
     lines = ["CORRECTED DESIGN (sarkp --mode corrected) AGAINST THE BOOK'S RUN",
