@@ -458,7 +458,15 @@ contains
         p = spp(1, j); q = spp(2, j)
         dl = x(:, q) - x(:, p)
         dn = norm2d(dl(1), dl(2))
-        if (dn == 0.0_dp) cycle
+        if (dn == 0.0_dp) then
+          ! the ends meet: a force k (0 - L0) /= 0 has no direction here, the position
+          ! fails (fgroup = -j names the spring); with k L0 = 0 there is no force to drop
+          if (spv(1, j, js)*spv(2, j, js) /= 0.0_dp) then
+            status(i) = st_singular
+            fgroup(i) = -j
+          end if
+          cycle
+        end if
         ff = spv(1, j, js)*(dn - spv(2, j, js))   ! tension > 0 pulls P towards Q
         dl = dl/dn
         call load(spl(1, j), p, ff*dl(1), ff*dl(2))

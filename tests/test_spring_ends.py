@@ -9,9 +9,10 @@ form (the drive balances the spring's moment about O):
     M_b(phi) = k (d - L0) r**2 sin(phi) / d,   d = |F - A| = 2 r |sin(phi/2)|,
 
 which tends to -k L0 r from phi > 0 and to +k L0 r from phi < 0: a jump of 2 k L0 r.
-At phi = 0 the force step (fortran/mechanism.f90, subroutine forces: ``if (dn == 0.0_dp)
-cycle`` in the loop over the springs) leaves the spring out and reports status OK with
-M_b = 0 -- a number that is neither limit, without a word.
+At phi = 0 the force step (fortran/mechanism.f90, subroutine forces) used to leave the
+spring out and report status OK with M_b = 0 -- a number that is neither limit, without a
+word.  The position now fails: SingularError naming the spring, or NaN and status
+SINGULAR with on_error="nan".
 """
 
 import math
@@ -49,17 +50,16 @@ def test_either_side_of_the_meeting_the_closed_form():
     assert r.balancing_moment[2] == pytest.approx(K * L0 * R, rel=1e-7)
 
 
-@pytest.mark.xfail(strict=True, raises=AssertionError, reason=(
-    "the force step skips a spring whose ends meet at a position (mechanism.f90 forces(): "
-    "'if (dn == 0.0_dp) cycle'); status OK with M_b = 0 there.  Not fixed: the Fortran is "
-    "h25e's; the fix proposed is a failed position (SINGULAR) when k (0 - L0) != 0"))
 def test_a_spring_compressed_to_a_point_is_not_silently_dropped():
     """At phi = 0 the spring's force k L0 has no direction: the position must fail
-    (SingularError; NaN and status SINGULAR with on_error="nan"), not give M_b = 0.
-    Measured today: status OK, M_b = 0.0 exactly (the limits are -+2.0 N m)."""
+    (SingularError; NaN and status SINGULAR with on_error="nan"), not give M_b = 0
+    (what it gave before: status OK, M_b = 0.0 exactly; the limits are -+2.0 N m)."""
     r = machine().solve([0.0, 0.5], omega=0.0, need="forces", on_error="nan")
     assert r.status[1] == 0 and r.balancing_moment[1] == pytest.approx(balancing(0.5))
     assert r.status[0] == sarkp.Status.SINGULAR, (int(r.status[0]), r.balancing_moment[0])
+    assert np.isnan(r.balancing_moment[0])
+    with pytest.raises(sarkp.SingularError, match="spring 'A'-'F'.*phi = 0.0"):
+        machine().solve([0.5, 0.0], omega=0.0, need="forces")
 
 
 def test_a_spring_without_a_force_at_the_meeting_is_fine():

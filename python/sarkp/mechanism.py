@@ -1145,6 +1145,12 @@ class Mechanism:
             i = int(np.argmax(failed))
             code = int(st[i])
             text, index = where(i)
+            if fg[i] < 0:               # the force step: spring -fg[i] with meeting ends
+                names = {k: nm for nm, k in self._points.items()}
+                p, q = self._springs[-int(fg[i]) - 1][:2]
+                raise SingularError(f"the spring {names[p]!r}-{names[q]!r}: its ends meet "
+                                    f"{text}, and its force k L0 has no direction there",
+                                    index=index)
             what = self._step_text(int(fg[i])) if fg[i] else "the mechanism"
             if code == Status.ASSEMBLY:
                 raise AssemblyError(f"{what} does not assemble {text}: the links do not "
