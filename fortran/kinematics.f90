@@ -184,7 +184,8 @@ contains
     !: XK, YK : real -- Any point of the guide axis, m.
     !: FIM : real -- Direction of the guide, rad. It also selects the branch (L1543, "FIM is
     !:     chosen along AB from A to B"): B lies ahead, in the direction FIM, of the foot of
-    !:     the perpendicular from A; pass ``FIM + pi`` for the other branch.
+    !:     the perpendicular from A, as ``Mechanism.rrp(..., angle=FIM, branch=+1)`` places
+    !:     it; pass ``FIM + pi`` for the other branch (``branch=-1``).
     !: RZ2 : length -- Length AB, m (> 0).
     !: RZ3, T : real >= 0; real -- Linear (m, >= 0) and angular (rad) size of the slider:
     !:     the offset of B from the guide axis is ``RZ3*sin(T)``.
@@ -652,26 +653,9 @@ contains
     real(dp), intent(in) :: aa, ba, abm, bvm, abk, bvk, rz2, fi2, w2, fim, aaa
     real(dp), intent(out) :: abat, vbat, abvm, bvbm, e2, ab, bb
     integer, intent(out) :: ier
-    real(dp) :: y1, y2, a, b, an2, sb, rel
-    abat = 0.0_dp; vbat = 0.0_dp; abvm = 0.0_dp; bvbm = 0.0_dp; e2 = 0.0_dp; ab = 0.0_dp
-    bb = 0.0_dp
-    an2 = w2**2*rz2
-    sb = abs(aa) + abs(abm) + abs(abk) + an2
-    call solve2e(cos(fi2 + pid2), -cos(fim), sin(fi2 + pid2), -sin(fim), &
-                 abm*cos(bvm) + abk*cos(bvk) - aa*cos(ba) - an2*cos(fi2 - pi), &
-                 abm*sin(bvm) + abk*sin(bvk) - aa*sin(ba) - an2*sin(fi2 - pi), &
-                 4.0_dp*uround*(2.0_dp + max(abs(fi2), abs(fim))), &
-                 4.0_dp*uround*(4.0_dp + max(abs(ba), abs(bvm), abs(bvk), abs(fi2)))*sb, sb, &
-                 y1, y2, ier, rel)
-    if (failed(ier)) return
-    vbat = dugl3(fi2, pid2, y1)
-    abat = abs(y1)
-    bvbm = dugl4(fim, pi, y2)
-    abvm = abs(y2)
-    e2 = domega(rz2, abat, vbat - fi2)
-    call dsmvkt(aa, ba, an2, fi2 - pi, a, b)
-    call dsmvkt(a, b, abat, vbat, ab, bb)
-    ier = settle(ier, rel, [abat, abvm, e2, ab])
+    ! the turning side A-B (a_A, link AB), the sliding side the guide (a_BM, Coriolis)
+    call turn_slide(aa, ba, rz2, fi2, w2, abm, bvm, abk, bvk, fim, .true., &
+                    abat, vbat, abvm, bvbm, e2, ab, bb, ier)
   end subroutine duskr2
 
   ! IV.12 DUSKR3, L2150-2184 (Table 18, Fig. 26).  Kind 3 accelerations:
@@ -692,27 +676,60 @@ contains
     real(dp), intent(in) :: aa, ba, ac, bc, fi3, w3, rzac, fica, aa3ak, ba3ak, aaa
     real(dp), intent(out) :: aa3ar, ba3ar, aa3ct, ba3ct, e3, aa3, ba3
     integer, intent(out) :: ier
-    real(dp) :: y1, y2, a, b, an3, sb, rel
-    aa3ar = 0.0_dp; ba3ar = 0.0_dp; aa3ct = 0.0_dp; ba3ct = 0.0_dp; e3 = 0.0_dp; aa3 = 0.0_dp
-    ba3 = 0.0_dp
-    an3 = w3**2*rzac
-    sb = abs(aa) + abs(ac) + abs(aa3ak) + an3
-    call solve2e(cos(fi3), -cos(fica + pid2), sin(fi3), -sin(fica + pid2), &
-                 ac*cos(bc) + an3*cos(fica - pi) - aa*cos(ba) - aa3ak*cos(ba3ak), &
-                 ac*sin(bc) + an3*sin(fica - pi) - aa*sin(ba) - aa3ak*sin(ba3ak), &
-                 4.0_dp*uround*(2.0_dp + max(abs(fi3), abs(fica))), &
-                 4.0_dp*uround*(4.0_dp + max(abs(ba), abs(bc), abs(ba3ak), abs(fica)))*sb, sb, &
-                 y1, y2, ier, rel)
-    if (failed(ier)) return
-    ba3ar = dugl4(fi3, pi, y1)
-    aa3ar = abs(y1)
-    ba3ct = dugl3(fica, pid2, y2)
-    aa3ct = abs(y2)
-    e3 = domega(rzac, aa3ct, ba3ct - fica)
-    call dsmvkt(ac, bc, an3, fica - pi, a, b)
-    call dsmvkt(a, b, aa3ct, ba3ct, aa3, ba3)
-    ier = settle(ier, rel, [aa3ar, aa3ct, e3, aa3])
+    ! the turning side C-A3 (a_C, C -> A on link 3), the sliding side A (a_A, Coriolis)
+    call turn_slide(ac, bc, rzac, fica, w3, aa, ba, aa3ak, ba3ak, fi3, .false., &
+                    aa3ct, ba3ct, aa3ar, ba3ar, e3, aa3, ba3, ier)
   end subroutine duskr3
+
+  ! DUSKR2 and DUSKR3 solve one equation (written once here): a point reached two ways,
+  !   a_P + a^n + a^t  (turning: P's acceleration, then a link of length R, direction FR,
+  !                     angular velocity W, about P)
+  !   = a_Q + a^k + a^r (sliding: Q's acceleration, the Coriolis term, and a^r along FS).
+  ! Returned: a^t (AT, BT), a^r (AR, BR), the link's E and the point's acceleration
+  ! a_P + a^n + a^t (AX, BX).  TFIRST: the printed unknowns are (a^t, a^r) with the
+  ! right-hand side a_Q + a^k - a_P - a^n (DUSKR2, L2098-2104); otherwise (a^r, a^t) with
+  ! a_P + a^n - a_Q - a^k (DUSKR3, L2161-2168).  Each keeps the printed order of terms.
+  subroutine turn_slide(ap, bp, r, fr, w, aq, bq, ak, bk, fs, tfirst, at, bt, ar, br, e, &
+                        ax, bx, ier)
+    real(dp), intent(in) :: ap, bp, r, fr, w, aq, bq, ak, bk, fs
+    logical, intent(in) :: tfirst
+    real(dp), intent(out) :: at, bt, ar, br, e, ax, bx
+    integer, intent(out) :: ier
+    real(dp) :: an, sb, da, db, y1, y2, yt, yr, rel, a, b
+    at = 0.0_dp; bt = 0.0_dp; ar = 0.0_dp; br = 0.0_dp; e = 0.0_dp; ax = 0.0_dp; bx = 0.0_dp
+    an = w**2*r
+    sb = abs(ap) + abs(aq) + abs(ak) + an
+    da = 4.0_dp*uround*(2.0_dp + max(abs(fr), abs(fs)))
+    db = 4.0_dp*uround*(4.0_dp + max(abs(bp), abs(bq), abs(bk), abs(fr)))*sb
+    if (tfirst) then
+      call solve2e(cos(fr + pid2), -cos(fs), sin(fr + pid2), -sin(fs), &
+                   aq*cos(bq) + ak*cos(bk) - ap*cos(bp) - an*cos(fr - pi), &
+                   aq*sin(bq) + ak*sin(bk) - ap*sin(bp) - an*sin(fr - pi), &
+                   da, db, sb, y1, y2, ier, rel)
+      yt = y1
+      yr = y2
+    else
+      call solve2e(cos(fs), -cos(fr + pid2), sin(fs), -sin(fr + pid2), &
+                   ap*cos(bp) + an*cos(fr - pi) - aq*cos(bq) - ak*cos(bk), &
+                   ap*sin(bp) + an*sin(fr - pi) - aq*sin(bq) - ak*sin(bk), &
+                   da, db, sb, y1, y2, ier, rel)
+      yr = y1
+      yt = y2
+    end if
+    if (failed(ier)) return
+    bt = dugl3(fr, pid2, yt)
+    at = abs(yt)
+    br = dugl4(fs, pi, yr)
+    ar = abs(yr)
+    e = domega(r, at, bt - fr)
+    call dsmvkt(ap, bp, an, fr - pi, a, b)
+    call dsmvkt(a, b, at, bt, ax, bx)
+    if (tfirst) then
+      ier = settle(ier, rel, [at, ar, e, ax])
+    else
+      ier = settle(ier, rel, [ar, at, e, ax])
+    end if
+  end subroutine turn_slide
 
   ! IV.13 DUSKR4, L2221-2275 (Table 19, Fig. 27).  Kind 4 accelerations:
   ! a_BM + a^k_M + a^r_M = a_BN + a^k_N + a^r_N; the guide points under B accelerate as
@@ -1010,7 +1027,8 @@ contains
     !:     guide).
     !: P : branch -- Branch: +1 puts B ahead of the foot of the perpendicular from A along
     !:     FIM, -1 behind: ``DKNMA2(FIM, P=1) = DPRM2(FIM)``, ``DKNMA2(FIM, P=-1) =
-    !:     DPRM2(FIM + pi)``.
+    !:     DPRM2(FIM + pi)``; P is the branch of ``Mechanism.rrp(..., angle=FIM,
+    !:     offset=RZ3*sin(ETA))``.
     !: ANALOG : real = 0.0 -- 1.0: stop after the velocities (the book's way of skipping the
     !:     acceleration work, e.g. for velocity analogues); the acceleration outputs are
     !:     then 0. Anything else: compute the accelerations too.
