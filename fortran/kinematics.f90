@@ -61,19 +61,28 @@
 ! E-DKNMA4-5 for the directions the book took from absolute coordinates); lengths of
 ! 1e-300 or 1e300 neither underflow nor overflow where the answer is a double.
 !
-! Corrected mode, for speed (issue 9; the same mathematics, no ERRATA entry): DPRM1 and
-! DKNMA1 take B from the triangle's apex (tri_apex) instead of a cosine and a sine of FI2,
-! and FI2, FI3 as the directions of B - A, B - C (DPRM1 in the book's ranges, up to 3 pi);
-! DKNMA1 eliminates its one 2x2 matrix once (factor2); DKNMA1, DKNMA2, DSKOR1 and
-! DUSKR1 take each direction's cosine and sine once and get e(FI + PI/2), e(FI + PI) by
-! the exact identities (turn), and sum vectors by components where the book goes through
-! DSMVKT's polar form and back.  As-printed mode keeps the book's sequence of operations.
+! One home per group kind (issue 25): in corrected mode DPRM1 and DKNMA1 are adapters over
+! the kind-1 kernel of groups.f90 (rrr_kernel), the one sarkp.Mechanism calls: the book's
+! polar inputs become components, the kernel solves in Cartesian terms (B from the
+! triangle's apex, no cosine or sine of FI2; Cramer's rule), its results become the
+! book's (modulus, direction) pairs, branch signs and angle ranges (DPRM1's up to 3 pi);
+! the status is the dead-centre policy's for the kernel's estimate.  As-printed mode
+! keeps each routine's own code, the book's sequence, which the printed figures depend
+! on.  The other kinds' routines keep their own code until their kernels hold what the
+! book routines promise (kinds 2, 4: digits at 2**+-990 and far from the origin, the
+! estimate near parallel guides).
+!
+! Corrected mode, for speed (issue 9; the same mathematics, no ERRATA entry): DKNMA2,
+! DSKOR1 and DUSKR1 take each direction's cosine and sine once and get e(FI + PI/2),
+! e(FI + PI) by the exact identities (turn), and sum vectors by components where the
+! book goes through DSMVKT's polar form and back.
 !
 ! ERRATA ids of this chapter: E-<ROUTINE>-<n>, listed in docs/ERRATA.md.
 module kinematics
-  use prmtr, only: dp, pi, pid2, printed_mode, book_sign, st_ok, st_assembly, st_singular, &
-                   st_range, st_digits, norm2d
+  use prmtr, only: dp, pi, pid2, pi_exact, printed_mode, book_sign, st_ok, st_assembly, &
+                   st_singular, st_range, st_digits, norm2d
   use operators, only: dugl1, dugl2, dugl3, dugl4, dugl5, dugol, domega, dvkt, dsmvkt
+  use groups, only: rrr_kernel
   use numerics, only: uround, system2, solve2e, factor2, solve2f, solve_kind5, policy, &
                       settle, failed, wrap_pi, angle_sensitivity, tri_angles, tri_apex, &
                       apex_vectors, unscale, acc_dir, turn, components, quarter
@@ -122,15 +131,35 @@ contains
     real(dp), intent(in) :: xa, ya, xc, yc, rz2, rz3, p, aaa
     real(dp), intent(out) :: fi2, fi3, xb, yb
     integer, intent(out) :: ier
-    real(dp) :: rzac, fiac, ugbac, ugbca, q, dang, pa, h, pc, r2x, r2y, r3x, r3y
+    real(dp) :: rzac, fiac, ugbac, ugbca, q, dang, pa, h, pc
+    real(dp) :: x_b(2), v_b(2), a_b(2), z(2), u2(2), u3(2), w2, w3, e2, e3, est
     integer :: e
     fi2 = 0.0_dp; fi3 = 0.0_dp; xb = 0.0_dp; yb = 0.0_dp
-    if (printed_mode /= 0) then
-      call dvkt(xa, ya, xc, yc, rzac, fiac)
-    else
-      rzac = norm2d(xc - xa, yc - ya)
-      fiac = 2.0_dp*pi                            ! not needed; its bound for the estimate
+    q = book_sign(1.0_dp, p)
+    if (printed_mode == 0) then
+      ! Corrected: the kind-1 kernel's position (groups: rrr_kernel; its branch is -P), B
+      ! from the triangle's apex (issue 9), and FI2, FI3 as the directions of B - A, B - C
+      ! in the book's ranges.  The book's values are FIAC - P*angle A and FIAC + P*(angle
+      ! C - pi), DUGOL'd once: for P = +1 the direction in [0, 2 pi); for P = -1 the sum
+      ! turns counter-clockwise from FIAC by at most pi and passes 2 pi (stays above it, up
+      ! to 3 pi) exactly when A->C points below the x axis and the direction found is below
+      ! pi.
+      z = 0.0_dp
+      call rrr_kernel(1, [xa, ya], z, z, [xc, yc], z, z, rz2, rz3, -q, 1.0_dp/rz2, &
+                      1.0_dp/rz3, x_b, v_b, a_b, u2, u3, w2, w3, e2, e3, ier, est)
+      if (failed(ier)) return
+      fi2 = dugol(atan2(u2(2), u2(1)))
+      fi3 = dugol(atan2(u3(2), u3(1)))
+      if (q < 0.0_dp .and. yc - ya < 0.0_dp) then   ! A->C below the x axis
+        if (fi2 < pi) fi2 = fi2 + 2.0_dp*pi
+        if (fi3 < pi) fi3 = fi3 + 2.0_dp*pi
+      end if
+      xb = x_b(1)
+      yb = x_b(2)
+      ier = policy(est)
+      return
     end if
+    call dvkt(xa, ya, xc, yc, rzac, fiac)
     if (rzac == 0.0_dp) then
       if (rz2 == rz3) then
         ier = st_singular                         ! A = C, AB = CB: B anywhere on a circle
@@ -141,33 +170,13 @@ contains
     end if
     call tri_apex(rzac, rz2, rz3, pa, h, pc, e, dang, ier)
     if (failed(ier)) return
-    q = book_sign(1.0_dp, p)
-    if (printed_mode /= 0) then
-      ugbac = atan2(h, pa)                        ! tri_angles' angles
-      ugbca = atan2(h, pc)
-      fiac = dugol(fiac)
-      fi2 = dugol(fiac - q*ugbac)
-      fi3 = dugol(fiac + q*ugbca - q*pi)
-      xb = xa + rz2*cos(fi2)
-      yb = ya + rz2*sin(fi2)
-    else
-      ! Corrected (issue 9): B from the apex, B - A = pa u - P h n and B - C = -pc u - P h n
-      ! (u the unit vector A->C, n its normal; units of 2**e), and FI2, FI3 as their
-      ! directions: two arctangents where the book's way takes three.  The book's values
-      ! are FIAC - P*angle A and FIAC + P*(angle C - pi), DUGOL'd once: for P = +1 the
-      ! direction in [0, 2 pi); for P = -1 the sum turns counter-clockwise from FIAC by at
-      ! most pi and passes 2 pi (stays above it, up to 3 pi) exactly when A->C points below
-      ! the x axis and the direction found is below pi.
-      call apex_vectors(xc - xa, yc - ya, rzac, pa, h, pc, -q, r2x, r2y, r3x, r3y)
-      fi2 = dugol(atan2(r2y, r2x))
-      fi3 = dugol(atan2(r3y, r3x))
-      if (q < 0.0_dp .and. (yc - ya)/rzac < 0.0_dp) then   ! A->C below the x axis
-        if (fi2 < pi) fi2 = fi2 + 2.0_dp*pi
-        if (fi3 < pi) fi3 = fi3 + 2.0_dp*pi
-      end if
-      xb = xa + unscale(r2x, e)
-      yb = ya + unscale(r2y, e)
-    end if
+    ugbac = atan2(h, pa)                          ! tri_angles' angles
+    ugbca = atan2(h, pc)
+    fiac = dugol(fiac)
+    fi2 = dugol(fiac - q*ugbac)
+    fi3 = dugol(fiac + q*ugbca - q*pi)
+    xb = xa + rz2*cos(fi2)
+    yb = ya + rz2*sin(fi2)
     ier = settle(ier, dang + 8.0_dp*uround*(1.0_dp + abs(fiac)), [xb, yb])
   end subroutine dprm1
 
@@ -870,9 +879,15 @@ contains
     real(dp) :: rac, fik, ugbac, ugbca, y1, y2, prx, pry, q, dang, da, sb, relv, rela, ev
     real(dp) :: est, c2, s2, c3, s3, n2x, n2y, n3x, n3y, m2x, m2y, m3x, m3y, tx, ty
     real(dp) :: vax, vay, vcx, vcy, aax, aay, acx, acy
-    real(dp) :: pa, h, pc, r2x, r2y, r3x, r3y, l2s, l3s
-    integer :: st2, e
+    integer :: st2
     type(system2) :: sys
+    q = book_sign(1.0_dp, p)
+    if (printed_mode == 0) then                   ! corrected: the kind-1 kernel
+      call dknma1_rrr(xa, ya, xc, yc, rz2, rz3, va, ala, vc, alc, aa, ba, ac, bc, q, &
+                      analog, xb, yb, fi2, fi3, vba, alba, vbc, albc, vb, alb, w2, w3, &
+                      abcn, aban, abat, bbat, abct, bbct, ab, bb, e2, e3, ier)
+      return
+    end if
     xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; fi3 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp
     vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; w3 = 0.0_dp
     abcn = 0.0_dp; aban = 0.0_dp; abat = 0.0_dp; bbat = 0.0_dp; abct = 0.0_dp; bbct = 0.0_dp
@@ -886,45 +901,22 @@ contains
       end if
       return
     end if
-    q = book_sign(1.0_dp, p)
-    if (printed_mode /= 0) then
-      call tri_angles(rac, rz2, rz3, ugbac, ugbca, dang, ier)
-      if (failed(ier)) return
-      ! The book rotates B's coordinates in the frame of C->A (E-DKNMA1-2) and takes FI2,
-      ! FI3 from the rounded absolute coordinates of B; the same directions come here
-      ! straight from the triangle: B = A + RZ2 e(FI_AC + P*angle A),
-      ! C->B = FI_AC + pi - P*angle C.
-      fik = atan2(yc - ya, xc - xa)               ! direction A->C
-      fi2 = wrap_pi(fik + q*ugbac)
-      fi3 = wrap_pi(fik + pi - q*ugbca)
-      c2 = cos(fi2)
-      s2 = sin(fi2)
-      c3 = cos(fi3)
-      s3 = sin(fi3)
-      xb = xa + rz2*c2
-      yb = ya + rz2*s2
-    else
-      ! Corrected mode (issue 9): the same point B from the triangle's apex in the frame of
-      ! A->C (unit vector u, its normal turned by P), and FI2, FI3 as the directions of
-      ! B - A and B - C: two arctangents where the angles' way takes three, and no cosine
-      ! or sine of them (the unit vectors e(FI2), e(FI3) are (B - A)/RZ2, (B - C)/RZ3).
-      call tri_apex(rac, rz2, rz3, pa, h, pc, e, dang, ier)
-      if (failed(ier)) return
-      call apex_vectors(xc - xa, yc - ya, rac, pa, h, pc, q, r2x, r2y, r3x, r3y)
-      fi2 = atan2(r2y, r2x)
-      fi3 = atan2(r3y, r3x)
-      if (fi2 == -pi) fi2 = pi                    ! the range (-pi, pi] of DUGL2
-      if (fi3 == -pi) fi3 = pi
-      l2s = unscale(rz2, -e)
-      l3s = unscale(rz3, -e)
-      c2 = r2x/l2s
-      s2 = r2y/l2s
-      c3 = r3x/l3s
-      s3 = r3y/l3s
-      xb = xa + unscale(r2x, e)
-      yb = ya + unscale(r2y, e)
-      fik = pi                                    ! the rounding allowance below at its largest
-    end if
+    ! As printed: the book's sequence (the angles of the triangle, their cosines and sines)
+    call tri_angles(rac, rz2, rz3, ugbac, ugbca, dang, ier)
+    if (failed(ier)) return
+    ! The book rotates B's coordinates in the frame of C->A (E-DKNMA1-2) and takes FI2,
+    ! FI3 from the rounded absolute coordinates of B; the same directions come here
+    ! straight from the triangle: B = A + RZ2 e(FI_AC + P*angle A),
+    ! C->B = FI_AC + pi - P*angle C.
+    fik = atan2(yc - ya, xc - xa)                 ! direction A->C
+    fi2 = wrap_pi(fik + q*ugbac)
+    fi3 = wrap_pi(fik + pi - q*ugbca)
+    c2 = cos(fi2)
+    s2 = sin(fi2)
+    c3 = cos(fi3)
+    s3 = sin(fi3)
+    xb = xa + rz2*c2
+    yb = ya + rz2*s2
     da = dang + 4.0_dp*uround*(2.0_dp + abs(fik))
     est = da
     ! The velocity and acceleration systems have the columns e(FI2 + PI/2), -e(FI3 + PI/2)
@@ -980,6 +972,81 @@ contains
     end if
     ier = settle(ier, est, [xb, yb, vba, vbc, vb, w2, w3, abcn, aban, abat, abct, ab, e2, e3])
   end subroutine dknma1
+
+  ! DKNMA1's corrected mode: the book's interface over the kind-1 kernel (groups:
+  ! rrr_kernel, the Mechanism's rrr).  In: the book's polar velocities and accelerations
+  ! of A and C, as (x, y); Q = DKNMA1's P, which is the kernel's branch (+1: B on the left
+  ! of A -> C).  Out: FI2, FI3 as DUGL2 directions in (-pi, pi]; each linear velocity or
+  ! acceleration as (modulus, direction), the relative ones along e(FI + pi/2) turned by
+  ! the sign of W or E (DUGL3, L2617-2620); ANALOG = 1: the kernel's velocity level, the
+  ! accelerations 0.  A failure: every output 0.  The status is the policy's for the
+  ! kernel's estimate (the drivers turn a result that is not finite into st_range).
+  subroutine dknma1_rrr(xa, ya, xc, yc, rz2, rz3, va, ala, vc, alc, aa, ba, ac, bc, q, &
+                        analog, xb, yb, fi2, fi3, vba, alba, vbc, albc, vb, alb, w2, w3, &
+                        abcn, aban, abat, bbat, abct, bbct, ab, bb, e2, e3, ier)
+    real(dp), intent(in) :: xa, ya, xc, yc, rz2, rz3, va, ala, vc, alc, aa, ba, ac, bc, q
+    real(dp), intent(in) :: analog
+    real(dp), intent(out) :: xb, yb, fi2, fi3, vba, alba, vbc, albc, vb, alb, w2, w3
+    real(dp), intent(out) :: abcn, aban, abat, bbat, abct, bbct, ab, bb, e2, e3
+    integer, intent(out) :: ier
+    real(dp), parameter :: half_pi = pi_exact/2.0_dp     ! corrected mode's PID2
+    real(dp) :: x_a(2), x_c(2), v_a(2), v_c(2), a_a(2), a_c(2), x_b(2), v_b(2), a_b(2)
+    real(dp) :: u2(2), u3(2), om2, om3, ep2, ep3, est
+    integer :: level
+    level = 3
+    if (analog == 1.0_dp) level = 2
+    x_a(1) = xa
+    x_a(2) = ya
+    x_c(1) = xc
+    x_c(2) = yc
+    call components(va, ala, v_a(1), v_a(2))
+    call components(vc, alc, v_c(1), v_c(2))
+    a_a = 0.0_dp
+    a_c = 0.0_dp
+    if (level == 3) then
+      call components(aa, ba, a_a(1), a_a(2))
+      call components(ac, bc, a_c(1), a_c(2))
+    end if
+    call rrr_kernel(level, x_a, v_a, a_a, x_c, v_c, a_c, rz2, rz3, q, 1.0_dp/rz2, &
+                    1.0_dp/rz3, x_b, v_b, a_b, u2, u3, om2, om3, ep2, ep3, ier, est)
+    if (failed(ier)) then
+      xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; fi3 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp
+      vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; w3 = 0.0_dp
+      abcn = 0.0_dp; aban = 0.0_dp; abat = 0.0_dp; bbat = 0.0_dp; abct = 0.0_dp
+      bbct = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp; e2 = 0.0_dp; e3 = 0.0_dp
+      return
+    end if
+    ier = policy(est)
+    xb = x_b(1)
+    yb = x_b(2)
+    fi2 = atan2(u2(2), u2(1))
+    fi3 = atan2(u3(2), u3(1))
+    if (fi2 == -pi_exact) fi2 = pi_exact          ! the range (-pi, pi] of DUGL2
+    if (fi3 == -pi_exact) fi3 = pi_exact
+    w2 = om2 + 0.0_dp                             ! (-0 is +0, as DOMEGA gives it)
+    w3 = om3 + 0.0_dp
+    vba = abs(om2)*rz2
+    vbc = abs(om3)*rz3
+    alba = fi2 + book_sign(half_pi, om2)          ! DUGL3(FI2, PID2, W2)
+    albc = fi3 + book_sign(half_pi, om3)
+    vb = norm2d(v_b(1), v_b(2))
+    alb = dugl5(v_b(1), v_b(2))
+    if (level == 3) then
+      e2 = ep2 + 0.0_dp
+      e3 = ep3 + 0.0_dp
+      abat = abs(ep2)*rz2
+      abct = abs(ep3)*rz3
+      aban = om2**2*rz2
+      abcn = om3**2*rz3
+      bbat = fi2 + book_sign(half_pi, ep2)
+      bbct = fi3 + book_sign(half_pi, ep3)
+      ab = norm2d(a_b(1), a_b(2))
+      bb = dugl5(a_b(1), a_b(2))
+    else                                          ! ANALOG = 1: no accelerations
+      e2 = 0.0_dp; e3 = 0.0_dp; abat = 0.0_dp; abct = 0.0_dp; aban = 0.0_dp; abcn = 0.0_dp
+      bbat = 0.0_dp; bbct = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp
+    end if
+  end subroutine dknma1_rrr
 
   ! IV.17 DKNMA2, L2660-2747.  Kind 2 (RRP).
   ! The guide passes through K with direction FIM and belongs to link M (omega WM); VBM, ALBM
