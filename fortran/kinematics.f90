@@ -157,27 +157,28 @@ contains
       xb = x_b(1)
       yb = x_b(2)
       ier = policy(est)
-      return
-    end if
-    call dvkt(xa, ya, xc, yc, rzac, fiac)
-    if (rzac == 0.0_dp) then
-      if (rz2 == rz3) then
-        ier = st_singular                         ! A = C, AB = CB: B anywhere on a circle
-      else
-        ier = st_assembly
+    else
+      ! As printed: the book's FIAC and angles (from the same apex, E-DPRM1-1)
+      call dvkt(xa, ya, xc, yc, rzac, fiac)
+      if (rzac == 0.0_dp) then
+        if (rz2 == rz3) then
+          ier = st_singular                         ! A = C, AB = CB: B anywhere on a circle
+        else
+          ier = st_assembly
+        end if
+        return
       end if
-      return
+      call tri_apex(rzac, rz2, rz3, pa, h, pc, e, dang, ier)
+      if (failed(ier)) return
+      ugbac = atan2(h, pa)                          ! tri_angles' angles
+      ugbca = atan2(h, pc)
+      fiac = dugol(fiac)
+      fi2 = dugol(fiac - q*ugbac)
+      fi3 = dugol(fiac + q*ugbca - q*pi)
+      xb = xa + rz2*cos(fi2)
+      yb = ya + rz2*sin(fi2)
+      ier = settle(ier, dang + 8.0_dp*uround*(1.0_dp + abs(fiac)), [xb, yb])
     end if
-    call tri_apex(rzac, rz2, rz3, pa, h, pc, e, dang, ier)
-    if (failed(ier)) return
-    ugbac = atan2(h, pa)                          ! tri_angles' angles
-    ugbca = atan2(h, pc)
-    fiac = dugol(fiac)
-    fi2 = dugol(fiac - q*ugbac)
-    fi3 = dugol(fiac + q*ugbca - q*pi)
-    xb = xa + rz2*cos(fi2)
-    yb = ya + rz2*sin(fi2)
-    ier = settle(ier, dang + 8.0_dp*uround*(1.0_dp + abs(fiac)), [xb, yb])
   end subroutine dprm1
 
   ! IV.2 DPRM2, L1531-1558 (Table 8, Fig. 15).  Kind 2 (RRP) positions.
@@ -886,91 +887,91 @@ contains
       call dknma1_rrr(xa, ya, xc, yc, rz2, rz3, va, ala, vc, alc, aa, ba, ac, bc, q, &
                       analog, xb, yb, fi2, fi3, vba, alba, vbc, albc, vb, alb, w2, w3, &
                       abcn, aban, abat, bbat, abct, bbct, ab, bb, e2, e3, ier)
-      return
-    end if
-    xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; fi3 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp
-    vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; w3 = 0.0_dp
-    abcn = 0.0_dp; aban = 0.0_dp; abat = 0.0_dp; bbat = 0.0_dp; abct = 0.0_dp; bbct = 0.0_dp
-    ab = 0.0_dp; bb = 0.0_dp; e2 = 0.0_dp; e3 = 0.0_dp
-    rac = norm2d(xc - xa, yc - ya)
-    if (rac == 0.0_dp) then
-      if (rz2 == rz3) then
-        ier = st_singular
-      else
-        ier = st_assembly
+    else
+      xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; fi3 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp
+      vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; w3 = 0.0_dp
+      abcn = 0.0_dp; aban = 0.0_dp; abat = 0.0_dp; bbat = 0.0_dp; abct = 0.0_dp; bbct = 0.0_dp
+      ab = 0.0_dp; bb = 0.0_dp; e2 = 0.0_dp; e3 = 0.0_dp
+      rac = norm2d(xc - xa, yc - ya)
+      if (rac == 0.0_dp) then
+        if (rz2 == rz3) then
+          ier = st_singular
+        else
+          ier = st_assembly
+        end if
+        return
       end if
-      return
-    end if
-    ! As printed: the book's sequence (the angles of the triangle, their cosines and sines)
-    call tri_angles(rac, rz2, rz3, ugbac, ugbca, dang, ier)
-    if (failed(ier)) return
-    ! The book rotates B's coordinates in the frame of C->A (E-DKNMA1-2) and takes FI2,
-    ! FI3 from the rounded absolute coordinates of B; the same directions come here
-    ! straight from the triangle: B = A + RZ2 e(FI_AC + P*angle A),
-    ! C->B = FI_AC + pi - P*angle C.
-    fik = atan2(yc - ya, xc - xa)                 ! direction A->C
-    fi2 = wrap_pi(fik + q*ugbac)
-    fi3 = wrap_pi(fik + pi - q*ugbca)
-    c2 = cos(fi2)
-    s2 = sin(fi2)
-    c3 = cos(fi3)
-    s3 = sin(fi3)
-    xb = xa + rz2*c2
-    yb = ya + rz2*s2
-    da = dang + 4.0_dp*uround*(2.0_dp + abs(fik))
-    est = da
-    ! The velocity and acceleration systems have the columns e(FI2 + PI/2), -e(FI3 + PI/2)
-    ! (L2615, L2640); each direction's cosine and sine is taken once (turn, components).
-    call turn(fi2 + pid2, c2, s2, 1, n2x, n2y)
-    call turn(fi3 + pid2, c3, s3, 1, n3x, n3y)
-    call components(va, ala, vax, vay)
-    call components(vc, alc, vcx, vcy)
-    sb = abs(va) + abs(vc)
-    call factor2(n2x, -n3x, n2y, -n3y, sys)     ! one matrix for both systems (L2615, L2640)
-    call solve2f(sys, vcx - vax, vcy - vay, da, &
-                 4.0_dp*uround*(1.0_dp + max(abs(ala), abs(alc)))*sb, sb, y1, y2, ier, relv)
-    if (failed(ier)) return
-    est = max(est, relv)
-    ev = relv*max(norm2d(y1, y2), sb/sqrt(2.0_dp))   ! absolute error of (y1, y2)
-    alba = dugl3(fi2, pi/2.0_dp, y1)
-    albc = dugl3(fi3, pi/2.0_dp, y2)
-    vba = abs(y1)
-    vbc = abs(y2)
-    call turn(alba, c2, s2, quarter(y1), tx, ty)    ! e(ALBA)
-    prx = vax + vba*tx
-    pry = vay + vba*ty
-    vb = norm2d(prx, pry)
-    alb = dugl5(prx, pry)
-    w2 = domega(rz2, vba, alba - fi2)
-    w3 = domega(rz3, vbc, albc - fi3)
-    if (analog /= 1.0_dp) then
-      aban = w2**2*rz2
-      abcn = w3**2*rz3
-      call components(aa, ba, aax, aay)
-      call components(ac, bc, acx, acy)
-      call turn(fi2 + pi, c2, s2, 2, m2x, m2y)      ! e(FI2 + PI), e(FI3 + PI)
-      call turn(fi3 + pi, c3, s3, 2, m3x, m3y)
-      sb = abs(aa) + abs(ac) + aban + abcn
-      call solve2f(sys, acx + abcn*m3x - aax - aban*m2x, acy + abcn*m3y - aay - aban*m2y, da, &
-                   4.0_dp*uround*(4.0_dp + max(abs(ba), abs(bc)))*sb &
-                   + ev/rz2*(2.0_dp*abs(y1) + ev) + ev/rz3*(2.0_dp*abs(y2) + ev), &
-                   sb, y1, y2, st2, rela)
-      ier = st2
+      ! As printed: the book's sequence (the angles of the triangle, their cosines and sines)
+      call tri_angles(rac, rz2, rz3, ugbac, ugbca, dang, ier)
       if (failed(ier)) return
-      est = max(est, rela)
-      bbat = dugl3(fi2, pi/2.0_dp, y1)
-      bbct = dugl3(fi3, pi/2.0_dp, y2)
-      abat = abs(y1)
-      abct = abs(y2)
-      call turn(bbat, c2, s2, quarter(y1), tx, ty)  ! e(BBAT)
-      prx = aax + aban*m2x + abat*tx
-      pry = aay + aban*m2y + abat*ty
-      ab = norm2d(prx, pry)
-      bb = dugl5(prx, pry)
-      e2 = domega(rz2, abat, bbat - fi2)
-      e3 = domega(rz3, abct, bbct - fi3)
+      ! The book rotates B's coordinates in the frame of C->A (E-DKNMA1-2) and takes FI2,
+      ! FI3 from the rounded absolute coordinates of B; the same directions come here
+      ! straight from the triangle: B = A + RZ2 e(FI_AC + P*angle A),
+      ! C->B = FI_AC + pi - P*angle C.
+      fik = atan2(yc - ya, xc - xa)                 ! direction A->C
+      fi2 = wrap_pi(fik + q*ugbac)
+      fi3 = wrap_pi(fik + pi - q*ugbca)
+      c2 = cos(fi2)
+      s2 = sin(fi2)
+      c3 = cos(fi3)
+      s3 = sin(fi3)
+      xb = xa + rz2*c2
+      yb = ya + rz2*s2
+      da = dang + 4.0_dp*uround*(2.0_dp + abs(fik))
+      est = da
+      ! The velocity and acceleration systems have the columns e(FI2 + PI/2), -e(FI3 + PI/2)
+      ! (L2615, L2640); each direction's cosine and sine is taken once (turn, components).
+      call turn(fi2 + pid2, c2, s2, 1, n2x, n2y)
+      call turn(fi3 + pid2, c3, s3, 1, n3x, n3y)
+      call components(va, ala, vax, vay)
+      call components(vc, alc, vcx, vcy)
+      sb = abs(va) + abs(vc)
+      call factor2(n2x, -n3x, n2y, -n3y, sys)     ! one matrix for both systems (L2615, L2640)
+      call solve2f(sys, vcx - vax, vcy - vay, da, &
+                   4.0_dp*uround*(1.0_dp + max(abs(ala), abs(alc)))*sb, sb, y1, y2, ier, relv)
+      if (failed(ier)) return
+      est = max(est, relv)
+      ev = relv*max(norm2d(y1, y2), sb/sqrt(2.0_dp))   ! absolute error of (y1, y2)
+      alba = dugl3(fi2, pi/2.0_dp, y1)
+      albc = dugl3(fi3, pi/2.0_dp, y2)
+      vba = abs(y1)
+      vbc = abs(y2)
+      call turn(alba, c2, s2, quarter(y1), tx, ty)    ! e(ALBA)
+      prx = vax + vba*tx
+      pry = vay + vba*ty
+      vb = norm2d(prx, pry)
+      alb = dugl5(prx, pry)
+      w2 = domega(rz2, vba, alba - fi2)
+      w3 = domega(rz3, vbc, albc - fi3)
+      if (analog /= 1.0_dp) then
+        aban = w2**2*rz2
+        abcn = w3**2*rz3
+        call components(aa, ba, aax, aay)
+        call components(ac, bc, acx, acy)
+        call turn(fi2 + pi, c2, s2, 2, m2x, m2y)      ! e(FI2 + PI), e(FI3 + PI)
+        call turn(fi3 + pi, c3, s3, 2, m3x, m3y)
+        sb = abs(aa) + abs(ac) + aban + abcn
+        call solve2f(sys, acx + abcn*m3x - aax - aban*m2x, acy + abcn*m3y - aay - aban*m2y, da, &
+                     4.0_dp*uround*(4.0_dp + max(abs(ba), abs(bc)))*sb &
+                     + ev/rz2*(2.0_dp*abs(y1) + ev) + ev/rz3*(2.0_dp*abs(y2) + ev), &
+                     sb, y1, y2, st2, rela)
+        ier = st2
+        if (failed(ier)) return
+        est = max(est, rela)
+        bbat = dugl3(fi2, pi/2.0_dp, y1)
+        bbct = dugl3(fi3, pi/2.0_dp, y2)
+        abat = abs(y1)
+        abct = abs(y2)
+        call turn(bbat, c2, s2, quarter(y1), tx, ty)  ! e(BBAT)
+        prx = aax + aban*m2x + abat*tx
+        pry = aay + aban*m2y + abat*ty
+        ab = norm2d(prx, pry)
+        bb = dugl5(prx, pry)
+        e2 = domega(rz2, abat, bbat - fi2)
+        e3 = domega(rz3, abct, bbct - fi3)
+      end if
+      ier = settle(ier, est, [xb, yb, vba, vbc, vb, w2, w3, abcn, aban, abat, abct, ab, e2, e3])
     end if
-    ier = settle(ier, est, [xb, yb, vba, vbc, vb, w2, w3, abcn, aban, abat, abct, ab, e2, e3])
   end subroutine dknma1
 
   ! DKNMA1's corrected mode: the book's interface over the kind-1 kernel (groups:
