@@ -117,12 +117,12 @@ class DNMA1Loop:
 
 
 def dnma1_head_to_head():
-    """sarkp.DNMA1 (corrected mode: the Cartesian path; as-printed: the printed form) on
-    arrays against the hand-written C loop of the same formula over N positions of the
-    crank-rocker above, (a) with loads that vary with the position (inertia loads: every
-    input an array) and (b) with constant loads (G2, G3 passed once: C hoists their sines
-    and cosines, sarkp's Fortran takes them per position).  Also the largest difference
-    between the two (the same formula: rounding)."""
+    """sarkp.DNMA1 (corrected mode: the adapter over the force kernel of groups.f90;
+    as-printed: the printed form) on arrays against the hand-written C loop of the same
+    statics over N positions of the crank-rocker above, (a) with loads that vary with the
+    position (inertia loads: every input an array) and (b) with constant loads (G2, G3
+    passed once: C hoists their sines and cosines, sarkp's Fortran takes them per
+    position).  Also the largest difference between the two (rounding)."""
     phi = np.linspace(0.0, 2 * np.pi, N, endpoint=False)
     roa, rab, rcb, xc = 0.1, 0.35, 0.3, 0.4
     xa, ya = roa * np.cos(phi), roa * np.sin(phi)

@@ -30,13 +30,22 @@
 !   st_ok.
 ! On st_singular every output is 0 (never NaN).  An arm of a zero force is 0 (the DNMAF
 ! routines' own guard, extended to DNMA2-DNMA5: E-DNMA-1).
-! No as-printed switch here: only PI (3.14159 as printed) differs between the modes; no
-! printed figure depends on the author errors corrected below.
+! No as-printed switch for an author error here: no printed figure depends on the errors
+! corrected below.  The modes differ in the arithmetic:
+!   corrected: each routine is an adapter over the force step of groups.f90
+!     (group_reactions, the kernel sarkp.Mechanism calls for every kind): it lays the
+!     group out in Cartesian coordinates (points, loads as vectors, sliding directions),
+!     calls the kernel with its kind's pair declaration (kind_pairs) and returns the
+!     reactions in the book's form: its argument order, moduli and directions (in the
+!     ranges each routine's printed code gives), signs and arms, and the status of the
+!     book's denominator (den_status below; the GELG pivot test for DNMA2-DNMA5);
+!   as-printed: the printed code, PI = 3.14159 inside it, as the book's figures need.
 module forces
   use prmtr, only: dp, pi, pid2, pi_exact, printed_mode, st_ok, st_singular, &
-                   st_significance, st_digits, book_sign
+                   st_significance, st_digits, book_sign, norm2d, succeeded
   use operators, only: dugl3, dugl4, dugl5, dvkt, dsmvkt
   use gelg_mod, only: gelg2
+  use groups, only: kind_pairs, group_reactions
   implicit none
   private
   public :: dnmaf1, dnmaf2, dnmaf3, dnmaf4, dnmaf5
@@ -45,6 +54,26 @@ module forces
 
   ! The book's GELG tolerance (EPS = 0.0001, L525): a smaller denominator is reported.
   real(dp), parameter :: eps_den = 1.0e-4_dp
+  ! The kernel's points of DNMA4/DNMAF4 and DNMA5/DNMAF5, all at the origin of the
+  ! adapter's coordinates (B, A).
+  real(dp), parameter :: origin(2, 3) = 0.0_dp
+
+  ! The argument lines of the loads, shared by DNMAF1-DNMAF5 (loads_f) and DNMA1-DNMA5
+  ! (loads_q): gen_drivers puts them where a routine says !:insert.
+  !:define loads_f
+  !: XS2, YS2 : real -- Reduction point S2 of link 2 (m).
+  !: F2, G2 : real >= 0; real -- Resultant of the loads on link 2 (N, >= 0) and its
+  !:     direction (rad).
+  !: XS3, YS3, F3, G3 : real; real; real >= 0; real -- The same for link 3.
+  !: T2, T3 : real -- Main moments of the loads on links 2 and 3 about S2, S3 (N*m, CCW
+  !:     +).
+  !: AAA : flag -- The book's print flag; unused (the routine prints nothing).
+  !:end
+  !:define loads_q
+  !: M2, Q2, G2 : real; real >= 0; real -- Main moment (N*m, CCW +), resultant (N, >= 0)
+  !:     and its direction (rad) of the loads on link 2, reduced to S2.
+  !: M3, Q3, G3 : real; real >= 0; real -- The same for link 3, reduced to S3.
+  !:end
 
 contains
 
@@ -120,6 +149,63 @@ contains
     y2 = y(2)
   end subroutine solve2
 
+
+  ! ---- the adapters' conversions between the book's polar forms and the kernel's vectors
+
+  ! A force (modulus f, direction g) as a vector.
+  pure function vec(f, g) result(v)
+    real(dp), intent(in) :: f, g
+    real(dp) :: v(2)
+    v = [f*cos(g), f*sin(g)]
+  end function vec
+
+  ! A unit vector e(g).
+  pure function unit(g) result(u)
+    real(dp), intent(in) :: g
+    real(dp) :: u(2)
+    u = [cos(g), sin(g)]
+  end function unit
+
+  ! The modulus and DUGL5 direction of the vector (x, y) (what DSMVKT returns).
+  pure subroutine polar(x, y, f, g)
+    real(dp), intent(in) :: x, y
+    real(dp), intent(out) :: f, g
+    f = norm2d(x, y)
+    g = direction(x, y)
+  end subroutine polar
+
+  ! A slider's force v, normal to its guide e(fi), as the book writes it: its modulus and
+  ! the direction DUGL3(FI, PID2, N) = FI +- PI/2 by the sign of its component N along
+  ! e(FI + PI/2), u = e(fi).
+  pure subroutine normal_polar(v, u, fi, f, g)
+    real(dp), intent(in) :: v(2), u(2), fi
+    real(dp), intent(out) :: f, g
+    f = norm2d(v(1), v(2))
+    g = fi + book_sign(pi_exact/2.0_dp, -v(1)*u(2) + v(2)*u(1))
+  end subroutine normal_polar
+
+  ! The status of the sine of the angle between the directions of (ax, ay) and (bx, by):
+  ! den_status of it; st_singular for a zero vector.
+  pure integer function sine_status(ax, ay, bx, by)
+    real(dp), intent(in) :: ax, ay, bx, by
+    real(dp) :: na, nb
+    na = norm2d(ax, ay)
+    nb = norm2d(bx, by)
+    if (na == 0.0_dp .or. nb == 0.0_dp) then
+      sine_status = st_singular
+    else
+      sine_status = den_status((ax/na)*(by/nb) - (ay/na)*(bx/nb))
+    end if
+  end function sine_status
+
+  ! The status solve2 (GELG) gives the 2x2 matrix of DNMA2-DNMA5 (it depends on the
+  ! matrix alone).
+  integer function gelg_status(a11, a12, a21, a22)
+    real(dp), intent(in) :: a11, a12, a21, a22
+    real(dp) :: y1, y2
+    call solve2(a11, a12, a21, a22, 0.0_dp, 0.0_dp, y1, y2, gelg_status)
+  end function gelg_status
+
   ! ============================================================================
   ! DUGL6 -- not printed (ERRATA E-DUGL6-1): an extension of sarkp
   ! ============================================================================
@@ -140,6 +226,305 @@ contains
   end function dugl6
 
   ! ============================================================================
+  ! corrected mode: the routines as adapters over the kernel (groups.f90)
+  ! ============================================================================
+  ! Each lays its group out for group_reactions -- the pair points p, the sliding
+  ! directions u, each link's load as a vector and its moment about the reduction point
+  ! -- with its kind's pair declaration, and turns the kernel's reactions r(:, j)
+  ! (pair 1's on link 2 from the outside, pair 2's on link 3 from link 2, pair 3's on
+  ! link 3 from the outside; a slider's couple about its point p(:, j)) into the book's
+  ! outputs, which come in as the calling routine's zeros and stay so where it fails.  The
+  ! status is the book's denominator's, as the printed code divides by it; the kernel's
+  ! own (st_singular, st_range) where that fails.
+
+  ! DNMAF1: kind 1, pairs A, B, C.
+  subroutine dnmaf1_kernel(xa, ya, xb, yb, xc, yc, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, &
+                           t3, f21, g21, f23, g23, f34, g34, ier)
+    real(dp), intent(in) :: xa, ya, xb, yb, xc, yc, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3
+    real(dp), intent(inout) :: f21, g21, f23, g23, f34, g34
+    integer, intent(out) :: ier
+    real(dp) :: p(2, 3), r(3, 3), u(2, 3)
+    integer :: st
+    ier = sine_status(xa - xc, ya - yc, xb - xa, yb - ya)   ! SIN(FI - FICA)
+    if (ier == st_singular) return
+    u = 0.0_dp
+    p(:, 1) = [xa, ya]
+    p(:, 2) = [xb, yb]
+    p(:, 3) = [xc, yc]
+    call group_reactions(p, kind_pairs(:, 1), u, vec(f2, g2), t2, [xs2, ys2], vec(f3, g3), &
+                         t3, [xs3, ys3], r, st)
+    if (st /= st_ok) then
+      ier = st
+      return
+    end if
+    call polar(r(1, 1), r(2, 1), f21, g21)                  ! F12, the reaction on 2
+    g21 = g21 - pi_exact
+    call polar(r(1, 2), r(2, 2), f23, g23)
+    call polar(-r(1, 3), -r(2, 3), f34, g34)
+  end subroutine dnmaf1_kernel
+
+  ! DNMAF2: kind 2, pairs A, B and the slider on the guide, its couple about B (H34).
+  subroutine dnmaf2_kernel(xa, ya, xb, yb, fim, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
+                           f21, g21, f23, g23, f34, g34, h34, ier)
+    real(dp), intent(in) :: xa, ya, xb, yb, fim, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3
+    real(dp), intent(inout) :: f21, g21, f23, g23, f34, g34, h34
+    integer, intent(out) :: ier
+    real(dp) :: p(2, 3), r(3, 3), u(2, 3)
+    integer :: st
+    u = 0.0_dp
+    u(:, 3) = unit(fim)
+    ier = sine_status(-u(2, 3), u(1, 3), xa - xb, ya - yb)  ! SIN(FIM + PID2 - FI)
+    if (ier == st_singular) return
+    p(:, 1) = [xa, ya]
+    p(:, 2) = [xb, yb]
+    p(:, 3) = [xb, yb]
+    call group_reactions(p, kind_pairs(:, 2), u, vec(f2, g2), t2, [xs2, ys2], vec(f3, g3), &
+                         t3, [xs3, ys3], r, st)
+    if (st /= st_ok) then
+      ier = st
+      return
+    end if
+    call polar(r(1, 1), r(2, 1), f21, g21)
+    g21 = g21 - pi_exact
+    call polar(r(1, 2), r(2, 2), f23, g23)
+    call polar(-r(1, 3), -r(2, 3), f34, g34)
+    h34 = arm(r(3, 3), f34)
+  end subroutine dnmaf2_kernel
+
+  ! DNMAF3: kind 3, pairs A, the slider on link 3 (its couple about C: H23), C.
+  subroutine dnmaf3_kernel(xa, ya, xc, yc, fi3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
+                           f21, g21, f23, g23, h23, f34, g34, ier)
+    real(dp), intent(in) :: xa, ya, xc, yc, fi3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3
+    real(dp), intent(inout) :: f21, g21, f23, g23, h23, f34, g34
+    integer, intent(out) :: ier
+    real(dp) :: p(2, 3), r(3, 3), u(2, 3)
+    integer :: st
+    u = 0.0_dp
+    u(:, 2) = unit(fi3)
+    ier = sine_status(xa - xc, ya - yc, -u(2, 2), u(1, 2))  ! SIN(FI3 + PID2 - FICA)
+    if (ier == st_singular) return
+    p(:, 1) = [xa, ya]
+    p(:, 2) = [xc, yc]
+    p(:, 3) = [xc, yc]
+    call group_reactions(p, kind_pairs(:, 3), u, vec(f2, g2), t2, [xs2, ys2], vec(f3, g3), &
+                         t3, [xs3, ys3], r, st)
+    if (st /= st_ok) then
+      ier = st
+      return
+    end if
+    call polar(r(1, 1), r(2, 1), f21, g21)
+    g21 = g21 - pi_exact
+    call polar(r(1, 2), r(2, 2), f23, g23)
+    h23 = arm(r(3, 2), f23)
+    call polar(-r(1, 3), -r(2, 3), f34, g34)
+  end subroutine dnmaf3_kernel
+
+  ! DNMA4 and DNMAF4: kind 4, the sliders on the guides u1 (FIM) and u3 (FIN) joined at
+  ! the origin; every couple about it.  ier comes in as the caller's status of the
+  ! book's denominator: nothing is done for st_singular, the kernel's failure replaces it.
+  subroutine prp_kernel(u1, u3, s2, v2, t2, s3, v3, t3, r, ier)
+    real(dp), intent(in) :: u1(2), u3(2), s2(2), v2(2), t2, s3(2), v3(2), t3
+    real(dp), intent(out) :: r(3, 3)
+    integer, intent(inout) :: ier
+    real(dp) :: u(2, 3)
+    integer :: st
+    r = 0.0_dp
+    if (ier == st_singular) return
+    u(:, 1) = u1
+    u(:, 2) = 0.0_dp
+    u(:, 3) = u3
+    call group_reactions(origin, kind_pairs(:, 4), u, v2, t2, s2, v3, t3, s3, r, st)
+    if (st /= st_ok) ier = st
+  end subroutine prp_kernel
+
+  ! DNMAF4 (B at the origin of the kernel's coordinates).
+  subroutine dnmaf4_kernel(fim, fin, xb, yb, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
+                           f21, g21, h21, f23, g23, f34, g34, h34, ier)
+    real(dp), intent(in) :: fim, fin, xb, yb, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3
+    real(dp), intent(inout) :: f21, g21, h21, f23, g23, f34, g34, h34
+    integer, intent(out) :: ier
+    real(dp) :: r(3, 3), u1(2), u3(2)
+    u1 = unit(fim)
+    u3 = unit(fin)
+    ier = sine_status(u1(1), u1(2), u3(1), u3(2))           ! COS(FIM + PID2 - FIN)
+    call prp_kernel(u1, u3, [xs2 - xb, ys2 - yb], vec(f2, g2), t2, [xs3 - xb, ys3 - yb], &
+                    vec(f3, g3), t3, r, ier)
+    if (.not. succeeded(ier)) return
+    call normal_polar(r(1:2, 1), u1, fim, f21, g21)         ! F12 = DUGL3(FIM, PID2, .)
+    g21 = g21 - pi_exact
+    h21 = arm(r(3, 1), f21)
+    call polar(r(1, 2), r(2, 2), f23, g23)
+    call polar(-r(1, 3), -r(2, 3), f34, g34)
+    h34 = arm(r(3, 3), f34)
+  end subroutine dnmaf4_kernel
+
+  ! DNMA5 and DNMAF5: the book's kind 5 has links 2 and 3 the other way round from the
+  ! kernel's (kind_pairs(:, 5): link 2 the slotted link on the guide): the kernel's link
+  ! 2 is the book's link 3 (sliding on the guide u1, FIM), its link 3 the book's link 2
+  ! (pivoted at the origin A, sliding in the slot u2, FIM + ETA3); every couple about
+  ! A.  r(:, 1): the guide's reaction on link 3, r(:, 2): the force of 3 on 2, r(:, 3):
+  ! the reaction on 2 at A.  ier as prp_kernel's.
+  subroutine rpp_kernel(u1, u2, s2, v2, t2, s3, v3, t3, r, ier)
+    real(dp), intent(in) :: u1(2), u2(2), s2(2), v2(2), t2, s3(2), v3(2), t3
+    real(dp), intent(out) :: r(3, 3)
+    integer, intent(inout) :: ier
+    real(dp) :: u(2, 3)
+    integer :: st
+    r = 0.0_dp
+    if (ier == st_singular) return
+    u(:, 1) = u1
+    u(:, 2) = u2
+    u(:, 3) = 0.0_dp
+    call group_reactions(origin, kind_pairs(:, 5), u, v3, t3, s3, v2, t2, s2, r, st)
+    if (st /= st_ok) ier = st
+  end subroutine rpp_kernel
+
+  ! DNMAF5 (A at the origin).
+  subroutine dnmaf5_kernel(xa, ya, fim, tt3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
+                           f21, g21, f32, g32, h32, f34, g34, h34, ier)
+    real(dp), intent(in) :: xa, ya, fim, tt3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3
+    real(dp), intent(inout) :: f21, g21, f32, g32, h32, f34, g34, h34
+    integer, intent(out) :: ier
+    real(dp) :: r(3, 3), u1(2)
+    u1 = unit(fim)
+    ier = den_status(sin(tt3))                               ! COS(PID2 - TT3)
+    call rpp_kernel(u1, unit(fim + tt3), [xs2 - xa, ys2 - ya], vec(f2, g2), t2, &
+                    [xs3 - xa, ys3 - ya], vec(f3, g3), t3, r, ier)
+    if (.not. succeeded(ier)) return
+    call polar(-r(1, 3), -r(2, 3), f21, g21)
+    call polar(r(1, 2), r(2, 2), f32, g32)
+    h32 = arm(r(3, 2), f32)
+    call normal_polar(r(1:2, 1), u1, fim, f34, g34)         ! F43 = DUGL3(FIM, PID2, .)
+    g34 = g34 - pi_exact
+    h34 = arm(r(3, 1), f34)
+  end subroutine dnmaf5_kernel
+
+  ! DNMA1: kind 1 with B at the origin, A = -L2 e(FI2), C = -L3 e(FI3).
+  subroutine dnma1_kernel(l2, fi2, l3, fi3, bs2, bs3, m2, q2, g2, m3, q3, g3, &
+                          ra, ga, rb, gb, rc, gc, ier)
+    real(dp), intent(in) :: l2, fi2, l3, fi3, bs2, bs3, m2, q2, g2, m3, q3, g3
+    real(dp), intent(inout) :: ra, ga, rb, gb, rc, gc
+    integer, intent(out) :: ier
+    real(dp) :: p(2, 3), r(3, 3), u(2, 3), e2(2), e3(2)
+    integer :: st
+    e2 = unit(fi2)
+    e3 = unit(fi3)
+    ier = den_status(e2(1)*e3(2) - e3(1)*e2(2))             ! the links' sine (GELG)
+    if (ier == st_singular) return
+    u = 0.0_dp
+    p(:, 1) = -l2*e2
+    p(:, 2) = 0.0_dp
+    p(:, 3) = -l3*e3
+    call group_reactions(p, kind_pairs(:, 1), u, vec(q2, g2), m2, bs2*e2, vec(q3, g3), m3, &
+                         bs3*e3, r, st)
+    if (st /= st_ok) then
+      ier = st
+      return
+    end if
+    call polar(r(1, 1), r(2, 1), ra, ga)
+    call polar(-r(1, 2), -r(2, 2), rb, gb)                  ! on 2 from 3
+    call polar(r(1, 3), r(2, 3), rc, gc)
+  end subroutine dnma1_kernel
+
+  ! DNMA2: kind 2 with B at the origin, A = -L2 e(FI2), S3 on the line B + s e(FIO + ETA).
+  subroutine dnma2_kernel(l2, fi2, eta, fio, bs2, bs3, m2, q2, g2, m3, q3, g3, &
+                          ra, ga, rb, gb, rc, hc, gc, ier)
+    real(dp), intent(in) :: l2, fi2, eta, fio, bs2, bs3, m2, q2, g2, m3, q3, g3
+    real(dp), intent(inout) :: ra, ga, rb, gb, rc, hc, gc
+    integer, intent(out) :: ier
+    real(dp) :: p(2, 3), r(3, 3), u(2, 3), e2(2)
+    integer :: st
+    e2 = unit(fi2)
+    u = 0.0_dp
+    u(:, 3) = unit(fio)
+    ier = gelg_status(e2(1), -u(2, 3), e2(2), u(1, 3))
+    if (ier == st_singular) return
+    p(:, 1) = -l2*e2
+    p(:, 2:3) = 0.0_dp
+    call group_reactions(p, kind_pairs(:, 2), u, vec(q2, g2), m2, bs2*e2, vec(q3, g3), m3, &
+                         bs3*unit(fio + eta), r, st)
+    if (st /= st_ok) then
+      ier = st
+      return
+    end if
+    call polar(r(1, 1), r(2, 1), ra, ga)
+    call polar(-r(1, 2), -r(2, 2), rb, gb)
+    call normal_polar(r(1:2, 3), u(:, 3), fio, rc, gc)
+    hc = arm(r(3, 3), rc)
+  end subroutine dnma2_kernel
+
+  ! DNMA3: kind 3 with C at the origin, A = -AC e(FIAC); the slider's couple about A.
+  subroutine dnma3_kernel(fi3, cs2, fics2, cs3, fics3, ac, fiac, m2, q2, g2, m3, q3, g3, &
+                          ra, ga, rb, hb, gb, rc, gc, ier)
+    real(dp), intent(in) :: fi3, cs2, fics2, cs3, fics3, ac, fiac, m2, q2, g2, m3, q3, g3
+    real(dp), intent(inout) :: ra, ga, rb, hb, gb, rc, gc
+    integer, intent(out) :: ier
+    real(dp) :: p(2, 3), r(3, 3), u(2, 3), eac(2), a(2)
+    integer :: st
+    eac = unit(fiac)
+    u = 0.0_dp
+    u(:, 2) = unit(fi3)
+    ier = gelg_status(eac(1), -u(2, 2), eac(2), u(1, 2))
+    if (ier == st_singular) return
+    a = -ac*eac
+    p(:, 1) = a
+    p(:, 2) = a
+    p(:, 3) = 0.0_dp
+    call group_reactions(p, kind_pairs(:, 3), u, vec(q2, g2), m2, cs2*unit(fics2), &
+                         vec(q3, g3), m3, cs3*unit(fics3), r, st)
+    if (st /= st_ok) then
+      ier = st
+      return
+    end if
+    call polar(r(1, 1), r(2, 1), ra, ga)
+    call normal_polar(-r(1:2, 2), u(:, 2), fi3, rb, gb)     ! on 2 from 3
+    ! HB*RB: the moment about C of the force on 3 from 2, whose couple is about A
+    hb = arm(r(3, 2) + (a(1)*r(2, 2) - a(2)*r(1, 2)), rb)
+    call polar(r(1, 3), r(2, 3), rc, gc)
+  end subroutine dnma3_kernel
+
+  ! DNMA4 (B at the origin).
+  subroutine dnma4_kernel(fim, eta2, fin, eta3, bs2, bs3, m2, q2, g2, m3, q3, g3, &
+                          ra, ha, ga, rb, gb, rc, hc, gc, ier)
+    real(dp), intent(in) :: fim, eta2, fin, eta3, bs2, bs3, m2, q2, g2, m3, q3, g3
+    real(dp), intent(inout) :: ra, ha, ga, rb, gb, rc, hc, gc
+    integer, intent(out) :: ier
+    real(dp) :: r(3, 3), u1(2), u3(2)
+    u1 = unit(fim)
+    u3 = unit(fin)
+    ier = gelg_status(-u1(2), -u3(2), u1(1), u3(1))
+    call prp_kernel(u1, u3, bs2*unit(fim + eta2), vec(q2, g2), m2, bs3*unit(fin + eta3), &
+                    vec(q3, g3), m3, r, ier)
+    if (.not. succeeded(ier)) return
+    call normal_polar(r(1:2, 1), u1, fim, ra, ga)
+    ha = arm(r(3, 1), ra)
+    call polar(-r(1, 2), -r(2, 2), rb, gb)
+    call normal_polar(r(1:2, 3), u3, fin, rc, gc)
+    hc = arm(r(3, 3), rc)
+  end subroutine dnma4_kernel
+
+  ! DNMA5 (A at the origin; S2 = -AS2 e(FIAS2), S3 = -AS3 e(FIAS3): E-DNMA5-3).
+  subroutine dnma5_kernel(eta3, fim, as2, as3, fias2, fias3, m2, q2, g2, m3, q3, g3, &
+                          ra, ga, rb, hb, gb, rc, hc, gc, ier)
+    real(dp), intent(in) :: eta3, fim, as2, as3, fias2, fias3, m2, q2, g2, m3, q3, g3
+    real(dp), intent(inout) :: ra, ga, rb, hb, gb, rc, hc, gc
+    integer, intent(out) :: ier
+    real(dp) :: r(3, 3), u1(2), u2(2)
+    u1 = unit(fim)
+    u2 = unit(fim + eta3)
+    ier = gelg_status(-u1(2), -u2(2), u1(1), u2(1))
+    call rpp_kernel(u1, u2, -as2*unit(fias2), vec(q2, g2), m2, -as3*unit(fias3), &
+                    vec(q3, g3), m3, r, ier)
+    if (.not. succeeded(ier)) return
+    call polar(-r(1, 3), -r(2, 3), ra, ga)                  ! the printed DSMVKT's RA + PI
+    ga = ga + pi_exact
+    call normal_polar(-r(1:2, 2), u2, fim + eta3, rb, gb)   ! on 3 from 2
+    hb = arm(r(3, 2), rb)
+    call normal_polar(r(1:2, 1), u1, fim, rc, gc)
+    hc = arm(r(3, 1), rc)
+  end subroutine dnma5_kernel
+
+  ! ============================================================================
   ! projection method (F21, F34: forces of the group ON the chain)
   ! ============================================================================
 
@@ -156,13 +541,7 @@ contains
     !:     2, 3), m.
     !: FIM : real -- Direction of the guide m of the prismatic pair C (slider 3 on link 4),
     !:     rad.
-    !: XS2, YS2 : real -- Reduction point S2 of link 2 (m).
-    !: F2, G2 : real >= 0; real -- Resultant of the loads on link 2 (N, >= 0) and its
-    !:     direction (rad).
-    !: XS3, YS3, F3, G3 : real; real; real >= 0; real -- The same for link 3.
-    !: T2, T3 : real -- Main moments of the loads on links 2 and 3 about S2, S3 (N*m, CCW
-    !:     +).
-    !: AAA : flag -- The book's print flag; unused (the routine prints nothing).
+    !:insert loads_f
     real(dp), intent(in) :: xa, ya, xb, yb, fim, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
                             aaa
     real(dp), intent(out) :: f21, g21, f23, g23, f34, g34, h34
@@ -170,6 +549,11 @@ contains
     real(dp) :: f12m, g12m, r, fi, rbs2, fibs2, rbs3, fibs3, f12nm, g12nm, f12, g, den
     f21 = 0.0_dp; g21 = 0.0_dp; f23 = 0.0_dp; g23 = 0.0_dp; f34 = 0.0_dp; g34 = 0.0_dp
     h34 = 0.0_dp
+    if (printed_mode == 0) then                ! corrected: over the kernel
+      call dnmaf2_kernel(xa, ya, xb, yb, fim, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, &
+                         t3, f21, g21, f23, g23, f34, g34, h34, ier)
+      return
+    end if
     ! the group projected on the guide m (F43 has no component along it)
     f12m = -(f2*cos(g2 - fim) + f3*cos(g3 - fim))
     g12m = dugl4(fim, pi, f12m)
@@ -200,13 +584,7 @@ contains
                     f21, g21, f23, g23, f34, g34, ier)
     !: XA, YA, XB, YB, XC, YC : real -- Centres of the revolutes A (link 2 on link 1), B
     !:     (links 2, 3) and C (link 3 on link 4), m.
-    !: XS2, YS2 : real -- Reduction point S2 of link 2 (m).
-    !: F2, G2 : real >= 0; real -- Resultant of the loads on link 2 (N, >= 0) and its
-    !:     direction (rad).
-    !: XS3, YS3, F3, G3 : real; real; real >= 0; real -- The same for link 3.
-    !: T2, T3 : real -- Main moments of the loads on links 2 and 3 about S2, S3 (N*m, CCW
-    !:     +).
-    !: AAA : flag -- The book's print flag; unused (the routine prints nothing).
+    !:insert loads_f
     real(dp), intent(in) :: xa, ya, xb, yb, xc, yc, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, &
                             t3, aaa
     real(dp), intent(out) :: f21, g21, f23, g23, f34, g34
@@ -214,6 +592,11 @@ contains
     real(dp) :: rbs2, fibs2, rcs2, fics2, rcs3, fics3, rca, fica, r, fi, f12t, g12t, f12n, &
                 g12n, g, den
     f21 = 0.0_dp; g21 = 0.0_dp; f23 = 0.0_dp; g23 = 0.0_dp; f34 = 0.0_dp; g34 = 0.0_dp
+    if (printed_mode == 0) then                ! corrected: over the kernel
+      call dnmaf1_kernel(xa, ya, xb, yb, xc, yc, xs2, ys2, f2, g2, xs3, ys3, f3, g3, &
+                         t2, t3, f21, g21, f23, g23, f34, g34, ier)
+      return
+    end if
     call dvkt(xb, yb, xs2, ys2, rbs2, fibs2)
     call dvkt(xc, yc, xs2, ys2, rcs2, fics2)
     call dvkt(xc, yc, xs3, ys3, rcs3, fics3)
@@ -249,19 +632,18 @@ contains
     !: FIM, FIN : real -- Directions of the guides of the prismatic pairs A (link 2 on link
     !:     1) and C (link 3 on link 4), rad.
     !: XB, YB : real -- Centre of the revolute B joining links 2 and 3, m.
-    !: XS2, YS2 : real -- Reduction point S2 of link 2 (m).
-    !: F2, G2 : real >= 0; real -- Resultant of the loads on link 2 (N, >= 0) and its
-    !:     direction (rad).
-    !: XS3, YS3, F3, G3 : real; real; real >= 0; real -- The same for link 3.
-    !: T2, T3 : real -- Main moments of the loads on links 2 and 3 about S2, S3 (N*m, CCW
-    !:     +).
-    !: AAA : flag -- The book's print flag; unused (the routine prints nothing).
+    !:insert loads_f
     real(dp), intent(in) :: fim, fin, xb, yb, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, aaa
     real(dp), intent(out) :: f21, g21, h21, f23, g23, f34, g34, h34
     integer, intent(out) :: ier
     real(dp) :: rbs2, fibs2, rbs3, fibs3, f12, g12, den
     f21 = 0.0_dp; g21 = 0.0_dp; h21 = 0.0_dp; f23 = 0.0_dp; g23 = 0.0_dp; f34 = 0.0_dp
     g34 = 0.0_dp; h34 = 0.0_dp
+    if (printed_mode == 0) then                ! corrected: over the kernel
+      call dnmaf4_kernel(fim, fin, xb, yb, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
+                         f21, g21, h21, f23, g23, f34, g34, h34, ier)
+      return
+    end if
     call dvkt(xb, yb, xs2, ys2, rbs2, fibs2)
     call dvkt(xb, yb, xs3, ys3, rbs3, fibs3)
     den = cos(fim + pid2 - fin)
@@ -289,13 +671,7 @@ contains
     !:     on link 4), m.
     !: FI3 : real -- Direction of the guide on link 3 along which link 2 slides, rad
     !:     (printed ``F/3`` and ``F13``: ERRATA E-DNMAF3-1).
-    !: XS2, YS2 : real -- Reduction point S2 of link 2 (m).
-    !: F2, G2 : real >= 0; real -- Resultant of the loads on link 2 (N, >= 0) and its
-    !:     direction (rad).
-    !: XS3, YS3, F3, G3 : real; real; real >= 0; real -- The same for link 3.
-    !: T2, T3 : real -- Main moments of the loads on links 2 and 3 about S2, S3 (N*m, CCW
-    !:     +).
-    !: AAA : flag -- The book's print flag; unused (the routine prints nothing).
+    !:insert loads_f
     real(dp), intent(in) :: xa, ya, xc, yc, fi3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
                             aaa
     real(dp), intent(out) :: f21, g21, f23, g23, h23, f34, g34
@@ -303,6 +679,11 @@ contains
     real(dp) :: f12t3, g12t3, rca, fica, rcs2, fics2, rcs3, fics3, f12n3, g12n3, g, den
     f21 = 0.0_dp; g21 = 0.0_dp; f23 = 0.0_dp; g23 = 0.0_dp; h23 = 0.0_dp; f34 = 0.0_dp
     g34 = 0.0_dp
+    if (printed_mode == 0) then                ! corrected: over the kernel
+      call dnmaf3_kernel(xa, ya, xc, yc, fi3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, &
+                         t3, f21, g21, f23, g23, h23, f34, g34, ier)
+      return
+    end if
     ! link 2 projected on the guide (F32 has no component along it)
     f12t3 = -f2*cos(g2 - fi3)
     g12t3 = dugl4(fi3, pi, f12t3)
@@ -338,19 +719,18 @@ contains
     !: FIM : real -- Direction of the guide of pair C (link 3 slides on link 4), rad.
     !: TT3 : real -- Direction of the inner guide (pair B, link 2 slides in link 3) relative
     !:     to FIM; its absolute direction is FIM + TT3.
-    !: XS2, YS2 : real -- Reduction point S2 of link 2 (m).
-    !: F2, G2 : real >= 0; real -- Resultant of the loads on link 2 (N, >= 0) and its
-    !:     direction (rad).
-    !: XS3, YS3, F3, G3 : real; real; real >= 0; real -- The same for link 3.
-    !: T2, T3 : real -- Main moments of the loads on links 2 and 3 about S2, S3 (N*m, CCW
-    !:     +).
-    !: AAA : flag -- The book's print flag; unused (the routine prints nothing).
+    !:insert loads_f
     real(dp), intent(in) :: xa, ya, fim, tt3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, aaa
     real(dp), intent(out) :: f21, g21, f32, g32, h32, f34, g34, h34
     integer, intent(out) :: ier
     real(dp) :: ras2, fias2, ras3, fias3, f43, g43, den
     f21 = 0.0_dp; g21 = 0.0_dp; f32 = 0.0_dp; g32 = 0.0_dp; h32 = 0.0_dp; f34 = 0.0_dp
     g34 = 0.0_dp; h34 = 0.0_dp
+    if (printed_mode == 0) then                ! corrected: over the kernel
+      call dnmaf5_kernel(xa, ya, fim, tt3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
+                         f21, g21, f32, g32, h32, f34, g34, h34, ier)
+      return
+    end if
     call dvkt(xa, ya, xs2, ys2, ras2, fias2)
     call dvkt(xa, ya, xs3, ys3, ras3, fias3)
     den = cos(pid2 - tt3)
@@ -378,11 +758,11 @@ contains
   ! written with PI + FI2); a point between A and B has a negative BS2.  The same for BS3.
   ! RB = force on 2 from 3.  Singular: links 2 and 3 parallel (GELG IER = -1).
   ! ERRATA: E-DNMA1-1 (F12, F13, RI2 for FI2, FI3: OCR), E-DUGL6-1.
-  ! Corrected mode computes the same statics in Cartesian components, with the sine and
-  ! cosine of each of FI2, FI3, G2, G3 taken once (8 libm calls and DUGL5's 3 arctangents
-  ! per position; the printed form takes 16 sines and cosines before its directions, and
-  ! DUGL6 4 more each, then re-projects RA).  The printed form, with PI = 3.14159 inside
-  ! SIN(PI + FI2) and DUGL3/DUGL4's PI/2 and PI, is kept for as-printed mode.
+  ! Corrected mode: dnma1_kernel (the sine and cosine of each of FI2, FI3, G2, G3 once,
+  ! the kernel's Cramer solve, DUGL5's 3 arctangents; the printed form takes 16 sines and
+  ! cosines before its directions, DUGL6 4 more each, then re-projects RA).  The printed
+  ! form, with PI = 3.14159 inside SIN(PI + FI2) and DUGL3/DUGL4's PI/2 and PI, is kept
+  ! for as-printed mode.
   subroutine dnma1(l2, fi2, l3, fi3, bs2, bs3, m2, q2, g2, m3, q3, g3, &
                    ra, ga, rb, gb, rc, gc, ier)
     !: L2, FI2 : length; real -- Length AB (m, > 0) and direction A->B (rad), as DPRM1
@@ -391,53 +771,19 @@ contains
     !: BS2, BS3 : real -- Signed distances from B to the reduction points: **S2 = B + BS2
     !:     e(FI2)** and **S3 = B + BS3 e(FI3)**, i.e. measured from B away from A (from C);
     !:     a point between A and B has a negative BS2 (ERRATA E-DNMA1-3).
-    !: M2, Q2, G2 : real; real >= 0; real -- Main moment (N*m, CCW +), resultant (N, >= 0)
-    !:     and its direction (rad) of the loads on link 2, reduced to S2.
-    !: M3, Q3, G3 : real; real >= 0; real -- The same for link 3, reduced to S3.
+    !:insert loads_q
     real(dp), intent(in) :: l2, fi2, l3, fi3, bs2, bs3, m2, q2, g2, m3, q3, g3
     real(dp), intent(out) :: ra, ga, rb, gb, rc, gc
     integer, intent(out) :: ier
     real(dp) :: mbq2, mbq3, rat, gat, rct, gct, y1, y2, gan, ran, gcn, rcn, rbx, rby
-    real(dp) :: c2, s2, c3, s3, qx2, qy2, qx3, qy3, rax, ray, rcx, rcy, det, b1, b2
     ra = 0.0_dp; ga = 0.0_dp; rb = 0.0_dp; gb = 0.0_dp; rc = 0.0_dp; gc = 0.0_dp
     if (.not. (l2 > 0.0_dp .and. l3 > 0.0_dp)) then
       ier = st_singular
       return
     end if
-    if (printed_mode == 0) then
-      c2 = cos(fi2)
-      s2 = sin(fi2)
-      c3 = cos(fi3)
-      s3 = sin(fi3)
-      qx2 = q2*cos(g2)
-      qy2 = q2*sin(g2)
-      qx3 = q3*cos(g3)
-      qy3 = q3*sin(g3)
-      ! moments about B: RA's (signed) component along e(FI2 + pi/2), RC's along e(FI3 + pi/2)
-      rat = (m2 - bs2*(qx2*s2 - qy2*c2))/l2
-      rct = (m3 - bs3*(qx3*s3 - qy3*c3))/l3
-      ! the group's forces: the components y1 along e(FI2), y2 along e(FI3), by Cramer's
-      ! rule: the determinant is the sine of the angle between the links, whose
-      ! den_status is the status (the book's GELG pivot test, in the same units)
-      det = c2*s3 - c3*s2
-      ier = den_status(det)
-      if (ier == st_singular) return
-      b1 = -(qx2 + qx3 - rat*s2 - rct*s3)
-      b2 = -(qy2 + qy3 + rat*c2 + rct*c3)
-      y1 = (b1*s3 - c3*b2)/det
-      y2 = (c2*b2 - s2*b1)/det
-      rax = y1*c2 - rat*s2
-      ray = y1*s2 + rat*c2
-      rcx = y2*c3 - rct*s3
-      rcy = y2*s3 + rct*c3
-      ra = sqrt(y1**2 + rat**2)
-      rc = sqrt(y2**2 + rct**2)
-      ga = direction(rax, ray)
-      gc = direction(rcx, rcy)
-      rbx = -(rax + qx2)
-      rby = -(ray + qy2)
-      rb = sqrt(rbx**2 + rby**2)
-      gb = direction(rbx, rby)
+    if (printed_mode == 0) then                ! corrected: over the kernel
+      call dnma1_kernel(l2, fi2, l3, fi3, bs2, bs3, m2, q2, g2, m3, q3, g3, ra, ga, &
+                        rb, gb, rc, gc, ier)
       return
     end if
     ! links 2 and 3, moments about B: the components of RA, RC normal to the links
@@ -485,9 +831,7 @@ contains
     !:     ``FIO`` in the body: ERRATA E-DNMA2-1), rad.
     !: BS2, BS3 : real -- Signed distances: **S2 = B + BS2 e(FI2)**, **S3 = B + BS3 e(FIO +
     !:     ETA)** (ERRATA E-DNMA2-3).
-    !: M2, Q2, G2 : real; real >= 0; real -- Main moment (N*m, CCW +), resultant (N, >= 0)
-    !:     and its direction (rad) of the loads on link 2, reduced to S2.
-    !: M3, Q3, G3 : real; real >= 0; real -- The same for link 3, reduced to S3.
+    !:insert loads_q
     real(dp), intent(in) :: l2, fi2, l3, eta, fio, bs2, bs3, m2, q2, g2, m3, q3, g3
     real(dp), intent(out) :: ra, ga, rb, gb, rc, hc, gc
     integer, intent(out) :: ier
@@ -496,6 +840,11 @@ contains
     gc = 0.0_dp
     if (.not. (l2 > 0.0_dp)) then
       ier = st_singular
+      return
+    end if
+    if (printed_mode == 0) then                ! corrected: over the kernel
+      call dnma2_kernel(l2, fi2, eta, fio, bs2, bs3, m2, q2, g2, m3, q3, g3, ra, ga, &
+                        rb, gb, rc, hc, gc, ier)
       return
     end if
     mbq2 = q2*cos(g2)*bs2*sin(pi + fi2) - q2*sin(g2)*bs2*cos(pi + fi2)
@@ -538,9 +887,7 @@ contains
     !:     **A->C** (ERRATA E-DNMA3-4): the printed ``DUGL3(FIAC, -PID2, RAT)`` acts as
     !:     ``DUGL3(FIAC, +PID2, RAT)`` because Fortran's SIGN keeps only the magnitude of
     !:     its first argument.
-    !: M2, Q2, G2 : real; real >= 0; real -- Main moment (N*m, CCW +), resultant (N, >= 0)
-    !:     and its direction (rad) of the loads on link 2, reduced to S2.
-    !: M3, Q3, G3 : real; real >= 0; real -- The same for link 3, reduced to S3.
+    !:insert loads_q
     real(dp), intent(in) :: l2, eta2, fi3, cs2, fics2, cs3, fics3, ac, fiac, m2, q2, g2, m3, &
                             q3, g3
     real(dp), intent(out) :: ra, ga, rb, hb, gb, rc, gc
@@ -550,6 +897,11 @@ contains
     gc = 0.0_dp
     if (.not. (ac > 0.0_dp)) then
       ier = st_singular
+      return
+    end if
+    if (printed_mode == 0) then                ! corrected: over the kernel
+      call dnma3_kernel(fi3, cs2, fics2, cs3, fics3, ac, fiac, m2, q2, g2, m3, q3, g3, &
+                        ra, ga, rb, hb, gb, rc, gc, ier)
       return
     end if
     ! the group, moments about C: the component of RA normal to AC
@@ -584,31 +936,24 @@ contains
   ! ERRATA: E-DNMA4-1 (FIM for FIN in HC's moment), E-DNMA-1 (HA, HC for zero forces).
   subroutine dnma4(fim, eta2, fin, eta3, bs2, bs3, m2, q2, g2, m3, q3, g3, &
                    ra, ha, ga, rb, gb, rc, hc, gc, ier)
-    !: FIM : real -- Directions of the guides of pairs A (link 2 on link 1) and C (link 3 on
-    !:     link 4).
-    !: ETA2 : real -- Directions of the lines B->S2, B->S3 relative to FIM and FIN.
-    !: FIN : real -- Directions of the guides of pairs A (link 2 on link 1) and C (link 3 on
-    !:     link 4).
-    !: ETA3 : real -- Directions of the lines B->S2, B->S3 relative to FIM and FIN.
-    !: BS2 : real -- Signed distances: **S2 = B + BS2 e(FIM + ETA2)**, **S3 = B + BS3 e(FIN
-    !:     + ETA3)** (ERRATA E-DNMA4-2).
-    !: BS3 : real -- Signed distances: **S2 = B + BS2 e(FIM + ETA2)**, **S3 = B + BS3 e(FIN
-    !:     + ETA3)** (ERRATA E-DNMA4-2).
-    !: M2 : real -- Main moment (N*m, CCW +), resultant (N, >= 0) and its direction (rad) of
-    !:     the loads on link 2, reduced to S2.
-    !: Q2 : real >= 0 -- Main moment (N*m, CCW +), resultant (N, >= 0) and its direction
-    !:     (rad) of the loads on link 2, reduced to S2.
-    !: G2 : real -- Main moment (N*m, CCW +), resultant (N, >= 0) and its direction (rad) of
-    !:     the loads on link 2, reduced to S2.
-    !: M3 : real -- The same for link 3, reduced to S3.
-    !: Q3 : real >= 0 -- The same for link 3, reduced to S3.
-    !: G3 : real -- The same for link 3, reduced to S3.
+    !: FIM : real -- Direction of the guide of pair A (link 2 on link 1), rad.
+    !: ETA2 : real -- Direction of the line B->S2 relative to FIM, rad.
+    !: FIN : real -- Direction of the guide of pair C (link 3 on link 4), rad.
+    !: ETA3 : real -- Direction of the line B->S3 relative to FIN, rad.
+    !: BS2, BS3 : real -- Signed distances: **S2 = B + BS2 e(FIM + ETA2)**, **S3 = B + BS3
+    !:     e(FIN + ETA3)** (ERRATA E-DNMA4-2).
+    !:insert loads_q
     real(dp), intent(in) :: fim, eta2, fin, eta3, bs2, bs3, m2, q2, g2, m3, q3, g3
     real(dp), intent(out) :: ra, ha, ga, rb, gb, rc, hc, gc
     integer, intent(out) :: ier
     real(dp) :: y1, y2, sm, rx, ry
     ra = 0.0_dp; ha = 0.0_dp; ga = 0.0_dp; rb = 0.0_dp; gb = 0.0_dp; rc = 0.0_dp
     hc = 0.0_dp; gc = 0.0_dp
+    if (printed_mode == 0) then                ! corrected: over the kernel
+      call dnma4_kernel(fim, eta2, fin, eta3, bs2, bs3, m2, q2, g2, m3, q3, g3, ra, &
+                        ha, ga, rb, gb, rc, hc, gc, ier)
+      return
+    end if
     call solve2(cos(fim + pid2), cos(fin + pid2), sin(fim + pid2), sin(fin + pid2), &
                 -(q2*cos(g2) + q3*cos(g3)), -(q2*sin(g2) + q3*sin(g3)), y1, y2, ier)
     if (ier == st_singular) return
@@ -644,15 +989,18 @@ contains
     !: AS2, AS3, FIAS2, FIAS3 : real >= 0; real >= 0; real; real -- Lengths (m, >= 0) and
     !:     directions of the segments joining A and the reduction points; the directions run
     !:     **from S to A**: S2 = A - AS2 e(FIAS2), S3 = A - AS3 e(FIAS3) (ERRATA E-DNMA5-3).
-    !: M2, Q2, G2 : real; real >= 0; real -- Main moment (N*m, CCW +), resultant (N, >= 0)
-    !:     and its direction (rad) of the loads on link 2, reduced to S2.
-    !: M3, Q3, G3 : real; real >= 0; real -- The same for link 3, reduced to S3.
+    !:insert loads_q
     real(dp), intent(in) :: eta3, fim, as2, as3, fias2, fias3, m2, q2, g2, m3, q3, g3
     real(dp), intent(out) :: ra, ga, rb, hb, gb, rc, hc, gc
     integer, intent(out) :: ier
     real(dp) :: y1, y2, sm1, sm
     ra = 0.0_dp; ga = 0.0_dp; rb = 0.0_dp; hb = 0.0_dp; gb = 0.0_dp; rc = 0.0_dp
     hc = 0.0_dp; gc = 0.0_dp
+    if (printed_mode == 0) then                ! corrected: over the kernel
+      call dnma5_kernel(eta3, fim, as2, as3, fias2, fias3, m2, q2, g2, m3, q3, g3, ra, &
+                        ga, rb, hb, gb, rc, hc, gc, ier)
+      return
+    end if
     ! link 3's forces: RC and the force from 2, both normal to their guides
     call solve2(cos(fim + pid2), cos(fim + eta3 + pid2), sin(fim + pid2), &
                 sin(fim + eta3 + pid2), -q3*cos(g3), -q3*sin(g3), y1, y2, ier)

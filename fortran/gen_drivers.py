@@ -12,6 +12,9 @@ order of the Python signature, as MINPACK documents each argument::
     !:     (a line that does not start with NAMES : begins is a continuation)
     !: AAA : flag -- the book's print flag; unused
 
+Argument lines that several routines share are written once, as a block before them
+(``!:define NAME``, the lines, ``!:end``), and stand in each routine as ``!:insert NAME``.
+
 ``NAMES : KIND -- meaning``.  A KIND is ``[table(D1[, D2])] RULE [= DEFAULT]``, with
 RULE one of ``real`` (a finite number), ``length`` (a length, > 0), ``real > 0``,
 ``real >= 0``, ``real != 0``, ``branch`` (an assembly branch, -1 or +1),
@@ -153,10 +156,33 @@ class Procedure:
 
 def logical_lines(text: str):
     """Statements with continuations joined and comments dropped; ``!sarkp`` and
-    argument lines (``!:``) kept."""
+    argument lines (``!:``) kept, argument-line blocks expanded: the lines between
+    ``!:define NAME`` and ``!:end`` (written once, before the routines that share them)
+    stand wherever a routine has ``!:insert NAME``."""
     out, pending = [], ""
+    blocks: dict[str, list[str]] = {}
+    defining = None
     for raw in text.splitlines():
         stripped = raw.strip()
+        if stripped.startswith("!:define "):
+            defining = blocks.setdefault(stripped.split()[1], [])
+            continue
+        if defining is not None:
+            if stripped == "!:end":
+                defining = None
+            elif stripped.startswith("!:"):
+                defining.append(stripped)
+            else:
+                raise SystemExit(f"gen_drivers: argument-line block: {stripped!r} is not "
+                                 f"an argument line (close the block with !:end)")
+            continue
+        if stripped.startswith("!:insert "):
+            name = stripped.split()[1]
+            if name not in blocks:
+                raise SystemExit(f"gen_drivers: !:insert {name}: no such block defined "
+                                 f"above it")
+            out.extend(blocks[name])
+            continue
         if stripped.lower().startswith("!sarkp") or stripped.startswith("!:"):
             out.append(stripped)
             continue

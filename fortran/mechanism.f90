@@ -42,8 +42,8 @@ module mechanism
   use prmtr, only: dp, st_ok, st_assembly, st_singular, st_range, st_missing, st_digits, &
                    norm2d
   use numerics, only: policy, failed
-  use groups, only: cram, cramer_set, cramer, crank_kernel, rigid_kernel, rrr_kernel, &
-                    rrp_kernel, rpr_kernel, prp_kernel, rpp_kernel
+  use groups, only: crank_kernel, rigid_kernel, rrr_kernel, rrp_kernel, rpr_kernel, &
+                    prp_kernel, rpp_kernel, kind_pairs, group_reactions
   implicit none
   private
   public :: mech_solve, mech_solve_many
@@ -81,18 +81,30 @@ contains
     real(dp), intent(inout) :: th(2, nol, n), om(nol, nv), ep(nol, na)
     real(dp), intent(inout) :: react(3, npair, nr), mbal(nr), jred(nv), mred(nr)
     integer, intent(inout) :: status(n), fgroup(n)
-    ! work arrays of one position (allocated once per call, none per group)
+    ! work arrays: a block of up to nb positions for the kinematics (point p of the j-th
+    ! position of the block at xb(:, p, j), link l's direction cosine at cb(l, j)), and
+    ! one position for the force step (x, v, a, c, s, w, e); allocated once per call
+    integer, parameter :: nb = 64
+    real(dp), allocatable :: xb(:, :, :), vb(:, :, :), ab(:, :, :)
+    real(dp), allocatable :: cb(:, :), sb(:, :), wb(:, :), eb(:, :), maxest(:)
+    integer, allocatable :: worst(:), fgb(:)
     real(dp), allocatable :: x(:, :), v(:, :), a(:, :), c(:), s(:), w(:), e(:)
     real(dp), allocatable :: fl(:, :), ml(:), aa(:, :), ee(:)
     integer, allocatable :: gslot(:)
-    integer :: i, k, kind, st, worst, jf, jt, js, fg, g, p, l
-    real(dp) :: est, maxest, wi, ei, w2, px, py
+    integer :: i, i0, j, m, k, jf, jt, js, fg, g, p, l, lev, st
+    real(dp) :: wi, ei, w2, px, py
     logical :: masses
 
+    m = min(n, nb)
+    allocate(xb(2, np, m), vb(2, np, m), ab(2, np, m), cb(0:nl, m), sb(0:nl, m), &
+             wb(0:nl, m), eb(0:nl, m), maxest(m), worst(m), fgb(m))
+    do j = 1, m
+      xb(:, :, j) = x0
+    end do
+    vb = 0.0_dp; ab = 0.0_dp
+    cb = 1.0_dp; sb = 0.0_dp; wb = 0.0_dp; eb = 0.0_dp
     allocate(x(2, np), v(2, np), a(2, np), c(0:nl), s(0:nl), w(0:nl), e(0:nl))
     allocate(fl(2, 0:nl), ml(0:nl), aa(2, np), ee(0:nl))
-    x = x0; v = 0.0_dp; a = 0.0_dp
-    c = 1.0_dp; s = 0.0_dp; w = 0.0_dp; e = 0.0_dp
     ! the reaction slots of the groups: 1 the crank's O, then three per group in order
     allocate(gslot(ns))
     g = 0
@@ -105,111 +117,116 @@ contains
     end do
     ! no masses (the caller's one neutral entry of zero mass and inertia): J_red = 0
     masses = any(mval /= 0.0_dp)
+    lev = min(need, 3)
     wi = 0.0_dp
-    do i = 1, n
-      worst = st_ok
-      fg = 0
-      maxest = 0.0_dp
+    do i0 = 0, n - 1, nb
+      m = min(nb, n - i0)
+      ! the kinematics, step by step over the block (each step's slots read once, its
+      ! kernel called for each position still standing)
+      worst(1:m) = st_ok
+      fgb(1:m) = 0
+      maxest(1:m) = 0.0_dp
       do k = 1, ns
-        kind = gi(1, k)
-        call step(k, kind, i, st, est)
+        call step(k, gi(1, k), i0, m)
+      end do
+      do j = 1, m
+        i = i0 + j
+        fg = fgb(j)
+        st = worst(j)
+        if (.not. failed(st)) then
+          st = policy(maxest(j))
+          if (st == st_ok) fg = 0
+        end if
         if (failed(st)) then
-          ! a result out of range once no digit is left (a group at a dead centre: its
-          ! velocities, finite but huge, squared in its accelerations) is that dead
-          ! centre, not an overflow (an estimate of exactly huge is a failed solve's
-          ! placeholder, not an estimate)
-          if (st == st_range .and. ((.not. maxest <= 0.1_dp .and. maxest /= huge(est)) &
-              .or. (.not. est <= 0.1_dp .and. est /= huge(est)))) st = st_singular
-          worst = st
-          fg = k
-          exit
-        end if
-        if (est > maxest .or. .not. est <= huge(est)) then
-          maxest = est
-          fg = k
-        end if
-      end do
-      if (.not. failed(worst)) then
-        worst = policy(maxest)
-        if (worst == st_ok) fg = 0
-      end if
-      if (failed(worst)) then
-        status(i) = worst
-        fgroup(i) = fg
-        cycle
-      end if
-      ! the outputs: the moving points and links only (the caller knows the frame's), one
-      ! scalar statement a number (cheaper than the little array sections); a position
-      ! found out of range here is overwritten with NaN by the caller
-      do k = 1, nop
-        p = outp(k)
-        px = x(1, p)
-        py = x(2, p)
-        pos(1, k, i) = px
-        pos(2, k, i) = py
-        if (.not. (abs(px) <= huge(px) .and. abs(py) <= huge(py))) then
-          worst = st_range
-          fg = 0
-        end if
-      end do
-      ! status and fgroup come in zeroed (solve): a position that is fine is not written,
-      ! which spares the kernel clearing their pages
-      if (worst /= st_ok .or. fg /= 0) then
-        status(i) = worst
-        fgroup(i) = fg
-        if (worst == st_range) cycle
-      end if
-      do k = 1, nol
-        l = outl(k)
-        th(1, k, i) = c(l)
-        th(2, k, i) = s(l)
-      end do
-      if (need >= 2) then
-        wi = omega(1 + (i - 1)*inc_w)
-        ! velocities and accelerations (and the loads they make) within the range of
-        ! doubles: else the position is st_range (the caller raises RangeError)
-        if (.not. in_range(wi, epsil(1 + (i - 1)*inc_e))) then
-          status(i) = st_range
-          fgroup(i) = 0
+          status(i) = st
+          fgroup(i) = fg
           cycle
         end if
+        ! the outputs: the moving points and links only (the caller knows the frame's),
+        ! one scalar statement a number (cheaper than the little array sections); a
+        ! position found out of range here is overwritten with NaN by the caller
         do k = 1, nop
           p = outp(k)
-          vel(1, k, i) = v(1, p)*wi
-          vel(2, k, i) = v(2, p)*wi
+          px = xb(1, p, j)
+          py = xb(2, p, j)
+          pos(1, k, i) = px
+          pos(2, k, i) = py
+          if (.not. (abs(px) <= huge(px) .and. abs(py) <= huge(py))) then
+            st = st_range
+            fg = 0
+          end if
         end do
+        ! status and fgroup come in zeroed (solve): a position that is fine is not
+        ! written, which spares the kernel clearing their pages
+        if (st /= st_ok .or. fg /= 0) then
+          status(i) = st
+          fgroup(i) = fg
+          if (st == st_range) cycle
+        end if
         do k = 1, nol
-          om(k, i) = w(outl(k))*wi
+          l = outl(k)
+          th(1, k, i) = cb(l, j)
+          th(2, k, i) = sb(l, j)
         end do
-        jred(i) = 0.0_dp
-        if (masses) jred(i) = reduced_inertia()
-      end if
-      if (need >= 3) then
-        ei = epsil(1 + (i - 1)*inc_e)
-        w2 = wi*wi
+        if (need >= 2) then
+          wi = omega(1 + (i - 1)*inc_w)
+          ! velocities and accelerations (and the loads they make) within the range of
+          ! doubles: else the position is st_range (the caller raises RangeError)
+          if (.not. in_range(j, wi, epsil(1 + (i - 1)*inc_e))) then
+            status(i) = st_range
+            fgroup(i) = 0
+            cycle
+          end if
+          do k = 1, nop
+            p = outp(k)
+            vel(1, k, i) = vb(1, p, j)*wi
+            vel(2, k, i) = vb(2, p, j)*wi
+          end do
+          do k = 1, nol
+            om(k, i) = wb(outl(k), j)*wi
+          end do
+          jred(i) = 0.0_dp
+          if (masses) jred(i) = reduced_inertia(j)
+        end if
+        if (need >= 3) then
+          ei = epsil(1 + (i - 1)*inc_e)
+          w2 = wi*wi
+          do k = 1, nop
+            p = outp(k)
+            acc(1, k, i) = ab(1, p, j)*w2 + vb(1, p, j)*ei
+            acc(2, k, i) = ab(2, p, j)*w2 + vb(2, p, j)*ei
+          end do
+          do k = 1, nol
+            l = outl(k)
+            ep(k, i) = eb(l, j)*w2 + wb(l, j)*ei
+          end do
+        end if
         if (need >= 4) then
-          ! every point's and link's acceleration, for the inertia loads (explicit loops:
-          ! the whole-array form cost gfortran a temporary)
+          ! the force step works on one position: its kinematics, and every point's and
+          ! link's acceleration for the inertia loads (explicit loops: the whole-array
+          ! form cost gfortran a temporary)
           do p = 1, np
+            x(1, p) = xb(1, p, j)
+            x(2, p) = xb(2, p, j)
+            v(1, p) = vb(1, p, j)
+            v(2, p) = vb(2, p, j)
+            a(1, p) = ab(1, p, j)
+            a(2, p) = ab(2, p, j)
             aa(1, p) = a(1, p)*w2 + v(1, p)*ei
             aa(2, p) = a(2, p)*w2 + v(2, p)*ei
           end do
           do l = 0, nl
+            c(l) = cb(l, j)
+            s(l) = sb(l, j)
+            w(l) = wb(l, j)
+            e(l) = eb(l, j)
             ee(l) = e(l)*w2 + w(l)*ei
           end do
+          call forces(i)
         end if
-        do k = 1, nop
-          p = outp(k)
-          acc(1, k, i) = a(1, p)*w2 + v(1, p)*ei
-          acc(2, k, i) = a(2, p)*w2 + v(2, p)*ei
-        end do
-        do k = 1, nol
-          l = outl(k)
-          ep(k, i) = e(l)*w2 + w(l)*ei
-        end do
-      end if
-      if (need >= 4) call forces(i)
+      end do
     end do
+    deallocate(xb, vb, ab, cb, sb, wb, eb, maxest, worst, fgb)
     deallocate(x, v, a, c, s, w, e, fl, ml, aa, ee, gslot)
 
   contains
@@ -217,131 +234,183 @@ contains
     ! ------------------------------------------------------------------ kinematics
 
     ! Whether the velocities x' omega and accelerations x'' omega**2 + x' epsilon of
-    ! every point and link stay below huge/16 (room for the sums of the force step)
-    logical function in_range(wi, ei)
+    ! every point and link of position j of the block stay below huge/16 (room for the
+    ! sums of the force step)
+    logical function in_range(j, wi, ei)
+      integer, intent(in) :: j
       real(dp), intent(in) :: wi, ei
       real(dp) :: vm, am, lim
       lim = huge(1.0_dp)/16.0_dp
-      vm = max(maxval(abs(v)), maxval(abs(w)))
+      vm = max(maxval(abs(vb(:, :, j))), maxval(abs(wb(:, j))))
       in_range = abs(wi)*vm <= lim
       if (need < 3 .or. .not. in_range) return
-      am = max(maxval(abs(a)), maxval(abs(e)))
+      am = max(maxval(abs(ab(:, :, j))), maxval(abs(eb(:, j))))
       in_range = wi*wi <= lim .and. (wi*wi)*am <= lim .and. abs(ei)*vm <= lim .and. &
                  (wi*wi)*am + abs(ei)*vm <= lim
     end function in_range
 
-    ! A link's direction (cosine cl, sine sl): the angle itself is not computed here (the
-    ! Python layer takes it, continuous along the sweep, only for the links asked for)
-    subroutine set_link(l, cl, sl)
-      integer, intent(in) :: l
-      real(dp), intent(in) :: cl, sl
-      c(l) = cl
-      s(l) = sl
-    end subroutine set_link
+    ! The outcome of step k's kernel at position j of the block: a failure ends the
+    ! position's kinematics (its later steps are not run), else the largest estimate and
+    ! the step that made it are kept
+    subroutine account(j, k, st, est)
+      integer, intent(in) :: j, k
+      integer, intent(inout) :: st
+      real(dp), intent(in) :: est
+      if (failed(st)) then
+        ! a result out of range once no digit is left (a group at a dead centre: its
+        ! velocities, finite but huge, squared in its accelerations) is that dead
+        ! centre, not an overflow (an estimate of exactly huge is a failed solve's
+        ! placeholder, not an estimate)
+        if (st == st_range .and. ((.not. maxest(j) <= 0.1_dp .and. maxest(j) /= huge(est)) &
+            .or. (.not. est <= 0.1_dp .and. est /= huge(est)))) st = st_singular
+        worst(j) = st
+        fgb(j) = k
+      else if (est > maxest(j) .or. .not. est <= huge(est)) then
+        maxest(j) = est
+        fgb(j) = k
+      end if
+    end subroutine account
 
-    ! One step of the description (k, of its kind): its inputs gathered from the work
-    ! arrays, its kind's kernel (module groups: the math of every kind is there), its
-    ! outputs scattered; links 2, 3 of a slider group turning with a guide take the
-    ! guide's motion.  An unknown kind is an error, never skipped.
-    subroutine step(k, kind, i, st, est)
-      integer, intent(in) :: k, kind, i
-      integer, intent(out) :: st
-      real(dp), intent(out) :: est
-      integer :: lev, p1, p2, p3, l2, l3, lm, ln
-      real(dp) :: u2(2), u3(2), um(2), un(2), q1, q2, q3, q4, q5, q6
-      lev = min(need, 3)
+    ! One step of the description (k, of its kind) over the block's positions i0 + 1 ..
+    ! i0 + m: its slots read once, then for each position still standing its inputs
+    ! gathered from the work arrays, its kind's kernel (module groups: the math of every
+    ! kind is there), its outputs scattered; links 2, 3 of a slider group turning with a
+    ! guide take the guide's motion.  An unknown kind is an error, never skipped.
+    subroutine step(k, kind, i0, m)
+      integer, intent(in) :: k, kind, i0, m
+      integer :: j, st, p1, p2, p3, l2, l3, lm, ln
+      real(dp) :: est, u2(2), u3(2), um(2), un(2), q1, q2, q3, q4, q5, q6
+      real(dp) :: r1, r2, r3, r4, r5, r6, r7
       p1 = gi(2, k); p2 = gi(3, k); p3 = gi(4, k); l2 = gi(5, k); l3 = gi(6, k)
-      est = 0.0_dp
+      lm = gi(7, k); ln = gi(8, k)
+      r1 = gr(1, k); r2 = gr(2, k); r3 = gr(3, k); r4 = gr(4, k); r5 = gr(5, k)
+      r6 = gr(6, k); r7 = gr(7, k)
       select case (kind)
       case (0)                              ! crank A (p1) about O (p2), link 1
-        call crank_kernel(x(:, p2), gr(1, k), phi(i), x(:, p1), v(:, p1), a(:, p1), u2)
-        call set_link(1, u2(1), u2(2))
-        w(1) = 1.0_dp
-        e(1) = 0.0_dp
-        st = st_ok
+        do j = 1, m
+          if (failed(worst(j))) cycle
+          call crank_kernel(xb(:, p2, j), r1, phi(i0 + j), xb(:, p1, j), vb(:, p1, j), &
+                            ab(:, p1, j), u2)
+          cb(1, j) = u2(1)
+          sb(1, j) = u2(2)
+          wb(1, j) = 1.0_dp
+          eb(1, j) = 0.0_dp
+        end do
       case (1)                              ! RRR: B (p1) from A (p2), C (p3)
-        call rrr_kernel(lev, x(:, p2), v(:, p2), a(:, p2), x(:, p3), v(:, p3), a(:, p3), &
-                        gr(1, k), gr(2, k), gr(3, k), gr(4, k), gr(5, k), &
-                        x(:, p1), v(:, p1), a(:, p1), u2, u3, w(l2), w(l3), e(l2), e(l3), &
-                        st, est)
-        if (failed(st)) return
-        call set_link(l2, u2(1), u2(2))
-        call set_link(l3, u3(1), u3(2))
+        do j = 1, m
+          if (failed(worst(j))) cycle
+          call rrr_kernel(lev, xb(:, p2, j), vb(:, p2, j), ab(:, p2, j), xb(:, p3, j), &
+                          vb(:, p3, j), ab(:, p3, j), r1, r2, r3, r4, r5, &
+                          xb(:, p1, j), vb(:, p1, j), ab(:, p1, j), u2, u3, &
+                          wb(l2, j), wb(l3, j), eb(l2, j), eb(l3, j), st, est)
+          call account(j, k, st, est)
+          if (failed(st)) cycle
+          cb(l2, j) = u2(1); sb(l2, j) = u2(2)
+          cb(l3, j) = u3(1); sb(l3, j) = u3(2)
+        end do
       case (2)                              ! RRP: B (p1) from A (p2), guide through K (p3)
-        lm = gi(7, k)
-        um = guide(lm, gr(3, k), gr(4, k))
-        call rrp_kernel(lev, x(:, p2), v(:, p2), a(:, p2), x(:, p3), v(:, p3), a(:, p3), &
-                        um, w(lm), e(lm), gr(1, k), gr(7, k), gr(5, k), gr(2, k), &
-                        x(:, p1), v(:, p1), a(:, p1), u2, w(l2), e(l2), q1, q2, st, est)
-        if (failed(st)) return
-        call set_link(l2, u2(1), u2(2))
-        call set_link(l3, um(1), um(2))
-        call turns_with(l3, lm, lev)
+        do j = 1, m
+          if (failed(worst(j))) cycle
+          um = guide(lm, j, r3, r4)
+          call rrp_kernel(lev, xb(:, p2, j), vb(:, p2, j), ab(:, p2, j), xb(:, p3, j), &
+                          vb(:, p3, j), ab(:, p3, j), um, wb(lm, j), eb(lm, j), r1, r7, &
+                          r5, r2, xb(:, p1, j), vb(:, p1, j), ab(:, p1, j), u2, &
+                          wb(l2, j), eb(l2, j), q1, q2, st, est)
+          call account(j, k, st, est)
+          if (failed(st)) cycle
+          cb(l2, j) = u2(1); sb(l2, j) = u2(2)
+          cb(l3, j) = um(1); sb(l3, j) = um(2)
+          call turns_with(l3, lm, j)
+        end do
       case (3)                              ! RPR: B (p1) from A (p2), link 3 about C (p3)
-        call rpr_kernel(lev, x(:, p2), v(:, p2), a(:, p2), x(:, p3), v(:, p3), a(:, p3), &
-                        gr(1, k), gr(2, k), x(:, p1), v(:, p1), a(:, p1), u3, w(l3), e(l3), &
-                        q1, q2, st, est)
-        if (failed(st)) return
-        call set_link(l3, u3(1), u3(2))
-        call set_link(l2, u3(1), u3(2))
-        call turns_with(l2, l3, lev)
+        do j = 1, m
+          if (failed(worst(j))) cycle
+          call rpr_kernel(lev, xb(:, p2, j), vb(:, p2, j), ab(:, p2, j), xb(:, p3, j), &
+                          vb(:, p3, j), ab(:, p3, j), r1, r2, xb(:, p1, j), vb(:, p1, j), &
+                          ab(:, p1, j), u3, wb(l3, j), eb(l3, j), q1, q2, st, est)
+          call account(j, k, st, est)
+          if (failed(st)) cycle
+          cb(l3, j) = u3(1); sb(l3, j) = u3(2)
+          cb(l2, j) = u3(1); sb(l2, j) = u3(2)
+          call turns_with(l2, l3, j)
+        end do
       case (4)                              ! PRP: B (p1) on guides through A (p2), C (p3)
-        lm = gi(7, k); ln = gi(8, k)
-        um = guide(lm, gr(1, k), gr(2, k))
-        un = guide(ln, gr(3, k), gr(4, k))
-        call prp_kernel(lev, x(:, p2), v(:, p2), a(:, p2), um, w(lm), e(lm), gr(5, k), &
-                        x(:, p3), v(:, p3), a(:, p3), un, w(ln), e(ln), gr(6, k), &
-                        x(:, p1), v(:, p1), a(:, p1), q1, q2, q3, q4, st, est)
-        if (failed(st)) return
-        call set_link(l2, um(1), um(2))
-        call set_link(l3, un(1), un(2))
-        call turns_with(l2, lm, lev)
-        call turns_with(l3, ln, lev)
+        do j = 1, m
+          if (failed(worst(j))) cycle
+          um = guide(lm, j, r1, r2)
+          un = guide(ln, j, r3, r4)
+          call prp_kernel(lev, xb(:, p2, j), vb(:, p2, j), ab(:, p2, j), um, wb(lm, j), &
+                          eb(lm, j), r5, xb(:, p3, j), vb(:, p3, j), ab(:, p3, j), un, &
+                          wb(ln, j), eb(ln, j), r6, xb(:, p1, j), vb(:, p1, j), &
+                          ab(:, p1, j), q1, q2, q3, q4, st, est)
+          call account(j, k, st, est)
+          if (failed(st)) cycle
+          cb(l2, j) = um(1); sb(l2, j) = um(2)
+          cb(l3, j) = un(1); sb(l3, j) = un(2)
+          call turns_with(l2, lm, j)
+          call turns_with(l3, ln, j)
+        end do
       case (5)                              ! RPP: K (p1) on the guide through A (p2), C (p3)
-        lm = gi(7, k)
-        um = guide(lm, gr(1, k), gr(2, k))
-        call rpp_kernel(lev, x(:, p2), v(:, p2), a(:, p2), um, w(lm), e(lm), gr(6, k), &
-                        gr(3, k), gr(4, k), x(:, p3), v(:, p3), a(:, p3), &
-                        x(:, p1), v(:, p1), a(:, p1), u3, q1, q2, q3, q4, q5, q6, st, est)
-        if (failed(st)) return
-        call set_link(l2, um(1), um(2))
-        call set_link(l3, u3(1), u3(2))
-        call turns_with(l2, lm, lev)
-        call turns_with(l3, lm, lev)
+        do j = 1, m
+          if (failed(worst(j))) cycle
+          um = guide(lm, j, r1, r2)
+          call rpp_kernel(lev, xb(:, p2, j), vb(:, p2, j), ab(:, p2, j), um, wb(lm, j), &
+                          eb(lm, j), r6, r3, r4, xb(:, p3, j), vb(:, p3, j), ab(:, p3, j), &
+                          xb(:, p1, j), vb(:, p1, j), ab(:, p1, j), u3, q1, q2, q3, q4, &
+                          q5, q6, st, est)
+          call account(j, k, st, est)
+          if (failed(st)) cycle
+          cb(l2, j) = um(1); sb(l2, j) = um(2)
+          cb(l3, j) = u3(1); sb(l3, j) = u3(2)
+          call turns_with(l2, lm, j)
+          call turns_with(l3, lm, j)
+        end do
       case (6)                              ! a point D (p1) on link l2 from P (p2), Q (p3)
-        call rigid_kernel(lev, x(:, p2), v(:, p2), a(:, p2), w(l2), e(l2), &
-                          [c(l2), s(l2)], x(:, p3), p3 == p2, gr(1, k), gr(2, k), gr(3, k), &
-                          x(:, p1), v(:, p1), a(:, p1), st)
+        do j = 1, m
+          if (failed(worst(j))) cycle
+          u2 = [cb(l2, j), sb(l2, j)]
+          call rigid_kernel(lev, xb(:, p2, j), vb(:, p2, j), ab(:, p2, j), wb(l2, j), &
+                            eb(l2, j), u2, xb(:, p3, j), p3 == p2, r1, r2, r3, &
+                            xb(:, p1, j), vb(:, p1, j), ab(:, p1, j), st)
+          call account(j, k, st, 0.0_dp)
+        end do
       case default
-        st = st_missing                     ! an unknown kind: an error, never skipped
+        do j = 1, m
+          if (failed(worst(j))) cycle
+          st = st_missing                   ! an unknown kind: an error, never skipped
+          call account(j, k, st, 0.0_dp)
+        end do
       end select
     end subroutine step
 
-    ! link l turns with link g (a slider on g's guide): its omega and epsilon, to the level
-    subroutine turns_with(l, g, lev)
-      integer, intent(in) :: l, g, lev
-      if (lev >= 2) w(l) = w(g)
-      if (lev >= 3) e(l) = e(g)
+    ! link l turns with link g (a slider on g's guide): its omega and epsilon, to the
+    ! level, at position j of the block
+    subroutine turns_with(l, g, j)
+      integer, intent(in) :: l, g, j
+      if (lev >= 2) wb(l, j) = wb(g, j)
+      if (lev >= 3) eb(l, j) = eb(g, j)
     end subroutine turns_with
 
-    ! the guide of kinds 2, 4, 5 on link l, at the angle (cg, sg) to the link's direction:
-    ! its unit vector
-    pure function guide(l, cg, sg) result(u)
-      integer, intent(in) :: l
+    ! the guide of kinds 2, 4, 5 on link l, at the angle (cg, sg) to the link's direction,
+    ! at position j of the block: its unit vector
+    pure function guide(l, j, cg, sg) result(u)
+      integer, intent(in) :: l, j
       real(dp), intent(in) :: cg, sg
       real(dp) :: u(2)
-      u = [c(l)*cg - s(l)*sg, s(l)*cg + c(l)*sg]
+      u = [cb(l, j)*cg - sb(l, j)*sg, sb(l, j)*cg + cb(l, j)*sg]
     end function guide
 
     ! ------------------------------------------------------------------ dynamics
 
-    real(dp) function reduced_inertia()
-      integer :: j, p, l
+    ! J_red's analogue at position j of the block
+    real(dp) function reduced_inertia(j)
+      integer, intent(in) :: j
+      integer :: q, p, l
       reduced_inertia = 0.0_dp
-      do j = 1, nm
-        p = mpoint(j); l = mlink(j)
-        reduced_inertia = reduced_inertia + mval(1, j)*(v(1, p)**2 + v(2, p)**2) &
-                          + mval(2, j)*w(l)**2
+      do q = 1, nm
+        p = mpoint(q); l = mlink(q)
+        reduced_inertia = reduced_inertia + mval(1, q)*(vb(1, p, j)**2 + vb(2, p, j)**2) &
+                          + mval(2, q)*wb(l, j)**2
       end do
     end function reduced_inertia
 
@@ -428,132 +497,45 @@ contains
       owner = powner(p)
     end function owner
 
-    ! One group's reactions (the chapter 7 method): its six equilibrium equations (forces
-    ! and moment of link 2, of link 3) in the reactions of its three pairs -- 1 (the
-    ! outside on link 2), 2 (link 2 on link 3), 3 (the outside on link 3); a revolute's
-    ! unknowns are the force (fx, fy) at its joint, a slider's the normal force N (along its
-    ! sliding direction turned by +pi/2) and the couple C.  Pair 1 drops out of one
-    ! equation of link 2 (a revolute: the moment about its joint; a slider: the forces
-    ! along its direction), pair 3 out of one of link 3: two equations in pair 2's two
-    ! unknowns (numerics' Cramer kernel), then pairs 1 and 3 from the rest.
+    ! One group's reactions: its pairs' points, types and sliding directions and its two
+    ! links' loads (gathered about their first points) gathered for groups'
+    ! group_reactions (the chapter 7 kernel of every kind); the reactions scattered into
+    ! react and, opposite, onto the outside links.
     subroutine group_forces(k, kind, slot, i)
       integer, intent(in) :: k, kind, slot, i
       integer :: pt(3), ty(3), frl(3), l2, l3, j, st
-      real(dp) :: dir(2, 3), n2(2), a(2, 2), b(2), z(2), rel, r(2), c2, d(2), f(2), cp
-      real(dp) :: out(3, 3), mp, sc
-      type(cram) :: sys
+      real(dp) :: dir(2, 3), pp(2, 3), out(3, 3)
       l2 = gi(5, k); l3 = gi(6, k)
       call pairs(k, kind, pt, ty, dir, frl)
-      n2 = [-dir(2, 2), dir(1, 2)]
-      ! pair 2 as unknowns z: R = (z1, z2), C = 0 (revolute) or R = z1 n2, C = z2 (slider)
-      ! row 1: link 2 without pair 1
-      if (ty(1) == 0) then
-        d = x(:, pt(2)) - x(:, pt(1))           ! -(d x R) - C = -M2(about P1)
-        call coefficients(d(2), -d(1), -1.0_dp, ty(2), n2, a(1, :))
-        b(1) = -moment_about(l2, pt(1))
-      else
-        call coefficients(-dir(1, 1), -dir(2, 1), 0.0_dp, ty(2), n2, a(1, :))  ! -R.u1 = -F2.u1
-        b(1) = -(fl(1, l2)*dir(1, 1) + fl(2, l2)*dir(2, 1))
-      end if
-      ! row 2: link 3 without pair 3
-      if (ty(3) == 0) then
-        d = x(:, pt(2)) - x(:, pt(3))           ! d x R + C = -M3(about P3)
-        call coefficients(-d(2), d(1), 1.0_dp, ty(2), n2, a(2, :))
-        b(2) = -moment_about(l3, pt(3))
-      else
-        call coefficients(dir(1, 3), dir(2, 3), 0.0_dp, ty(2), n2, a(2, :))    ! R.u3 = -F3.u3
-        b(2) = -(fl(1, l3)*dir(1, 3) + fl(2, l3)*dir(2, 3))
-      end if
-      ! column scales: the entries' size (only the singularity test uses the estimate
-      ! here; it must not overflow for a mechanism of 1e200 m)
-      sc = max(abs(a(1, 1)), abs(a(1, 2)), abs(a(2, 1)), abs(a(2, 2)))
-      if (.not. (sc > 0.0_dp .and. sc <= huge(sc))) sc = 1.0_dp
-      call cramer_set(a(1, 1), a(1, 2), a(2, 1), a(2, 2), sys, sc, sc)
-      call cramer(sys, b(1), b(2), 0.0_dp, 0.0_dp, 0.0_dp, z(1), z(2), st, rel)
+      do j = 1, 3
+        pp(:, j) = x(:, pt(j))
+      end do
+      call group_reactions(pp, ty, dir, fl(:, l2), ml(l2), x(:, base(l2)), fl(:, l3), &
+                           ml(l3), x(:, base(l3)), out, st)
       if (st /= st_ok) then
         status(i) = st
         fgroup(i) = k
       end if
-      if (ty(2) == 0) then
-        r = z
-        c2 = 0.0_dp
-      else
-        r = z(1)*n2
-        c2 = z(2)
-      end if
-      out(:, 2) = [r(1), r(2), c2]
-      ! pair 1: F2 + f1 - R = 0 (and, a slider, its couple from the moment about P1)
-      f = r - fl(:, l2)
-      if (ty(1) == 0) then
-        out(:, 1) = [f(1), f(2), 0.0_dp]
-      else
-        call normal(f, dir(:, 1), out(:, 1))
-        d = x(:, pt(2)) - x(:, pt(1))
-        mp = moment_about(l2, pt(1))
-        out(3, 1) = -mp + (d(1)*r(2) - d(2)*r(1)) + c2
-      end if
-      ! pair 3: F3 + R + f3 = 0
-      f = -r - fl(:, l3)
-      if (ty(3) == 0) then
-        out(:, 3) = [f(1), f(2), 0.0_dp]
-      else
-        call normal(f, dir(:, 3), out(:, 3))
-        d = x(:, pt(2)) - x(:, pt(3))
-        mp = moment_about(l3, pt(3))
-        out(3, 3) = -mp - (d(1)*r(2) - d(2)*r(1)) - c2
-      end if
       do j = 1, 3
         react(:, slot + j - 1, i) = out(:, j)
         if (j /= 2 .and. frl(j) > 0) then
-          cp = out(3, j)
           call load(frl(j), pt(j), -out(1, j), -out(2, j))   ! the outside bears the opposite
-          ml(frl(j)) = ml(frl(j)) - cp
+          ml(frl(j)) = ml(frl(j)) - out(3, j)
         end if
       end do
-
     end subroutine group_forces
 
-    ! the coefficients of pair 2's unknowns in one equation: (cx, cy) multiply R (a
-    ! revolute's two unknowns; a slider's N through R = N n2) and cc its couple C
-    pure subroutine coefficients(cx, cy, cc, t2, n2, row)
-      real(dp), intent(in) :: cx, cy, cc, n2(2)
-      integer, intent(in) :: t2
-      real(dp), intent(out) :: row(2)
-      if (t2 == 0) then
-        row = [cx, cy]
-      else
-        row = [cx*n2(1) + cy*n2(2), cc]
-      end if
-    end subroutine coefficients
-
-    ! a slider's reaction f: its normal part (the guide takes no force along u)
-    pure subroutine normal(f, u, out)
-      real(dp), intent(in) :: f(2), u(2)
-      real(dp), intent(out) :: out(3)
-      real(dp) :: nn
-      nn = -f(1)*u(2) + f(2)*u(1)
-      out = [-nn*u(2), nn*u(1), 0.0_dp]
-    end subroutine normal
-
-    ! the moment of link l's loads about point p (they are gathered about its base)
-    real(dp) function moment_about(l, p)
-      integer, intent(in) :: l, p
-      integer :: b
-      b = base(l)
-      moment_about = ml(l) + (x(1, b) - x(1, p))*fl(2, l) - (x(2, b) - x(2, p))*fl(1, l)
-    end function moment_about
-
-    ! the pairs of a group: point, type (0 revolute, 1 slider, with its sliding direction),
-    ! the outside link of pairs 1 and 3
+    ! The pairs of a group, in group_reactions' order: their points, types (the kind's
+    ! declaration, groups' kind_pairs) and sliding directions, and the outside links of
+    ! pairs 1 and 3 (0: the frame)
     subroutine pairs(k, kind, pt, ty, dir, frl)
       integer, intent(in) :: k, kind
       integer, intent(out) :: pt(3), ty(3), frl(3)
       real(dp), intent(out) :: dir(2, 3)
       integer :: pb, pa, pc, l2, l3
-      real(dp) :: u(2)
       pb = gi(2, k); pa = gi(3, k); pc = gi(4, k); l2 = gi(5, k); l3 = gi(6, k)
       dir = 0.0_dp
-      ty = 0
+      ty = kind_pairs(:, kind)
       frl = 0
       select case (kind)
       case (1)
@@ -561,25 +543,20 @@ contains
         frl(1) = owner(pa); frl(3) = owner(pc)
       case (2)
         pt = [pa, pb, pb]
-        ty(3) = 1
         dir(:, 3) = [c(l3), s(l3)]
         frl(1) = owner(pa); frl(3) = gi(7, k)
       case (3)
         pt = [pa, pb, pc]
-        ty(2) = 1
         dir(:, 2) = [c(l3), s(l3)]
         frl(1) = owner(pa); frl(3) = owner(pc)
       case (4)
         pt = [pb, pb, pb]
-        ty(1) = 1; ty(3) = 1
         dir(:, 1) = [c(l2), s(l2)]
         dir(:, 3) = [c(l3), s(l3)]
         frl(1) = gi(7, k); frl(3) = gi(8, k)
-      case default
+      case (5)
         pt = [pb, pc, pc]
-        ty(1) = 1; ty(2) = 1
-        u = [c(l2), s(l2)]
-        dir(:, 1) = u
+        dir(:, 1) = [c(l2), s(l2)]
         dir(:, 2) = [c(l3), s(l3)]
         frl(1) = gi(7, k); frl(3) = owner(pc)
       end select

@@ -26,6 +26,12 @@ normal to its guide.  An arm ``H`` is signed: ``H*F`` is the moment, about the p
 routine names, of the force the routine names; it is 0 when the force is 0 (the pair then
 carries a pure couple, which no arm expresses).
 
+One computation serves every routine and :class:`sarkp.Mechanism`: in corrected mode each
+routine lays its group out for the force step of fortran/groups.f90 (the six equilibrium
+equations of the group's two links in its three pairs' reactions, one kernel for every
+kind, parameterised by the kind's pair types) and gives the reactions back in the book's
+form; as-printed mode runs the printed code.
+
 The printed code balances only under the reduction-point conventions stated in each
 docstring (ERRATA E-DNMA1-3, E-DNMA2-3, E-DNMA3-4, E-DNMA4-2, E-DNMA5-3); each is pinned by a
 test (tests/test_forces.py) that also shows the other reading fails.
@@ -40,23 +46,6 @@ from .library import ST_SIGNIFICANCE, ST_SINGULAR, as_real_array, describe
 
 __all__ = ["DNMAF1", "DNMAF2", "DNMAF3", "DNMAF4", "DNMAF5",
            "DNMA1", "DNMA2", "DNMA3", "DNMA4", "DNMA5", "DUGL6", "balancing_moment"]
-
-_LOADS_F = """    XS2, YS2 : float or array_like
-        Reduction point S2 of link 2 (m).
-    F2, G2 : float or array_like
-        Resultant of the loads on link 2 (N, >= 0) and its direction (rad).
-    XS3, YS3, F3, G3 : float or array_like
-        The same for link 3.
-    T2, T3 : float or array_like
-        Main moments of the loads on links 2 and 3 about S2, S3 (N*m, CCW +).
-    AAA : float, optional
-        The book's print flag; unused (the routine prints nothing)."""
-
-_LOADS_Q = """    M2, Q2, G2 : float or array_like
-        Main moment (N*m, CCW +), resultant (N, >= 0) and its direction (rad) of the
-        loads on link 2, reduced to S2.
-    M3, Q3, G3 : float or array_like
-        The same for link 3, reduced to S3."""
 
 _RAISES = """
     Raises
@@ -77,13 +66,22 @@ _NEAR = ("near a singular position: the sine of the angle between the two direct
          "the equations divide by is below 1e-4, the book's GELG tolerance; the result was "
          "kept")
 
-_MODES = """    Corrected and as-printed modes differ only by PI (3.14159 as printed): no printed
-    figure depends on the errors corrected in this routine."""
+_MODES = """    Corrected mode solves the group with the force step that :class:`sarkp.Mechanism`
+    uses for every group kind (one kernel, fortran/groups.f90) and returns its reactions
+    in this routine's form; as-printed mode runs the printed code with PI = 3.14159.  The
+    two differ by PI's error (about 1e-6 relative): no printed figure depends on the
+    errors corrected in this routine."""
 
 #: the sense of the projection family's forces, said once for DNMAF1-DNMAF5
 _SENSE = """    Sense: the projection family (DNMAF1-DNMAF5) returns the forces the group exerts ON
     the chain (F21 on link 1 from link 2), the opposite of the vector family's reactions
     on the group (DNMA*'s RA = -F21).
+"""
+
+#: the sense of the vector family's reactions, said once for DNMA1-DNMA5
+_SENSE_VECTOR = """    Sense: the vector family (DNMA1-DNMA5) returns the reactions ON the group's links
+    (RA on link 2 from link 1), the opposite of the projection family's forces of the
+    group on the chain (DNMAF*'s F21 = -RA).
 """
 
 
@@ -219,10 +217,7 @@ DNMA1 = describe(
                  "finite value"},
     doc=f"""Reactions in a group of the first kind (RRR), vector method.
 
-    Sense: the vector family (DNMA1-DNMA5) returns the reactions ON the group's links
-    (RA on link 2 from link 1), the opposite of the projection family's forces of the
-    group on the chain (DNMAF*'s F21 = -RA).
-
+{_SENSE_VECTOR}
     Listing VII.6 (L5274-5318).  Each link's moments about B give the reaction's
     component normal to it, the group's force balance (a 2x2 GELG system) the components
     along the links.
@@ -248,10 +243,7 @@ DNMA2 = describe(
     messages={ST_SIGNIFICANCE: _NEAR, ST_SINGULAR: "AB is perpendicular to the guide: the reactions have no finite value"},
     doc=f"""Reactions in a group of the second kind (RRP), vector method.
 
-    Sense: the vector family (DNMA1-DNMA5) returns the reactions ON the group's links
-    (RA on link 2 from link 1), the opposite of the projection family's forces of the
-    group on the chain (DNMAF*'s F21 = -RA).
-
+{_SENSE_VECTOR}
     Listing VII.7 (L5322-5368).
 
     Returns
@@ -273,10 +265,7 @@ DNMA3 = describe(
                  "value"},
     doc=f"""Reactions in a group of the third kind (RPR), vector method.
 
-    Sense: the vector family (DNMA1-DNMA5) returns the reactions ON the group's links
-    (RA on link 2 from link 1), the opposite of the projection family's forces of the
-    group on the chain (DNMAF*'s F21 = -RA).
-
+{_SENSE_VECTOR}
     Listing VII.8 (L5376-5413; no comment block is printed).  The group's moments about C
     give RA's component normal to AC, link 2's force balance (a 2x2 GELG system) its
     component along AC and RB.
@@ -302,10 +291,7 @@ DNMA4 = describe(
                  "value"},
     doc=f"""Reactions in a group of the fourth kind (PRP), vector method.
 
-    Sense: the vector family (DNMA1-DNMA5) returns the reactions ON the group's links
-    (RA on link 2 from link 1), the opposite of the projection family's forces of the
-    group on the chain (DNMAF*'s F21 = -RA).
-
+{_SENSE_VECTOR}
     The listing has no heading (L5415-5460); Table 33 numbers it VII.9.
 
     Returns
@@ -329,10 +315,7 @@ DNMA5 = describe(
                  "reactions have no finite value"},
     doc=f"""Reactions in a group of the fifth kind (RPP), vector method.
 
-    Sense: the vector family (DNMA1-DNMA5) returns the reactions ON the group's links
-    (RA on link 2 from link 1), the opposite of the projection family's forces of the
-    group on the chain (DNMAF*'s F21 = -RA).
-
+{_SENSE_VECTOR}
     Printed under the heading "VII.9" (L5464); Table 33 numbers it VII.10 (ERRATA
     E-DNMA5-1).
 
