@@ -61,19 +61,28 @@
 ! E-DKNMA4-5 for the directions the book took from absolute coordinates); lengths of
 ! 1e-300 or 1e300 neither underflow nor overflow where the answer is a double.
 !
-! Corrected mode, for speed (issue 9; the same mathematics, no ERRATA entry): DPRM1 and
-! DKNMA1 take B from the triangle's apex (tri_apex) instead of a cosine and a sine of FI2,
-! and FI2, FI3 as the directions of B - A, B - C (DPRM1 in the book's ranges, up to 3 pi);
-! DKNMA1 eliminates its one 2x2 matrix once (factor2); DKNMA1, DKNMA2, DSKOR1 and
-! DUSKR1 take each direction's cosine and sine once and get e(FI + PI/2), e(FI + PI) by
-! the exact identities (turn), and sum vectors by components where the book goes through
-! DSMVKT's polar form and back.  As-printed mode keeps the book's sequence of operations.
+! One home per group kind (issue 25): in corrected mode DPRM1 and DKNMA1 are adapters over
+! the kind-1 kernel of groups.f90 (rrr_kernel), the one sarkp.Mechanism calls: the book's
+! polar inputs become components, the kernel solves in Cartesian terms (B from the
+! triangle's apex, no cosine or sine of FI2; Cramer's rule), its results become the
+! book's (modulus, direction) pairs, branch signs and angle ranges (DPRM1's up to 3 pi);
+! the status is the dead-centre policy's for the kernel's estimate.  As-printed mode
+! keeps each routine's own code, the book's sequence, which the printed figures depend
+! on.  The other kinds' routines keep their own code until their kernels hold what the
+! book routines promise (kinds 2, 4: digits at 2**+-990 and far from the origin, the
+! estimate near parallel guides).
+!
+! Corrected mode, for speed (issue 9; the same mathematics, no ERRATA entry): DKNMA2,
+! DSKOR1 and DUSKR1 take each direction's cosine and sine once and get e(FI + PI/2),
+! e(FI + PI) by the exact identities (turn), and sum vectors by components where the
+! book goes through DSMVKT's polar form and back.
 !
 ! ERRATA ids of this chapter: E-<ROUTINE>-<n>, listed in docs/ERRATA.md.
 module kinematics
-  use prmtr, only: dp, pi, pid2, printed_mode, book_sign, st_ok, st_assembly, st_singular, &
-                   st_range, st_digits, norm2d
+  use prmtr, only: dp, pi, pid2, pi_exact, printed_mode, book_sign, st_ok, st_assembly, &
+                   st_singular, st_range, st_digits, norm2d
   use operators, only: dugl1, dugl2, dugl3, dugl4, dugl5, dugol, domega, dvkt, dsmvkt
+  use groups, only: rrr_kernel
   use numerics, only: uround, system2, solve2e, factor2, solve2f, solve_kind5, policy, &
                       settle, failed, wrap_pi, angle_sensitivity, tri_angles, tri_apex, &
                       apex_vectors, unscale, acc_dir, turn, components, quarter
@@ -122,53 +131,54 @@ contains
     real(dp), intent(in) :: xa, ya, xc, yc, rz2, rz3, p, aaa
     real(dp), intent(out) :: fi2, fi3, xb, yb
     integer, intent(out) :: ier
-    real(dp) :: rzac, fiac, ugbac, ugbca, q, dang, pa, h, pc, r2x, r2y, r3x, r3y
+    real(dp) :: rzac, fiac, ugbac, ugbca, q, dang, pa, h, pc
+    real(dp) :: x_b(2), v_b(2), a_b(2), z(2), u2(2), u3(2), w2, w3, e2, e3, est
     integer :: e
     fi2 = 0.0_dp; fi3 = 0.0_dp; xb = 0.0_dp; yb = 0.0_dp
-    if (printed_mode /= 0) then
-      call dvkt(xa, ya, xc, yc, rzac, fiac)
-    else
-      rzac = norm2d(xc - xa, yc - ya)
-      fiac = 2.0_dp*pi                            ! not needed; its bound for the estimate
-    end if
-    if (rzac == 0.0_dp) then
-      if (rz2 == rz3) then
-        ier = st_singular                         ! A = C, AB = CB: B anywhere on a circle
-      else
-        ier = st_assembly
-      end if
-      return
-    end if
-    call tri_apex(rzac, rz2, rz3, pa, h, pc, e, dang, ier)
-    if (failed(ier)) return
     q = book_sign(1.0_dp, p)
-    if (printed_mode /= 0) then
-      ugbac = atan2(h, pa)                        ! tri_angles' angles
+    if (printed_mode == 0) then
+      ! Corrected: the kind-1 kernel's position (groups: rrr_kernel; its branch is -P), B
+      ! from the triangle's apex (issue 9), and FI2, FI3 as the directions of B - A, B - C
+      ! in the book's ranges.  The book's values are FIAC - P*angle A and FIAC + P*(angle
+      ! C - pi), DUGOL'd once: for P = +1 the direction in [0, 2 pi); for P = -1 the sum
+      ! turns counter-clockwise from FIAC by at most pi and passes 2 pi (stays above it, up
+      ! to 3 pi) exactly when A->C points below the x axis and the direction found is below
+      ! pi.
+      z = 0.0_dp
+      call rrr_kernel(1, [xa, ya], z, z, [xc, yc], z, z, rz2, rz3, -q, 1.0_dp/rz2, &
+                      1.0_dp/rz3, x_b, v_b, a_b, u2, u3, w2, w3, e2, e3, ier, est)
+      if (failed(ier)) return
+      fi2 = dugol(atan2(u2(2), u2(1)))
+      fi3 = dugol(atan2(u3(2), u3(1)))
+      if (q < 0.0_dp .and. yc - ya < 0.0_dp) then   ! A->C below the x axis
+        if (fi2 < pi) fi2 = fi2 + 2.0_dp*pi
+        if (fi3 < pi) fi3 = fi3 + 2.0_dp*pi
+      end if
+      xb = x_b(1)
+      yb = x_b(2)
+      ier = policy(est)
+    else
+      ! As printed: the book's FIAC and angles (from the same apex, E-DPRM1-1)
+      call dvkt(xa, ya, xc, yc, rzac, fiac)
+      if (rzac == 0.0_dp) then
+        if (rz2 == rz3) then
+          ier = st_singular                         ! A = C, AB = CB: B anywhere on a circle
+        else
+          ier = st_assembly
+        end if
+        return
+      end if
+      call tri_apex(rzac, rz2, rz3, pa, h, pc, e, dang, ier)
+      if (failed(ier)) return
+      ugbac = atan2(h, pa)                          ! tri_angles' angles
       ugbca = atan2(h, pc)
       fiac = dugol(fiac)
       fi2 = dugol(fiac - q*ugbac)
       fi3 = dugol(fiac + q*ugbca - q*pi)
       xb = xa + rz2*cos(fi2)
       yb = ya + rz2*sin(fi2)
-    else
-      ! Corrected (issue 9): B from the apex, B - A = pa u - P h n and B - C = -pc u - P h n
-      ! (u the unit vector A->C, n its normal; units of 2**e), and FI2, FI3 as their
-      ! directions: two arctangents where the book's way takes three.  The book's values
-      ! are FIAC - P*angle A and FIAC + P*(angle C - pi), DUGOL'd once: for P = +1 the
-      ! direction in [0, 2 pi); for P = -1 the sum turns counter-clockwise from FIAC by at
-      ! most pi and passes 2 pi (stays above it, up to 3 pi) exactly when A->C points below
-      ! the x axis and the direction found is below pi.
-      call apex_vectors(xc - xa, yc - ya, rzac, pa, h, pc, -q, r2x, r2y, r3x, r3y)
-      fi2 = dugol(atan2(r2y, r2x))
-      fi3 = dugol(atan2(r3y, r3x))
-      if (q < 0.0_dp .and. (yc - ya)/rzac < 0.0_dp) then   ! A->C below the x axis
-        if (fi2 < pi) fi2 = fi2 + 2.0_dp*pi
-        if (fi3 < pi) fi3 = fi3 + 2.0_dp*pi
-      end if
-      xb = xa + unscale(r2x, e)
-      yb = ya + unscale(r2y, e)
+      ier = settle(ier, dang + 8.0_dp*uround*(1.0_dp + abs(fiac)), [xb, yb])
     end if
-    ier = settle(ier, dang + 8.0_dp*uround*(1.0_dp + abs(fiac)), [xb, yb])
   end subroutine dprm1
 
   ! IV.2 DPRM2, L1531-1558 (Table 8, Fig. 15).  Kind 2 (RRP) positions.
@@ -184,7 +194,8 @@ contains
     !: XK, YK : real -- Any point of the guide axis, m.
     !: FIM : real -- Direction of the guide, rad. It also selects the branch (L1543, "FIM is
     !:     chosen along AB from A to B"): B lies ahead, in the direction FIM, of the foot of
-    !:     the perpendicular from A; pass ``FIM + pi`` for the other branch.
+    !:     the perpendicular from A, as ``Mechanism.rrp(..., angle=FIM, branch=+1)`` places
+    !:     it; pass ``FIM + pi`` for the other branch (``branch=-1``).
     !: RZ2 : length -- Length AB, m (> 0).
     !: RZ3, T : real >= 0; real -- Linear (m, >= 0) and angular (rad) size of the slider:
     !:     the offset of B from the guide axis is ``RZ3*sin(T)``.
@@ -652,26 +663,9 @@ contains
     real(dp), intent(in) :: aa, ba, abm, bvm, abk, bvk, rz2, fi2, w2, fim, aaa
     real(dp), intent(out) :: abat, vbat, abvm, bvbm, e2, ab, bb
     integer, intent(out) :: ier
-    real(dp) :: y1, y2, a, b, an2, sb, rel
-    abat = 0.0_dp; vbat = 0.0_dp; abvm = 0.0_dp; bvbm = 0.0_dp; e2 = 0.0_dp; ab = 0.0_dp
-    bb = 0.0_dp
-    an2 = w2**2*rz2
-    sb = abs(aa) + abs(abm) + abs(abk) + an2
-    call solve2e(cos(fi2 + pid2), -cos(fim), sin(fi2 + pid2), -sin(fim), &
-                 abm*cos(bvm) + abk*cos(bvk) - aa*cos(ba) - an2*cos(fi2 - pi), &
-                 abm*sin(bvm) + abk*sin(bvk) - aa*sin(ba) - an2*sin(fi2 - pi), &
-                 4.0_dp*uround*(2.0_dp + max(abs(fi2), abs(fim))), &
-                 4.0_dp*uround*(4.0_dp + max(abs(ba), abs(bvm), abs(bvk), abs(fi2)))*sb, sb, &
-                 y1, y2, ier, rel)
-    if (failed(ier)) return
-    vbat = dugl3(fi2, pid2, y1)
-    abat = abs(y1)
-    bvbm = dugl4(fim, pi, y2)
-    abvm = abs(y2)
-    e2 = domega(rz2, abat, vbat - fi2)
-    call dsmvkt(aa, ba, an2, fi2 - pi, a, b)
-    call dsmvkt(a, b, abat, vbat, ab, bb)
-    ier = settle(ier, rel, [abat, abvm, e2, ab])
+    ! the turning side A-B (a_A, link AB), the sliding side the guide (a_BM, Coriolis)
+    call turn_slide(aa, ba, rz2, fi2, w2, abm, bvm, abk, bvk, fim, .true., &
+                    abat, vbat, abvm, bvbm, e2, ab, bb, ier)
   end subroutine duskr2
 
   ! IV.12 DUSKR3, L2150-2184 (Table 18, Fig. 26).  Kind 3 accelerations:
@@ -692,27 +686,60 @@ contains
     real(dp), intent(in) :: aa, ba, ac, bc, fi3, w3, rzac, fica, aa3ak, ba3ak, aaa
     real(dp), intent(out) :: aa3ar, ba3ar, aa3ct, ba3ct, e3, aa3, ba3
     integer, intent(out) :: ier
-    real(dp) :: y1, y2, a, b, an3, sb, rel
-    aa3ar = 0.0_dp; ba3ar = 0.0_dp; aa3ct = 0.0_dp; ba3ct = 0.0_dp; e3 = 0.0_dp; aa3 = 0.0_dp
-    ba3 = 0.0_dp
-    an3 = w3**2*rzac
-    sb = abs(aa) + abs(ac) + abs(aa3ak) + an3
-    call solve2e(cos(fi3), -cos(fica + pid2), sin(fi3), -sin(fica + pid2), &
-                 ac*cos(bc) + an3*cos(fica - pi) - aa*cos(ba) - aa3ak*cos(ba3ak), &
-                 ac*sin(bc) + an3*sin(fica - pi) - aa*sin(ba) - aa3ak*sin(ba3ak), &
-                 4.0_dp*uround*(2.0_dp + max(abs(fi3), abs(fica))), &
-                 4.0_dp*uround*(4.0_dp + max(abs(ba), abs(bc), abs(ba3ak), abs(fica)))*sb, sb, &
-                 y1, y2, ier, rel)
-    if (failed(ier)) return
-    ba3ar = dugl4(fi3, pi, y1)
-    aa3ar = abs(y1)
-    ba3ct = dugl3(fica, pid2, y2)
-    aa3ct = abs(y2)
-    e3 = domega(rzac, aa3ct, ba3ct - fica)
-    call dsmvkt(ac, bc, an3, fica - pi, a, b)
-    call dsmvkt(a, b, aa3ct, ba3ct, aa3, ba3)
-    ier = settle(ier, rel, [aa3ar, aa3ct, e3, aa3])
+    ! the turning side C-A3 (a_C, C -> A on link 3), the sliding side A (a_A, Coriolis)
+    call turn_slide(ac, bc, rzac, fica, w3, aa, ba, aa3ak, ba3ak, fi3, .false., &
+                    aa3ct, ba3ct, aa3ar, ba3ar, e3, aa3, ba3, ier)
   end subroutine duskr3
+
+  ! DUSKR2 and DUSKR3 solve one equation (written once here): a point reached two ways,
+  !   a_P + a^n + a^t  (turning: P's acceleration, then a link of length R, direction FR,
+  !                     angular velocity W, about P)
+  !   = a_Q + a^k + a^r (sliding: Q's acceleration, the Coriolis term, and a^r along FS).
+  ! Returned: a^t (AT, BT), a^r (AR, BR), the link's E and the point's acceleration
+  ! a_P + a^n + a^t (AX, BX).  TFIRST: the printed unknowns are (a^t, a^r) with the
+  ! right-hand side a_Q + a^k - a_P - a^n (DUSKR2, L2098-2104); otherwise (a^r, a^t) with
+  ! a_P + a^n - a_Q - a^k (DUSKR3, L2161-2168).  Each keeps the printed order of terms.
+  subroutine turn_slide(ap, bp, r, fr, w, aq, bq, ak, bk, fs, tfirst, at, bt, ar, br, e, &
+                        ax, bx, ier)
+    real(dp), intent(in) :: ap, bp, r, fr, w, aq, bq, ak, bk, fs
+    logical, intent(in) :: tfirst
+    real(dp), intent(out) :: at, bt, ar, br, e, ax, bx
+    integer, intent(out) :: ier
+    real(dp) :: an, sb, da, db, y1, y2, yt, yr, rel, a, b
+    at = 0.0_dp; bt = 0.0_dp; ar = 0.0_dp; br = 0.0_dp; e = 0.0_dp; ax = 0.0_dp; bx = 0.0_dp
+    an = w**2*r
+    sb = abs(ap) + abs(aq) + abs(ak) + an
+    da = 4.0_dp*uround*(2.0_dp + max(abs(fr), abs(fs)))
+    db = 4.0_dp*uround*(4.0_dp + max(abs(bp), abs(bq), abs(bk), abs(fr)))*sb
+    if (tfirst) then
+      call solve2e(cos(fr + pid2), -cos(fs), sin(fr + pid2), -sin(fs), &
+                   aq*cos(bq) + ak*cos(bk) - ap*cos(bp) - an*cos(fr - pi), &
+                   aq*sin(bq) + ak*sin(bk) - ap*sin(bp) - an*sin(fr - pi), &
+                   da, db, sb, y1, y2, ier, rel)
+      yt = y1
+      yr = y2
+    else
+      call solve2e(cos(fs), -cos(fr + pid2), sin(fs), -sin(fr + pid2), &
+                   ap*cos(bp) + an*cos(fr - pi) - aq*cos(bq) - ak*cos(bk), &
+                   ap*sin(bp) + an*sin(fr - pi) - aq*sin(bq) - ak*sin(bk), &
+                   da, db, sb, y1, y2, ier, rel)
+      yr = y1
+      yt = y2
+    end if
+    if (failed(ier)) return
+    bt = dugl3(fr, pid2, yt)
+    at = abs(yt)
+    br = dugl4(fs, pi, yr)
+    ar = abs(yr)
+    e = domega(r, at, bt - fr)
+    call dsmvkt(ap, bp, an, fr - pi, a, b)
+    call dsmvkt(a, b, at, bt, ax, bx)
+    if (tfirst) then
+      ier = settle(ier, rel, [at, ar, e, ax])
+    else
+      ier = settle(ier, rel, [ar, at, e, ax])
+    end if
+  end subroutine turn_slide
 
   ! IV.13 DUSKR4, L2221-2275 (Table 19, Fig. 27).  Kind 4 accelerations:
   ! a_BM + a^k_M + a^r_M = a_BN + a^k_N + a^r_N; the guide points under B accelerate as
@@ -853,31 +880,35 @@ contains
     real(dp) :: rac, fik, ugbac, ugbca, y1, y2, prx, pry, q, dang, da, sb, relv, rela, ev
     real(dp) :: est, c2, s2, c3, s3, n2x, n2y, n3x, n3y, m2x, m2y, m3x, m3y, tx, ty
     real(dp) :: vax, vay, vcx, vcy, aax, aay, acx, acy
-    real(dp) :: pa, h, pc, r2x, r2y, r3x, r3y, l2s, l3s
-    integer :: st2, e
+    integer :: st2
     type(system2) :: sys
-    xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; fi3 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp
-    vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; w3 = 0.0_dp
-    abcn = 0.0_dp; aban = 0.0_dp; abat = 0.0_dp; bbat = 0.0_dp; abct = 0.0_dp; bbct = 0.0_dp
-    ab = 0.0_dp; bb = 0.0_dp; e2 = 0.0_dp; e3 = 0.0_dp
-    rac = norm2d(xc - xa, yc - ya)
-    if (rac == 0.0_dp) then
-      if (rz2 == rz3) then
-        ier = st_singular
-      else
-        ier = st_assembly
-      end if
-      return
-    end if
     q = book_sign(1.0_dp, p)
-    if (printed_mode /= 0) then
+    if (printed_mode == 0) then                   ! corrected: the kind-1 kernel
+      call dknma1_rrr(xa, ya, xc, yc, rz2, rz3, va, ala, vc, alc, aa, ba, ac, bc, q, &
+                      analog, xb, yb, fi2, fi3, vba, alba, vbc, albc, vb, alb, w2, w3, &
+                      abcn, aban, abat, bbat, abct, bbct, ab, bb, e2, e3, ier)
+    else
+      xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; fi3 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp
+      vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; w3 = 0.0_dp
+      abcn = 0.0_dp; aban = 0.0_dp; abat = 0.0_dp; bbat = 0.0_dp; abct = 0.0_dp; bbct = 0.0_dp
+      ab = 0.0_dp; bb = 0.0_dp; e2 = 0.0_dp; e3 = 0.0_dp
+      rac = norm2d(xc - xa, yc - ya)
+      if (rac == 0.0_dp) then
+        if (rz2 == rz3) then
+          ier = st_singular
+        else
+          ier = st_assembly
+        end if
+        return
+      end if
+      ! As printed: the book's sequence (the angles of the triangle, their cosines and sines)
       call tri_angles(rac, rz2, rz3, ugbac, ugbca, dang, ier)
       if (failed(ier)) return
       ! The book rotates B's coordinates in the frame of C->A (E-DKNMA1-2) and takes FI2,
       ! FI3 from the rounded absolute coordinates of B; the same directions come here
       ! straight from the triangle: B = A + RZ2 e(FI_AC + P*angle A),
       ! C->B = FI_AC + pi - P*angle C.
-      fik = atan2(yc - ya, xc - xa)               ! direction A->C
+      fik = atan2(yc - ya, xc - xa)                 ! direction A->C
       fi2 = wrap_pi(fik + q*ugbac)
       fi3 = wrap_pi(fik + pi - q*ugbca)
       c2 = cos(fi2)
@@ -886,83 +917,137 @@ contains
       s3 = sin(fi3)
       xb = xa + rz2*c2
       yb = ya + rz2*s2
-    else
-      ! Corrected mode (issue 9): the same point B from the triangle's apex in the frame of
-      ! A->C (unit vector u, its normal turned by P), and FI2, FI3 as the directions of
-      ! B - A and B - C: two arctangents where the angles' way takes three, and no cosine
-      ! or sine of them (the unit vectors e(FI2), e(FI3) are (B - A)/RZ2, (B - C)/RZ3).
-      call tri_apex(rac, rz2, rz3, pa, h, pc, e, dang, ier)
+      da = dang + 4.0_dp*uround*(2.0_dp + abs(fik))
+      est = da
+      ! The velocity and acceleration systems have the columns e(FI2 + PI/2), -e(FI3 + PI/2)
+      ! (L2615, L2640); each direction's cosine and sine is taken once (turn, components).
+      call turn(fi2 + pid2, c2, s2, 1, n2x, n2y)
+      call turn(fi3 + pid2, c3, s3, 1, n3x, n3y)
+      call components(va, ala, vax, vay)
+      call components(vc, alc, vcx, vcy)
+      sb = abs(va) + abs(vc)
+      call factor2(n2x, -n3x, n2y, -n3y, sys)     ! one matrix for both systems (L2615, L2640)
+      call solve2f(sys, vcx - vax, vcy - vay, da, &
+                   4.0_dp*uround*(1.0_dp + max(abs(ala), abs(alc)))*sb, sb, y1, y2, ier, relv)
       if (failed(ier)) return
-      call apex_vectors(xc - xa, yc - ya, rac, pa, h, pc, q, r2x, r2y, r3x, r3y)
-      fi2 = atan2(r2y, r2x)
-      fi3 = atan2(r3y, r3x)
-      if (fi2 == -pi) fi2 = pi                    ! the range (-pi, pi] of DUGL2
-      if (fi3 == -pi) fi3 = pi
-      l2s = unscale(rz2, -e)
-      l3s = unscale(rz3, -e)
-      c2 = r2x/l2s
-      s2 = r2y/l2s
-      c3 = r3x/l3s
-      s3 = r3y/l3s
-      xb = xa + unscale(r2x, e)
-      yb = ya + unscale(r2y, e)
-      fik = pi                                    ! the rounding allowance below at its largest
+      est = max(est, relv)
+      ev = relv*max(norm2d(y1, y2), sb/sqrt(2.0_dp))   ! absolute error of (y1, y2)
+      alba = dugl3(fi2, pi/2.0_dp, y1)
+      albc = dugl3(fi3, pi/2.0_dp, y2)
+      vba = abs(y1)
+      vbc = abs(y2)
+      call turn(alba, c2, s2, quarter(y1), tx, ty)    ! e(ALBA)
+      prx = vax + vba*tx
+      pry = vay + vba*ty
+      vb = norm2d(prx, pry)
+      alb = dugl5(prx, pry)
+      w2 = domega(rz2, vba, alba - fi2)
+      w3 = domega(rz3, vbc, albc - fi3)
+      if (analog /= 1.0_dp) then
+        aban = w2**2*rz2
+        abcn = w3**2*rz3
+        call components(aa, ba, aax, aay)
+        call components(ac, bc, acx, acy)
+        call turn(fi2 + pi, c2, s2, 2, m2x, m2y)      ! e(FI2 + PI), e(FI3 + PI)
+        call turn(fi3 + pi, c3, s3, 2, m3x, m3y)
+        sb = abs(aa) + abs(ac) + aban + abcn
+        call solve2f(sys, acx + abcn*m3x - aax - aban*m2x, acy + abcn*m3y - aay - aban*m2y, da, &
+                     4.0_dp*uround*(4.0_dp + max(abs(ba), abs(bc)))*sb &
+                     + ev/rz2*(2.0_dp*abs(y1) + ev) + ev/rz3*(2.0_dp*abs(y2) + ev), &
+                     sb, y1, y2, st2, rela)
+        ier = st2
+        if (failed(ier)) return
+        est = max(est, rela)
+        bbat = dugl3(fi2, pi/2.0_dp, y1)
+        bbct = dugl3(fi3, pi/2.0_dp, y2)
+        abat = abs(y1)
+        abct = abs(y2)
+        call turn(bbat, c2, s2, quarter(y1), tx, ty)  ! e(BBAT)
+        prx = aax + aban*m2x + abat*tx
+        pry = aay + aban*m2y + abat*ty
+        ab = norm2d(prx, pry)
+        bb = dugl5(prx, pry)
+        e2 = domega(rz2, abat, bbat - fi2)
+        e3 = domega(rz3, abct, bbct - fi3)
+      end if
+      ier = settle(ier, est, [xb, yb, vba, vbc, vb, w2, w3, abcn, aban, abat, abct, ab, e2, e3])
     end if
-    da = dang + 4.0_dp*uround*(2.0_dp + abs(fik))
-    est = da
-    ! The velocity and acceleration systems have the columns e(FI2 + PI/2), -e(FI3 + PI/2)
-    ! (L2615, L2640); each direction's cosine and sine is taken once (turn, components).
-    call turn(fi2 + pid2, c2, s2, 1, n2x, n2y)
-    call turn(fi3 + pid2, c3, s3, 1, n3x, n3y)
-    call components(va, ala, vax, vay)
-    call components(vc, alc, vcx, vcy)
-    sb = abs(va) + abs(vc)
-    call factor2(n2x, -n3x, n2y, -n3y, sys)     ! one matrix for both systems (L2615, L2640)
-    call solve2f(sys, vcx - vax, vcy - vay, da, &
-                 4.0_dp*uround*(1.0_dp + max(abs(ala), abs(alc)))*sb, sb, y1, y2, ier, relv)
-    if (failed(ier)) return
-    est = max(est, relv)
-    ev = relv*max(norm2d(y1, y2), sb/sqrt(2.0_dp))   ! absolute error of (y1, y2)
-    alba = dugl3(fi2, pi/2.0_dp, y1)
-    albc = dugl3(fi3, pi/2.0_dp, y2)
-    vba = abs(y1)
-    vbc = abs(y2)
-    call turn(alba, c2, s2, quarter(y1), tx, ty)    ! e(ALBA)
-    prx = vax + vba*tx
-    pry = vay + vba*ty
-    vb = norm2d(prx, pry)
-    alb = dugl5(prx, pry)
-    w2 = domega(rz2, vba, alba - fi2)
-    w3 = domega(rz3, vbc, albc - fi3)
-    if (analog /= 1.0_dp) then
-      aban = w2**2*rz2
-      abcn = w3**2*rz3
-      call components(aa, ba, aax, aay)
-      call components(ac, bc, acx, acy)
-      call turn(fi2 + pi, c2, s2, 2, m2x, m2y)      ! e(FI2 + PI), e(FI3 + PI)
-      call turn(fi3 + pi, c3, s3, 2, m3x, m3y)
-      sb = abs(aa) + abs(ac) + aban + abcn
-      call solve2f(sys, acx + abcn*m3x - aax - aban*m2x, acy + abcn*m3y - aay - aban*m2y, da, &
-                   4.0_dp*uround*(4.0_dp + max(abs(ba), abs(bc)))*sb &
-                   + ev/rz2*(2.0_dp*abs(y1) + ev) + ev/rz3*(2.0_dp*abs(y2) + ev), &
-                   sb, y1, y2, st2, rela)
-      ier = st2
-      if (failed(ier)) return
-      est = max(est, rela)
-      bbat = dugl3(fi2, pi/2.0_dp, y1)
-      bbct = dugl3(fi3, pi/2.0_dp, y2)
-      abat = abs(y1)
-      abct = abs(y2)
-      call turn(bbat, c2, s2, quarter(y1), tx, ty)  ! e(BBAT)
-      prx = aax + aban*m2x + abat*tx
-      pry = aay + aban*m2y + abat*ty
-      ab = norm2d(prx, pry)
-      bb = dugl5(prx, pry)
-      e2 = domega(rz2, abat, bbat - fi2)
-      e3 = domega(rz3, abct, bbct - fi3)
-    end if
-    ier = settle(ier, est, [xb, yb, vba, vbc, vb, w2, w3, abcn, aban, abat, abct, ab, e2, e3])
   end subroutine dknma1
+
+  ! DKNMA1's corrected mode: the book's interface over the kind-1 kernel (groups:
+  ! rrr_kernel, the Mechanism's rrr).  In: the book's polar velocities and accelerations
+  ! of A and C, as (x, y); Q = DKNMA1's P, which is the kernel's branch (+1: B on the left
+  ! of A -> C).  Out: FI2, FI3 as DUGL2 directions in (-pi, pi]; each linear velocity or
+  ! acceleration as (modulus, direction), the relative ones along e(FI + pi/2) turned by
+  ! the sign of W or E (DUGL3, L2617-2620); ANALOG = 1: the kernel's velocity level, the
+  ! accelerations 0.  A failure: every output 0.  The status is the policy's for the
+  ! kernel's estimate (the drivers turn a result that is not finite into st_range).
+  subroutine dknma1_rrr(xa, ya, xc, yc, rz2, rz3, va, ala, vc, alc, aa, ba, ac, bc, q, &
+                        analog, xb, yb, fi2, fi3, vba, alba, vbc, albc, vb, alb, w2, w3, &
+                        abcn, aban, abat, bbat, abct, bbct, ab, bb, e2, e3, ier)
+    real(dp), intent(in) :: xa, ya, xc, yc, rz2, rz3, va, ala, vc, alc, aa, ba, ac, bc, q
+    real(dp), intent(in) :: analog
+    real(dp), intent(out) :: xb, yb, fi2, fi3, vba, alba, vbc, albc, vb, alb, w2, w3
+    real(dp), intent(out) :: abcn, aban, abat, bbat, abct, bbct, ab, bb, e2, e3
+    integer, intent(out) :: ier
+    real(dp), parameter :: half_pi = pi_exact/2.0_dp     ! corrected mode's PID2
+    real(dp) :: x_a(2), x_c(2), v_a(2), v_c(2), a_a(2), a_c(2), x_b(2), v_b(2), a_b(2)
+    real(dp) :: u2(2), u3(2), om2, om3, ep2, ep3, est
+    integer :: level
+    level = 3
+    if (analog == 1.0_dp) level = 2
+    x_a(1) = xa
+    x_a(2) = ya
+    x_c(1) = xc
+    x_c(2) = yc
+    call components(va, ala, v_a(1), v_a(2))
+    call components(vc, alc, v_c(1), v_c(2))
+    a_a = 0.0_dp
+    a_c = 0.0_dp
+    if (level == 3) then
+      call components(aa, ba, a_a(1), a_a(2))
+      call components(ac, bc, a_c(1), a_c(2))
+    end if
+    call rrr_kernel(level, x_a, v_a, a_a, x_c, v_c, a_c, rz2, rz3, q, 1.0_dp/rz2, &
+                    1.0_dp/rz3, x_b, v_b, a_b, u2, u3, om2, om3, ep2, ep3, ier, est)
+    if (failed(ier)) then
+      xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; fi3 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp
+      vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; w3 = 0.0_dp
+      abcn = 0.0_dp; aban = 0.0_dp; abat = 0.0_dp; bbat = 0.0_dp; abct = 0.0_dp
+      bbct = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp; e2 = 0.0_dp; e3 = 0.0_dp
+      return
+    end if
+    ier = policy(est)
+    xb = x_b(1)
+    yb = x_b(2)
+    fi2 = atan2(u2(2), u2(1))
+    fi3 = atan2(u3(2), u3(1))
+    if (fi2 == -pi_exact) fi2 = pi_exact          ! the range (-pi, pi] of DUGL2
+    if (fi3 == -pi_exact) fi3 = pi_exact
+    w2 = om2 + 0.0_dp                             ! (-0 is +0, as DOMEGA gives it)
+    w3 = om3 + 0.0_dp
+    vba = abs(om2)*rz2
+    vbc = abs(om3)*rz3
+    alba = fi2 + book_sign(half_pi, om2)          ! DUGL3(FI2, PID2, W2)
+    albc = fi3 + book_sign(half_pi, om3)
+    vb = norm2d(v_b(1), v_b(2))
+    alb = dugl5(v_b(1), v_b(2))
+    if (level == 3) then
+      e2 = ep2 + 0.0_dp
+      e3 = ep3 + 0.0_dp
+      abat = abs(ep2)*rz2
+      abct = abs(ep3)*rz3
+      aban = om2**2*rz2
+      abcn = om3**2*rz3
+      bbat = fi2 + book_sign(half_pi, ep2)
+      bbct = fi3 + book_sign(half_pi, ep3)
+      ab = norm2d(a_b(1), a_b(2))
+      bb = dugl5(a_b(1), a_b(2))
+    else                                          ! ANALOG = 1: no accelerations
+      e2 = 0.0_dp; e3 = 0.0_dp; abat = 0.0_dp; abct = 0.0_dp; aban = 0.0_dp; abcn = 0.0_dp
+      bbat = 0.0_dp; bbct = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp
+    end if
+  end subroutine dknma1_rrr
 
   ! IV.17 DKNMA2, L2660-2747.  Kind 2 (RRP).
   ! The guide passes through K with direction FIM and belongs to link M (omega WM); VBM, ALBM
@@ -1010,7 +1095,8 @@ contains
     !:     guide).
     !: P : branch -- Branch: +1 puts B ahead of the foot of the perpendicular from A along
     !:     FIM, -1 behind: ``DKNMA2(FIM, P=1) = DPRM2(FIM)``, ``DKNMA2(FIM, P=-1) =
-    !:     DPRM2(FIM + pi)``.
+    !:     DPRM2(FIM + pi)``; P is the branch of ``Mechanism.rrp(..., angle=FIM,
+    !:     offset=RZ3*sin(ETA))``.
     !: ANALOG : real = 0.0 -- 1.0: stop after the velocities (the book's way of skipping the
     !:     acceleration work, e.g. for velocity analogues); the acceleration outputs are
     !:     then 0. Anything else: compute the accelerations too.

@@ -449,16 +449,15 @@ def test_corrected_view_leaves_out_the_as_printed_branches(name):
 def test_corrected_view_of_dprm1():
     clean = L.listing("DPRM1", corrected=True)
     code = [re.sub(r"!.*", "", x).strip() for x in clean.splitlines()]
-    assert "call apex_vectors(xc - xa, yc - ya, rzac, pa, h, pc, -q, r2x, r2y, r3x, r3y)" \
-        in code
-    assert "rzac = norm2d(xc - xa, yc - ya)" in code
-    # the as-printed branch (the book's DVKT and angles) is gone, its else kept
+    # corrected mode: the kind-1 kernel (issue 25), the apex of the triangle inside it
+    assert any(c.startswith("call rrr_kernel(1, [xa, ya]") for c in code)
+    # the as-printed branch (the book's DVKT and angles) is gone
     assert not any(c.startswith(("call dvkt", "ugbac =")) for c in code)
-    assert code.count("else") == 1                   # the IF on rz2 == rz3 only
+    assert code.count("else") == 0
     assert "as-printed branches left out" in clean.splitlines()[0]
-    # the diff is against this view: the book's cosine law against the apex
+    # the diff is against this view: the book's cosine law against the kernel
     left, right = _side_columns(L.listing("DPRM1", diff="side"))
-    assert any(x.startswith("call apex_vectors") for x in right)
+    assert any(x.startswith("call rrr_kernel") for x in right)
     assert not any("dvkt" in x for x in right) and any("DVKT" in x for x in left)
     r = run_cli("listing", "DPRM1", "--corrected")
     assert r.returncode == 0 and r.stdout.rstrip("\n") == clean.rstrip("\n")

@@ -113,6 +113,13 @@ DPRM2 = describe(
     axis passes through K with direction FIM; B is ``RZ3*sin(T)`` from the guide axis,
     on the side of A.
 
+    Branch: FIM keeps the book's meaning (tests/test_branch_conventions.py): B lies
+    ahead, along FIM, of the foot of the perpendicular from A, where
+    ``Mechanism.rrp(..., angle=FIM, branch=+1)`` places it; ``DPRM2(FIM + pi)`` is
+    ``branch=-1`` with the same angle.  The Mechanism's ``offset`` is measured along the
+    guide's left normal: ``RZ3*sin(T)`` with the sign of A's side.  The Mechanism's one
+    rule is explained in the docs' concepts page.
+
     Returns
     -------
     DPRM2(XB, YB, FI2)
@@ -370,6 +377,12 @@ DKNMA2 = describe(
     Listing IV.17 (L2660-2747), operator function KNMA2 of textbook [1].  Corrected: the
     side of A relative to the guide (E-DKNMA2-3) and the sign of E2 when W2 < 0
     (E-DKNMA2-4).
+
+    Branch: P keeps the book's sign (tests/test_branch_conventions.py): P = +1 places B
+    ahead, along FIM, of the foot of the perpendicular from A, where
+    ``Mechanism.rrp(..., angle=FIM, branch=+1, offset=RZ3*sin(ETA))`` and ``DPRM2(FIM)``
+    place it; P = -1 is ``branch=-1`` and ``DPRM2(FIM + pi)``.  The Mechanism's one rule is
+    explained in the docs' concepts page.
 
     Returns
     -------
