@@ -10,15 +10,532 @@
 ! A new kind is one kernel here plus its declaration in python/sarkp/mechanism.py.
 module groups
   use prmtr, only: dp, st_ok, st_assembly, st_singular, st_range, norm2d
-  use numerics, only: uround, bound2
+  use numerics, only: uround, bound2, failed, tri_apex, apex_vectors, unscale, &
+                      angle_sensitivity, solve2e, solve_kind5
   implicit none
   private
+
+  ! A 2x2 system for Cramer's rule: its entries, 1/det, and for the error estimate the
+  ! scales s1, s2 of its columns (the lengths the columns are unit vectors times), so that
+  ! the estimate is that of the unit-free system and the same in any length unit.
+  type :: cram
+    real(dp) :: a11, a12, a21, a22, rdet, na, nadet, s1, s2
+    integer :: st, e
+  end type cram
+  public :: cram, cramer_set, cramer, abs_err, carried
+  public :: crank_kernel, rigid_kernel, rrr_kernel, rrp_kernel, rpr_kernel, prp_kernel, &
+            rpp_kernel
 
 contains
 
   ! =====================================================================================
   ! Kinematics: positions, velocities, accelerations, error estimates
   ! =====================================================================================
+
+  ! A 2x2 system by Cramer's rule (forward stable for n = 2), for the kernels' velocities
+  ! and accelerations (and the force step's pair reactions), with solve2f's error bound
+  ! (bound2) taken for the system whose columns are divided by their scales s1, s2 (unit
+  ! vectors for the kinematics: the estimate is unit-free, as DKNMA1's with its unit
+  ! vectors), so that the dead-centre policy is the same in any length unit: cramer_set
+  ! once per matrix, cramer each right-hand side.  det A = 0: st_singular.
+  ! Entries far from 1 (a mechanism of 1e200 m or 1e-200 m) are first scaled by a power
+  ! of 2, 2**-e, so that det neither overflows nor underflows: exact, the same bits
+  ! otherwise; cramer scales the solution back.
+  pure subroutine cramer_set(a11, a12, a21, a22, f, s1, s2)
+    real(dp), intent(in) :: a11, a12, a21, a22, s1, s2
+    type(cram), intent(out) :: f
+    real(dp) :: det, amax
+    f%e = 0
+    amax = max(abs(a11), abs(a12), abs(a21), abs(a22))
+    if (amax > 2.0_dp**200 .or. (amax < 2.0_dp**(-200) .and. amax > 0.0_dp)) then
+      if (amax <= huge(amax)) f%e = exponent(amax)
+    end if
+    if (f%e == 0) then
+      f%a11 = a11
+      f%a21 = a21
+      f%a12 = a12
+      f%a22 = a22
+      f%s1 = s1
+      f%s2 = s2
+    else
+      f%a11 = scale(a11, -f%e)
+      f%a21 = scale(a21, -f%e)
+      f%a12 = scale(a12, -f%e)
+      f%a22 = scale(a22, -f%e)
+      f%s1 = scale(s1, -f%e)                ! only nadet below uses them so
+      f%s2 = scale(s2, -f%e)
+    end if
+    f%na = sqrt((f%a11/f%s1)**2 + (f%a21/f%s1)**2 + (f%a12/f%s2)**2 + (f%a22/f%s2)**2)
+    det = f%a11*f%a22 - f%a12*f%a21
+    f%nadet = 0.0_dp
+    f%rdet = 0.0_dp
+    if (det /= 0.0_dp) then
+      f%rdet = 1.0_dp/det
+      f%nadet = f%na*abs(f%s1*(f%s2*f%rdet))
+    end if
+    f%s1 = s1
+    f%s2 = s2
+    f%st = st_ok
+    if (det == 0.0_dp .or. .not. f%nadet <= huge(1.0_dp)) f%st = st_singular
+  end subroutine cramer_set
+
+  pure subroutine cramer(f, b1, b2, da, db, sb, y1, y2, st, rel)
+    type(cram), intent(in) :: f
+    real(dp), intent(in) :: b1, b2, da, db, sb
+    real(dp), intent(out) :: y1, y2, rel
+    integer, intent(out) :: st
+    y1 = 0.0_dp; y2 = 0.0_dp
+    rel = huge(1.0_dp)
+    st = f%st
+    if (st /= st_ok) return
+    y1 = (b1*f%a22 - f%a12*b2)*f%rdet
+    y2 = (f%a11*b2 - f%a21*b1)*f%rdet
+    if (f%e /= 0) then
+      y1 = scale(y1, -f%e)
+      y2 = scale(y2, -f%e)
+    end if
+    if (.not. (abs(y1) <= huge(y1) .and. abs(y2) <= huge(y2))) then
+      y1 = 0.0_dp; y2 = 0.0_dp
+      st = st_range
+      return
+    end if
+    rel = bound2(f%na, f%nadet, y1*f%s1, y2*f%s2, da, db, sb)
+  end subroutine cramer
+
+  ! The absolute error (in the units of the scaled unknowns y1 s1, y2 s2) that cramer's
+  ! relative estimate rel stands for: rel times bound2's denominator.
+  pure real(dp) function abs_err(f, y1, y2, sb, rel)
+    type(cram), intent(in) :: f
+    real(dp), intent(in) :: y1, y2, sb, rel
+    abs_err = rel*max(norm2d(y1*f%s1, y2*f%s2), sb/f%na)
+  end function abs_err
+  !
+  ! Conventions of every kernel below (one position, one group):
+  ! - level: 1 positions, 2 and velocities, 3 and accelerations; outputs beyond the level
+  !   are not set.
+  ! - A point's position x(2), velocity v(2) and acceleration a(2) are Cartesian (x, y) in
+  !   any one length unit.  Velocities may be true (d/dt) or analogues (d/dphi, the crank
+  !   turning at 1: sarkp.Mechanism's use): the kernels are the same.
+  ! - A link's direction is its unit vector u = (cos, sin); w, e its angular velocity and
+  !   acceleration, counter-clockwise positive (radians, per the velocities' time unit).
+  ! - A guide (kinds 2, 4, 5) is a line of a link g, given by its unit vector ug (already
+  !   turned by the link's angle) and one of its points: the point's x, v, a and the
+  !   link's wg, eg carry the guide's motion (a guide of the frame: zeros).
+  ! - st: prmtr's status (st_ok, st_assembly: the group does not assemble, st_singular: a
+  !   dead centre or a degenerate input, st_range: a result out of the range of doubles).
+  !   est: the estimated relative error of the results (unit-free: the same in any length
+  !   unit), the input of numerics' dead-centre policy (numerics: policy); huge() when a
+  !   2x2 solve failed.  On a failure the outputs are not all set.
+  ! - The branch (kinds 1, 2, 3) is +1 or -1 (see each kernel).
+
+  ! The motion of a point X carried by a link of angular velocity w, acceleration e whose
+  ! point P (xp, vp, ap) is known: v = vp + w k x (X - P), a = ap + e k x (X - P) - w**2 (X - P).
+  pure subroutine carried(xp, vp, ap, w, e, xx, vx, ax)
+    real(dp), intent(in) :: xp(2), vp(2), ap(2), w, e, xx(2)
+    real(dp), intent(out) :: vx(2), ax(2)
+    real(dp) :: r(2)
+    r = xx - xp
+    vx = vp + w*[-r(2), r(1)]
+    ax = ap + e*[-r(2), r(1)] - w**2*r
+  end subroutine carried
+
+  ! The crank: A = O + r (cos phi, sin phi), O fixed.
+  ! In:  xo = the pivot O; r = the radius |OA|; phi = the crank angle (rad).
+  ! Out: xa; va = dA/dphi, aa = d2A/dphi2 (analogues: the crank turns at w = 1, e = 0;
+  !      times omega, omega**2 + ... by the caller); u = (cos phi, sin phi).
+  pure subroutine crank_kernel(xo, r, phi, xa, va, aa, u)
+    real(dp), intent(in) :: xo(2), r, phi
+    real(dp), intent(out) :: xa(2), va(2), aa(2), u(2)
+    real(dp) :: cp, sp
+    cp = cos(phi)
+    sp = sin(phi)
+    xa = xo + r*[cp, sp]
+    u = [cp, sp]
+    va = r*[-sp, cp]
+    aa = -r*[cp, sp]
+  end subroutine crank_kernel
+
+  ! A point D rigidly on a link: D = P + dist (the reference direction turned by the
+  ! angle whose cosine and sine are cd, sd).  The reference direction: the link's own, ul,
+  ! when own, else P->Q (xq).
+  ! In:  level; xp, vp, ap = P; wl, el = the link's angular velocity, acceleration; ul =
+  !      the link's direction; xq, own; dist, cd, sd.
+  ! Out: xd, vd, ad; st = st_singular when Q = P (not own), else st_ok (no estimate:
+  !      the point adds no error of its own).
+  pure subroutine rigid_kernel(level, xp, vp, ap, wl, el, ul, xq, own, dist, cd, sd, &
+                               xd, vd, ad, st)
+    integer, intent(in) :: level
+    real(dp), intent(in) :: xp(2), vp(2), ap(2), wl, el, ul(2), xq(2), dist, cd, sd
+    logical, intent(in) :: own
+    real(dp), intent(out) :: xd(2), vd(2), ad(2)
+    integer, intent(out) :: st
+    real(dp) :: dq(2), dn, u(2)
+    st = st_ok
+    if (own) then
+      u = ul
+    else
+      dq = xq - xp
+      dn = norm2d(dq(1), dq(2))
+      if (dn == 0.0_dp) then
+        st = st_singular
+        return
+      end if
+      u = dq/dn
+    end if
+    xd = xp + dist*[u(1)*cd - u(2)*sd, u(2)*cd + u(1)*sd]
+    if (level < 2) return
+    call carried(xp, vp, ap, wl, el, xd, vd, ad)
+  end subroutine rigid_kernel
+
+  ! Kind 1, RRR (DPRM1/DKNMA1): the joint B at l2 from A (link 2 = A-B) and l3 from C
+  ! (link 3 = C-B).
+  ! In:  level; xa, va, aa = A; xc, vc, ac = C; l2, l3 > 0 and rl2 = 1/l2, rl3 = 1/l3
+  !      (the caller's, computed once); branch = +1: B on the left of the line A->C,
+  !      -1 on its right.
+  ! Out: xb, vb, ab = B; u2 = (B - A)/l2, u3 = (B - C)/l3; w2, w3, e2, e3 of links 2, 3;
+  !      st (st_assembly: the links do not reach, or A = C with l2 /= l3; st_singular:
+  !      A = C with l2 = l3, or a velocity system at a dead centre), est.
+  ! The estimate: the angles' sensitivity to one rounding of the triangle's sides (tri_apex,
+  ! widened when the coordinates are far from the origin), then the 2x2 systems with
+  ! unit-vector columns (cramer), the velocities' error carried into the accelerations
+  ! (as DKNMA1).
+  pure subroutine rrr_kernel(level, xa, va, aa, xc, vc, ac, l2, l3, branch, rl2, rl3, &
+                        xb, vb, ab, u2, u3, w2, w3, e2, e3, st, est)
+    integer, intent(in) :: level
+    real(dp), intent(in) :: xa(2), va(2), aa(2), xc(2), vc(2), ac(2), l2, l3, branch
+    real(dp), intent(in) :: rl2, rl3
+    real(dp), intent(out) :: xb(2), vb(2), ab(2), u2(2), u3(2), w2, w3, e2, e3, est
+    integer, intent(out) :: st
+    integer :: ex
+    real(dp) :: dx, dy, d, pr, h, pq, dang, r2(2), r3(2), y1, y2, rel, sb, sx, ev
+    type(cram) :: f
+    dx = xc(1) - xa(1)
+    dy = xc(2) - xa(2)
+    d = norm2d(dx, dy)
+    est = 0.0_dp
+    if (d == 0.0_dp) then
+      st = st_singular
+      if (l2 /= l3) st = st_assembly
+      return
+    end if
+    call tri_apex(d, l2, l3, pr, h, pq, ex, dang, st)
+    if (failed(st)) return
+    call apex_vectors(dx, dy, d, pr, h, pq, branch, r2(1), r2(2), r3(1), r3(2))
+    r2 = [unscale(r2(1), ex), unscale(r2(2), ex)]
+    r3 = [unscale(r3(1), ex), unscale(r3(2), ex)]
+    xb = xa + r2
+    u2 = [r2(1)*rl2, r2(2)*rl2]
+    u3 = [r3(1)*rl3, r3(2)*rl3]
+    ! d carries the rounding of the coordinates it is the difference of (far from the
+    ! origin more than that of d itself, which dang allows for): the angles move by
+    ! 2u (sx d + l2**2 + l3**2)/(d h) instead of 2u (d**2 + l2**2 + l3**2)/(d h)
+    sx = abs(xa(1)) + abs(xa(2)) + abs(xc(1)) + abs(xc(2))
+    if (sx > d) dang = dang*((sx/d)*(d/l2)*(d/l3) + l2/l3 + l3/l2)/ &
+                           ((d/l2)*(d/l3) + l2/l3 + l3/l2)
+    est = dang
+    if (level < 2) return
+    ! v_A + w2 k x r2 = v_C + w3 k x r3 (columns: unit vectors times l2, l3)
+    call cramer_set(-r2(2), r3(2), r2(1), -r3(1), f, l2, l3)
+    sb = abs(va(1)) + abs(va(2)) + abs(vc(1)) + abs(vc(2))
+    call cramer(f, vc(1) - va(1), vc(2) - va(2), dang, 4.0_dp*uround*sb, sb, &
+                y1, y2, st, rel)
+    if (failed(st)) return
+    est = max(est, rel)
+    w2 = y1
+    w3 = y2
+    vb = va + y1*[-r2(2), r2(1)]
+    if (level < 3) return
+    ! the velocities' error (absolute, in w' l units) enters through w'**2 l
+    ev = abs_err(f, y1, y2, sb, rel)
+    call cramer(f, ac(1) - aa(1) - y2**2*r3(1) + y1**2*r2(1), &
+                ac(2) - aa(2) - y2**2*r3(2) + y1**2*r2(2), dang, &
+                4.0_dp*uround*(sb + y1**2*l2 + y2**2*l3) &
+                + ev*(2.0_dp*abs(y1) + ev/l2) + ev*(2.0_dp*abs(y2) + ev/l3), &
+                sb, y1, y2, st, rel)
+    if (failed(st)) return
+    est = max(est, rel)
+    e2 = y1
+    e3 = y2
+    ab = aa + y1*[-r2(2), r2(1)] - w2**2*r2
+  end subroutine rrr_kernel
+
+  ! Kind 2, RRP (DPRM2/DKNMA2): the slider joint B on a guide, at off from its axis
+  ! (along the guide's left normal), the rod A-B (link 2) of length l2; the slider block
+  ! (link 3) turns with the guide.
+  ! In:  level; xa, va, aa = A; the guide: xk, vk, ak = its point K, ug its direction,
+  !      wg, eg its link's motion; l2 > 0, rl2 = 1/l2; off; branch = +1: B ahead, along
+  !      ug, of the foot of the perpendicular from A, -1 behind.
+  ! Out: xb, vb, ab = B; u2 = (B - A)/l2, w2, e2 of the rod (the block's are ug, wg, eg);
+  !      sv, sa = B's velocity and acceleration along the guide relative to it;
+  !      st (st_assembly: the rod does not reach the guide), est.
+  pure subroutine rrp_kernel(level, xa, va, aa, xk, vk, ak, ug, wg, eg, l2, rl2, off, branch, &
+                        xb, vb, ab, u2, w2, e2, sv, sa, st, est)
+    integer, intent(in) :: level
+    real(dp), intent(in) :: xa(2), va(2), aa(2), xk(2), vk(2), ak(2), ug(2), wg, eg
+    real(dp), intent(in) :: l2, rl2, off, branch
+    real(dp), intent(out) :: xb(2), vb(2), ab(2), u2(2), w2, e2, sv, sa, est
+    integer, intent(out) :: st
+    real(dp) :: u(2), nn(2), wv(2), along, perp, cq, root, sl, r2(2), dc, sq
+    real(dp) :: vg(2), ag(2), y1, y2, rel, sb, ev
+    type(cram) :: f
+    u = ug
+    nn = [-u(2), u(1)]
+    wv = xa - xk
+    along = wv(1)*u(1) + wv(2)*u(2)
+    perp = wv(1)*nn(1) + wv(2)*nn(2) - off
+    cq = perp/l2
+    est = 0.0_dp
+    if (abs(cq) > 1.0_dp) then
+      if (abs(cq) - 1.0_dp > 8.0_dp*epsilon(1.0_dp)) then
+        st = st_assembly
+        return
+      end if
+      cq = sign(1.0_dp, cq)
+    end if
+    sq = sqrt((1.0_dp - cq)*(1.0_dp + cq))
+    root = l2*sq
+    sl = along + branch*root
+    xb = xk + sl*u + off*nn
+    r2 = xb - xa
+    u2 = [r2(1)*rl2, r2(2)*rl2]
+    dc = 4.0_dp*uround*(abs(perp) + abs(off) + l2 + abs(wv(1)) + abs(wv(2)))/l2
+    ! numerics' angle_sensitivity(cq, dc) = min(dc/sq, sqrt(2 dc)), its square root sq
+    ! shared with the position's, sqrt(2 dc) taken only when it may be the smaller
+    ! (est**2 < 2 dc (1 - 8u) assures est < the rounded sqrt(2 dc)): the same bits
+    if (sq > 0.0_dp) then
+      est = dc/sq
+      if (.not. est*est < 2.0_dp*dc*(1.0_dp - 8.0_dp*uround)) est = min(dc/sq, sqrt(2.0_dp*dc))
+    else
+      est = sqrt(2.0_dp*dc)
+    end if
+    st = st_ok
+    if (level < 2) return
+    ! v_A + w2 k x r2 = v_G(B) + s' u
+    call carried(xk, vk, ak, wg, eg, xb, vg, ag)
+    call cramer_set(-r2(2), -u(1), r2(1), -u(2), f, l2, 1.0_dp)
+    sb = abs(va(1)) + abs(va(2)) + abs(vg(1)) + abs(vg(2))
+    call cramer(f, vg(1) - va(1), vg(2) - va(2), est + 4.0_dp*uround, &
+                4.0_dp*uround*sb, sb, y1, y2, st, rel)
+    if (failed(st)) return
+    est = max(est, rel)
+    w2 = y1
+    sv = y2
+    vb = va + y1*[-r2(2), r2(1)]
+    if (level < 3) return
+    ev = abs_err(f, y1, y2, sb, rel)
+    ag = ag + 2.0_dp*wg*y2*nn - aa + y1**2*r2
+    call cramer(f, ag(1), ag(2), est + 4.0_dp*uround, &
+                4.0_dp*uround*(sb + y1**2*l2) + ev*(2.0_dp*abs(y1) + ev/l2) &
+                + 2.0_dp*abs(wg)*ev, sb, y1, y2, st, rel)
+    if (failed(st)) return
+    est = max(est, rel)
+    e2 = y1
+    sa = y2
+    ab = aa + y1*[-r2(2), r2(1)] - w2**2*r2
+  end subroutine rrp_kernel
+
+  ! Kind 3, RPR (DPRM3/DKNMA3): a slider (link 2) pivoted at A slides along link 3, which
+  ! turns about C; A is at h from link 3's axis.  B = the foot of the perpendicular from A
+  ! on the axis (a point of the slider; Thales: on the circle over AC).
+  ! In:  level; xa, va, aa = A; xc, vc, ac = C; h (its modulus is used); branch = +1: B on
+  !      the left of the line A->C, -1 on its right.
+  ! Out: xb, vb, ab = B; u3 = (B - C)/|B - C|, w3, e3 of link 3 (and of the slider);
+  !      sv, sa = the sliding velocity and acceleration along u3 (d|CB|/dt, ...);
+  !      st (st_singular: A = C or B = C; st_assembly: h > |AC|), est.
+  pure subroutine rpr_kernel(level, xa, va, aa, xc, vc, ac, h, branch, xb, vb, ab, u3, w3, e3, &
+                        sv, sa, st, est)
+    integer, intent(in) :: level
+    real(dp), intent(in) :: xa(2), va(2), aa(2), xc(2), vc(2), ac(2), h, branch
+    real(dp), intent(out) :: xb(2), vb(2), ab(2), u3(2), w3, e3, sv, sa, est
+    integer, intent(out) :: st
+    real(dp) :: dx, dy, d, hh, sq, cq, u(2), nn(2), fb(2), e3v(2), n3(2), sl, ds
+    real(dp) :: rac(2), y1, y2, rel, sb, sd, ev, sx
+    type(cram) :: f
+    hh = abs(h)
+    dx = xc(1) - xa(1)
+    dy = xc(2) - xa(2)
+    d = norm2d(dx, dy)
+    est = 0.0_dp
+    if (d == 0.0_dp) then
+      st = st_singular
+      return
+    end if
+    sq = hh/d
+    if (sq > 1.0_dp) then
+      if (sq - 1.0_dp > 8.0_dp*epsilon(1.0_dp)) then
+        st = st_assembly
+        return
+      end if
+      sq = 1.0_dp
+    end if
+    cq = sqrt((1.0_dp - sq)*(1.0_dp + sq))
+    u = [dx, dy]/d
+    nn = [-u(2), u(1)]
+    fb = (hh*sq)*u + (branch*hh*cq)*nn           ! B - A (Thales: on the circle over AC)
+    xb = xa + fb
+    sl = d*cq                                    ! |B - C|
+    if (sl == 0.0_dp) then
+      st = st_singular
+      return
+    end if
+    e3v = (xb - xc)/sl
+    n3 = [-e3v(2), e3v(1)]
+    u3 = e3v
+    ds = 4.0_dp*uround*(1.0_dp + sq)
+    est = angle_sensitivity(sq, ds)
+    ! A - C carries the rounding of the coordinates it is the difference of (far from the
+    ! origin more than d's own): its direction, link 3's, moves by about u sx/d, and the
+    ! accelerations' term w3**2 (A - C) by w3**2 u sx
+    sx = abs(xa(1)) + abs(xa(2)) + abs(xc(1)) + abs(xc(2))
+    if (sx > d) est = est + uround*(sx/d)
+    st = st_ok
+    if (level < 2) return
+    ! v_A = v_C + w3 k x (A - C) + s' e3
+    rac = xa - xc
+    call cramer_set(-rac(2), e3v(1), rac(1), e3v(2), f, d, 1.0_dp)
+    sb = abs(va(1)) + abs(va(2)) + abs(vc(1)) + abs(vc(2))
+    call cramer(f, va(1) - vc(1), va(2) - vc(2), est + 4.0_dp*uround, &
+                4.0_dp*uround*sb, sb, y1, y2, st, rel)
+    if (failed(st)) return
+    est = max(est, rel)
+    w3 = y1
+    sd = y2
+    sv = sd
+    vb = vc + y1*sl*n3 + sd*e3v
+    if (level < 3) return
+    ev = abs_err(f, y1, sd, sb, rel)
+    call cramer(f, aa(1) - ac(1) + y1**2*rac(1) - 2.0_dp*y1*sd*n3(1), &
+                aa(2) - ac(2) + y1**2*rac(2) - 2.0_dp*y1*sd*n3(2), &
+                est + 4.0_dp*uround, 4.0_dp*uround*(sb + y1**2*d + abs(y1*sd)) + uround*y1**2*sx &
+                + ev*(2.0_dp*abs(y1) + ev/d) + 2.0_dp*(abs(y1)*ev + abs(sd)*ev/d), sb, &
+                y1, y2, st, rel)
+    if (failed(st)) return
+    est = max(est, rel)
+    e3 = y1
+    sa = y2
+    ab = ac + y1*sl*n3 - w3**2*sl*e3v + y2*e3v + 2.0_dp*w3*sd*n3
+  end subroutine rpr_kernel
+
+  ! Kind 4, PRP (DPRM4/DKNMA4): the joint B of two sliders, slider 2 on guide M through A,
+  ! slider 3 on guide N through C; B at offm, offn from the guides' axes along their
+  ! left normals.  One position.
+  ! In:  level; guide M: xa, va, aa = its point A, um its direction, wm, em its link's
+  !      motion, offm; guide N: xc, vc, ac, un, wn, en, offn.
+  ! Out: xb, vb, ab = B (links 2, 3 turn with the guides: um, wm, em and un, wn, en);
+  !      svm, svn = B's velocities along um, un relative to the guides, sam, san its
+  !      accelerations (along um and un: the solve's unknowns); st (st_singular: parallel
+  !      guides), est.
+  subroutine prp_kernel(level, xa, va, aa, um, wm, em, offm, xc, vc, ac, un, wn, en, offn, &
+                        xb, vb, ab, svm, svn, sam, san, st, est)
+    integer, intent(in) :: level
+    real(dp), intent(in) :: xa(2), va(2), aa(2), um(2), wm, em, offm
+    real(dp), intent(in) :: xc(2), vc(2), ac(2), un(2), wn, en, offn
+    real(dp), intent(out) :: xb(2), vb(2), ab(2), svm, svn, sam, san, est
+    integer, intent(out) :: st
+    real(dp) :: nm_(2), nn(2), dca(2), bx, by, sb, rel
+    real(dp) :: vgm(2), agm(2), vgn(2), agn(2), y1, y2, s2, s3, ev
+    type(cram) :: f
+    nm_ = [-um(2), um(1)]
+    nn = [-un(2), un(1)]
+    dca = xc - xa
+    ! nM . (B - A) = offM,  nN . (B - A) = offN + nN . (C - A)
+    sb = abs(offm) + abs(offn) + abs(dca(1)) + abs(dca(2))
+    call solve2e(nm_(1), nm_(2), nn(1), nn(2), offm, offn + nn(1)*dca(1) + nn(2)*dca(2), &
+                 4.0_dp*uround, 4.0_dp*uround*sb, sb, bx, by, st, est)
+    if (failed(st)) return
+    xb = xa + [bx, by]
+    if (level < 2) return
+    call carried(xa, va, aa, wm, em, xb, vgm, agm)
+    call carried(xc, vc, ac, wn, en, xb, vgn, agn)
+    call cramer_set(um(1), -un(1), um(2), -un(2), f, 1.0_dp, 1.0_dp)
+    sb = abs(vgm(1)) + abs(vgm(2)) + abs(vgn(1)) + abs(vgn(2))
+    call cramer(f, vgn(1) - vgm(1), vgn(2) - vgm(2), est + 4.0_dp*uround, &
+                4.0_dp*uround*sb, sb, s2, s3, st, rel)
+    if (failed(st)) return
+    est = max(est, rel)
+    svm = s2
+    svn = s3
+    vb = vgm + s2*um
+    if (level < 3) return
+    ev = abs_err(f, s2, s3, sb, rel)
+    call cramer(f, agn(1) + 2.0_dp*wn*s3*nn(1) - agm(1) - 2.0_dp*wm*s2*nm_(1), &
+                agn(2) + 2.0_dp*wn*s3*nn(2) - agm(2) - 2.0_dp*wm*s2*nm_(2), &
+                est + 4.0_dp*uround, 4.0_dp*uround*(sb + abs(wn*s3) + abs(wm*s2)) &
+                + 2.0_dp*(abs(wn) + abs(wm))*ev, sb, y1, y2, st, rel)
+    if (failed(st)) return
+    est = max(est, rel)
+    sam = y1
+    san = y2
+    ab = agm + y1*um + 2.0_dp*wm*s2*nm_
+  end subroutine prp_kernel
+
+  ! Kind 5, RPP (DPRM5/DKNMA5): link 2 slides on guide M through A; a block (link 3)
+  ! pivoted at C slides in link 2's slot, whose direction is um turned by t2.  K = where
+  ! the slot's axis meets the guide's axis (a point of link 2).  One position.
+  ! In:  level; guide M: xa, va, aa = its point A, um its direction, wm, em its link's
+  !      motion; t2 = the slot's angle to the guide and ct2, st2 its cosine and sine
+  !      (the caller's, computed once); xc, vc, ac = C.
+  ! Out: xk, vk, ak = K; us = the slot's direction (links 2, 3 turn with the guide: um,
+  !      wm, em); sk = |AK| along um and sc = |KC| along us (C - A = sk um + sc us), svk,
+  !      svc their rates, sak, sac their second rates (relative to the guide);
+  !      st (st_singular: the slot parallel to the guide), est.  A small t2 keeps its
+  !      digits (numerics' solve_kind5, in the guide's frame).
+  pure subroutine rpp_kernel(level, xa, va, aa, um, wm, em, t2, ct2, st2, xc, vc, ac, &
+                        xk, vk, ak, us, sk, sc, svk, svc, sak, sac, st, est)
+    integer, intent(in) :: level
+    real(dp), intent(in) :: xa(2), va(2), aa(2), um(2), wm, em, t2, ct2, st2
+    real(dp), intent(in) :: xc(2), vc(2), ac(2)
+    real(dp), intent(out) :: xk(2), vk(2), ak(2), us(2), sk, sc, svk, svc, sak, sac, est
+    integer, intent(out) :: st
+    real(dp) :: nm_(2), ns_(2), dca(2), s2, s3, sb, rel
+    real(dp) :: vgc(2), agc(2), vgk(2), agk(2), y1, y2, d2, d3, ev
+    us = [um(1)*ct2 - um(2)*st2, um(2)*ct2 + um(1)*st2]
+    nm_ = [-um(2), um(1)]
+    ns_ = [-us(2), us(1)]
+    dca = xc - xa
+    sb = abs(dca(1)) + abs(dca(2))
+    ! s2 um + s3 us = C - A, solved in the frame of the guide (DPRM5's solve_kind5: a
+    ! small T2 keeps its digits)
+    call kind5(t2, um, nm_, dca, 4.0_dp*uround*sb, sb, s2, s3, st, est)
+    if (failed(st)) return
+    sk = s2
+    sc = s3
+    xk = xa + s2*um
+    if (level < 2) return
+    call carried(xa, va, aa, wm, em, xc, vgc, agc)
+    call carried(xa, va, aa, wm, em, xk, vgk, agk)
+    sb = abs(vc(1)) + abs(vc(2)) + abs(vgc(1)) + abs(vgc(2))
+    call kind5(t2, um, nm_, vc - vgc, 4.0_dp*uround*sb, sb, d2, d3, st, rel)
+    if (failed(st)) return
+    rel = rel + est                       ! the position's error moves the system
+    est = max(est, rel)
+    svk = d2
+    svc = d3
+    vk = vgk + d2*um
+    if (level < 3) return
+    ev = rel*max(norm2d(d2, d3), sb)
+    call kind5(t2, um, nm_, ac - agc - 2.0_dp*wm*(d2*nm_ + d3*ns_), &
+               4.0_dp*uround*(sb + abs(wm)*(abs(d2) + abs(d3))) + 4.0_dp*abs(wm)*ev, &
+               sb, y1, y2, st, rel)
+    if (failed(st)) return
+    est = max(est, rel + est)
+    sak = y1
+    sac = y2
+    ak = agk + y1*um + 2.0_dp*wm*d2*nm_
+  end subroutine rpp_kernel
+
+  ! ym um + ys us = bb (us = um turned by t2) through numerics' solve_kind5, which solves
+  ! y1 e(FIM+T2) - y2 e(FIM) = b in the guide's frame: ys = y1, ym = -y2
+  pure subroutine kind5(t2, um, nm_, bb, db, sbb, ym, ys, st5, rel5)
+    real(dp), intent(in) :: t2, um(2), nm_(2), bb(2), db, sbb
+    real(dp), intent(out) :: ym, ys, rel5
+    integer, intent(out) :: st5
+    real(dp) :: z1, z2
+    call solve_kind5(t2, bb(1)*um(1) + bb(2)*um(2), bb(1)*nm_(1) + bb(2)*nm_(2), db, &
+                     sbb, z1, z2, st5, rel5)
+    ys = z1
+    ym = -z2
+  end subroutine kind5
 
   ! =====================================================================================
   ! The chapter 7 force step: a group's pair reactions from its links' loads

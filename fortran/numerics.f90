@@ -118,7 +118,7 @@ contains
   ! y1*sin(T2) = b2.  FIM + T2 is never formed, so a small T2 keeps its digits.  db, sb
   ! as for solve2e; the error bound is propagated through the two formulas (sin and cos
   ! of T2 to an ulp, T2 itself known to an ulp).  SIN(T2) = 0: st_singular.
-  subroutine solve_kind5(t2, b1, b2, db, sb, y1, y2, st, rel)
+  pure subroutine solve_kind5(t2, b1, b2, db, sb, y1, y2, st, rel)
     real(dp), intent(in) :: t2, b1, b2, db, sb
     real(dp), intent(out) :: y1, y2, rel
     integer, intent(out) :: st
@@ -219,7 +219,7 @@ contains
   ! the position, radians; h = the triangle's height on d), plus a few roundings of the
   ! computation itself.
   ! st_assembly when the sides violate the triangle inequality by more than rounding.
-  subroutine tri_angles(d0, l20, l30, anga, angc, dang, st)
+  pure subroutine tri_angles(d0, l20, l30, anga, angc, dang, st)
     real(dp), intent(in) :: d0, l20, l30
     real(dp), intent(out) :: anga, angc, dang
     integer, intent(out) :: st
@@ -238,7 +238,7 @@ contains
   ! (>= 0).  tri_angles' angles are atan2(h, pa) and atan2(h, pc); corrected DPRM1 and
   ! DKNMA1 use the apex itself (issue 9: no angle and back).  pa, h, pc are in units of 2**e (the
   ! sides are scaled by a power of 2 first, see below).  dang and st as for tri_angles.
-  subroutine tri_apex(d0, l20, l30, pa, h, pc, e, dang, st)
+  pure subroutine tri_apex(d0, l20, l30, pa, h, pc, e, dang, st)
     real(dp), intent(in) :: d0, l20, l30
     real(dp), intent(out) :: pa, h, pc, dang
     integer, intent(out) :: e, st

@@ -1119,7 +1119,8 @@ class Mechanism:
 
     def _step_text(self, k):
         kind, _, _, name = self._steps[k - 1]
-        return f"group {KIND_NAMES[kind]} {name!r} (step {k})"
+        what = KIND_NAMES.get(kind, f"of unknown kind {kind}")
+        return f"group {what} {name!r} (step {k})"
 
     def _settle(self, status, fgroup, phiv, shape, lead, on_error):
         """Raise for the first failed position (on_error="raise"); warn of the position
