@@ -506,15 +506,18 @@ contains
     real(dp), intent(in) :: xc(2), vc(2), ac(2)
     real(dp), intent(out) :: xk(2), vk(2), ak(2), us(2), sk, sc, svk, svc, sak, sac, est
     integer, intent(out) :: st
-    real(dp) :: nm_(2), dca(2), s2, s3, sb, rel, vr(2), ar(2), ex
+    real(dp) :: nm_(2), dca(2), s2, s3, sb, rel, vr(2), ar(2), ex, sx
     real(dp) :: vgc(2), agc(2), vgk(2), agk(2), y1, y2, d2, d3, ev
     us = [um(1)*ct2 - um(2)*st2, um(2)*ct2 + um(1)*st2]
     nm_ = [-um(2), um(1)]
     dca = xc - xa
     sb = abs(dca(1)) + abs(dca(2))
+    ! C - A carries the rounding of the coordinates far from the origin (as prp_kernel):
+    ! u sx, sx = their size beyond the group's; C - A again in the velocities below
+    sx = max(0.0_dp, abs(xa(1)) + abs(xa(2)) + abs(xc(1)) + abs(xc(2)) - sb)
     ! s2 um + s3 us = C - A, solved in the frame of the guide (DPRM5's solve_kind5: a
     ! small T2 keeps its digits)
-    call kind5(t2, um, nm_, dca, 4.0_dp*uround*sb, sb, s2, s3, st, est)
+    call kind5(t2, um, nm_, dca, 4.0_dp*uround*sb + 2.0_dp*uround*sx, sb, s2, s3, st, est)
     if (failed(st)) return
     sk = s2
     sc = s3
@@ -526,7 +529,8 @@ contains
     ! C's velocity relative to the guide's link: vr = s2' um + s3' us
     vr = vc - vgc
     sb = abs(vc(1)) + abs(vc(2)) + abs(vgc(1)) + abs(vgc(2))
-    call kind5(t2, um, nm_, vr, 4.0_dp*uround*sb, sb, d2, d3, st, rel)
+    call kind5(t2, um, nm_, vr, 4.0_dp*uround*sb + 2.0_dp*uround*abs(wm)*sx, sb, d2, d3, &
+               st, rel)
     if (failed(st)) return
     rel = rel + est                       ! the position's error moves K's velocity
     est = max(est, rel)
@@ -539,7 +543,8 @@ contains
     ! rounding, where s2', s3' each grow as 1/t2 and cancel
     ar = ac - agc - 2.0_dp*wm*[-vr(2), vr(1)]
     sb = abs(ac(1)) + abs(ac(2)) + abs(agc(1)) + abs(agc(2)) + 2.0_dp*abs(wm)*(abs(vr(1)) + abs(vr(2)))
-    call kind5(t2, um, nm_, ar, 4.0_dp*uround*sb, sb, y1, y2, st, rel)
+    call kind5(t2, um, nm_, ar, 4.0_dp*uround*sb + 2.0_dp*uround*(abs(em) + wm**2)*sx, sb, &
+               y1, y2, st, rel)
     if (failed(st)) return
     ! K's acceleration agk + s2'' um + 2 w s2' nm: the errors of s2' and of K, relative
     ! to the size of its terms

@@ -177,7 +177,11 @@ def check(m, phi, joint, ref, r, off=0.0):
 # ---- the strategies ---------------------------------------------------------------------------
 
 def angle(draw):
-    return draw(st.floats(-math.pi, math.pi, allow_subnormal=False))
+    """An angle in [-pi, pi], of modulus at least 1e-300 or 0: a smaller one (the fuzz
+    drew 2.2e-308) puts results in the subnormal range, where scaling by 2**k is not
+    exact whatever the kernels do."""
+    a = draw(st.floats(-math.pi, math.pi, allow_subnormal=False))
+    return 0.0 if abs(a) < 1e-300 else a
 
 
 def coordinate(draw):
@@ -241,8 +245,14 @@ def test_rpp_status_ok_means_eight_digits(case, off):
 @settings(max_examples=60, **SETTINGS)
 @given(st.one_of(prps(), rpps()), st.integers(-30, 30), st.sampled_from([0.5, 1.0, 1e3]))
 def test_two_slider_statuses_are_the_same_at_every_scale_and_offset(case, k, off):
-    """Scaled by 2**k: the same statuses and digits and the results scaled exactly;
-    moved by an offset: the same statuses and digits."""
+    """Scaled by 2**k: the same statuses and digits and the results scaled exactly.
+    Moved by an offset: never more digits than at the origin (honest there: the status
+    tests check the moved mechanisms).  Not the same digits: the rounding of the
+    coordinates far from the origin is real and the estimates allow for it (the PRP of
+    test_prp_far_from_the_origin_states_no_digits_it_lacks: error 2.2e-12 at the origin,
+    4.3e-7 at (1e3, 1e3)), as h25e's rpr kernel does; a group much smaller than its
+    coordinates (an RPP with its pivot 6e-8 from the guide's point) may lose a digit of
+    its estimate at an offset of 0.5."""
     if len(case) == 8:
         build, joint = (lambda sc, o: prp(*case[:7], sc, o)), "B"
     else:
@@ -253,10 +263,13 @@ def test_two_slider_statuses_are_the_same_at_every_scale_and_offset(case, k, off
     c, dc = solve(build(1.0, off), phi)
     if "range" in (da, db, dc):
         return                            # an overflow depends on the scale (check())
-    assert (a is None) == (b is None) == (c is None), case
+    assert (a is None) == (b is None), case
+    assert c is None or a is not None, case
     if a is None:
         return
-    assert a.status == b.status == c.status and da == db == dc, (case, da, db, dc)
+    assert a.status == b.status and da == db, (case, da, db)
+    if c is not None:
+        assert (dc or 16) <= (da or 16), (case, da, dc)
     np.testing.assert_array_equal(b.position(joint), a.position(joint) * 2.0 ** k)
     np.testing.assert_array_equal(b.acceleration(joint), a.acceleration(joint) * 2.0 ** k)
 
