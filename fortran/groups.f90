@@ -542,7 +542,8 @@ contains
     ! the Coriolis term 2 w (s2' nm + s3' ns) is 2 w k x vr: computed so, it is known to
     ! rounding, where s2', s3' each grow as 1/t2 and cancel
     ar = ac - agc - 2.0_dp*wm*[-vr(2), vr(1)]
-    sb = abs(ac(1)) + abs(ac(2)) + abs(agc(1)) + abs(agc(2)) + 2.0_dp*abs(wm)*(abs(vr(1)) + abs(vr(2)))
+    sb = abs(ac(1)) + abs(ac(2)) + abs(agc(1)) + abs(agc(2)) &
+         + 2.0_dp*abs(wm)*(abs(vr(1)) + abs(vr(2)))
     call kind5(t2, um, nm_, ar, 4.0_dp*uround*sb + 2.0_dp*uround*(abs(em) + wm**2)*sx, sb, &
                y1, y2, st, rel)
     if (failed(st)) return
@@ -558,8 +559,9 @@ contains
 
   ! ym um + ys us = bb (us = um turned by t2) through numerics' solve_kind5, which solves
   ! y1 e(FIM+T2) - y2 e(FIM) = b in the guide's frame: ys = y1, ym = -y2.  A slot near
-  ! +-pi is the same slot reversed: solved at t2 -+ pi (pi to twice double precision,
-  ! t2 - pi exact for |t2| > pi/2), ys negated, so that it keeps its digits as near 0
+  ! +-pi is the same slot reversed: solved at t2 -+ pi (pi to twice double precision;
+  ! t2 -+ pi_hi exact for pi/2 < |t2| <= 2 pi), ys negated: it keeps its digits as a
+  ! small t2 does (solve_kind5 takes t2 as known to an ulp, 2u pi near pi)
   pure subroutine kind5(t2, um, nm_, bb, db, sbb, ym, ys, st5, rel5)
     real(dp), intent(in) :: t2, um(2), nm_(2), bb(2), db, sbb
     real(dp), intent(out) :: ym, ys, rel5
