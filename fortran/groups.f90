@@ -448,7 +448,7 @@ contains
     real(dp), intent(in) :: xc(2), vc(2), ac(2), un(2), wn, en, offn
     real(dp), intent(out) :: xb(2), vb(2), ab(2), svm, svn, sam, san, est
     integer, intent(out) :: st
-    real(dp) :: nm_(2), nn(2), dca(2), bx, by, sb, rel
+    real(dp) :: nm_(2), nn(2), dca(2), bx, by, sb, rel, sx, exb
     real(dp) :: vgm(2), agm(2), vgn(2), agn(2), y1, y2, s2, s3, ev
     type(cram) :: f
     nm_ = [-um(2), um(1)]
@@ -456,17 +456,31 @@ contains
     dca = xc - xa
     ! nM . (B - A) = offM,  nN . (B - A) = offN + nN . (C - A)
     sb = abs(offm) + abs(offn) + abs(dca(1)) + abs(dca(2))
+    ! C - A carries the rounding of the coordinates it is the difference of (far from the
+    ! origin more than its own), and so do B - A, B - C in the velocities below: u sx,
+    ! sx = the coordinates' size beyond the group's (as rrr_kernel widens its estimate)
+    sx = max(0.0_dp, abs(xa(1)) + abs(xa(2)) + abs(xc(1)) + abs(xc(2)) - sb)
     call solve2e(nm_(1), nm_(2), nn(1), nn(2), offm, offn + nn(1)*dca(1) + nn(2)*dca(2), &
-                 4.0_dp*uround, 4.0_dp*uround*sb, sb, bx, by, st, est)
+                 4.0_dp*uround, 4.0_dp*uround*sb + 2.0_dp*uround*sx, sb, bx, by, st, est)
     if (failed(st)) return
     xb = xa + [bx, by]
     if (level < 2) return
+    ! B's absolute error (solve2e's est is relative to max(|B - A|, sb/|A|_F), |A|_F =
+    ! sqrt(2) for unit vectors)
+    exb = est*max(norm2d(bx, by), sb/sqrt(2.0_dp))
     call carried(xa, va, aa, wm, em, xb, vgm, agm)
     call carried(xc, vc, ac, wn, en, xb, vgn, agn)
+    ! the matrix is the guides' directions, exact to rounding whatever B's error (4u);
+    ! B's error enters the right-hand side as (wN - wM) k x dB, the coordinates' rounding
+    ! through B - A and B - C
     call cramer_set(um(1), -un(1), um(2), -un(2), f, 1.0_dp, 1.0_dp)
-    sb = abs(vgm(1)) + abs(vgm(2)) + abs(vgn(1)) + abs(vgn(2))
-    call cramer(f, vgn(1) - vgm(1), vgn(2) - vgm(2), est + 4.0_dp*uround, &
-                4.0_dp*uround*sb, sb, s2, s3, st, rel)
+    ! the size of the terms vG = v + w k x (B - P) (their sum may cancel: B at rest)
+    sb = abs(va(1)) + abs(va(2)) + abs(vc(1)) + abs(vc(2)) &
+         + abs(wm)*(abs(xb(1) - xa(1)) + abs(xb(2) - xa(2))) &
+         + abs(wn)*(abs(xb(1) - xc(1)) + abs(xb(2) - xc(2)))
+    call cramer(f, vgn(1) - vgm(1), vgn(2) - vgm(2), 4.0_dp*uround, &
+                4.0_dp*uround*sb + abs(wn - wm)*exb + 2.0_dp*uround*(abs(wm) + abs(wn))*sx, &
+                sb, s2, s3, st, rel)
     if (failed(st)) return
     est = max(est, rel)
     svm = s2
@@ -474,10 +488,15 @@ contains
     vb = vgm + s2*um
     if (level < 3) return
     ev = abs_err(f, s2, s3, sb, rel)
+    sb = abs(aa(1)) + abs(aa(2)) + abs(ac(1)) + abs(ac(2)) &
+         + (abs(em) + wm**2)*(abs(xb(1) - xa(1)) + abs(xb(2) - xa(2))) &
+         + (abs(en) + wn**2)*(abs(xb(1) - xc(1)) + abs(xb(2) - xc(2))) &
+         + 2.0_dp*(abs(wn*s3) + abs(wm*s2))
     call cramer(f, agn(1) + 2.0_dp*wn*s3*nn(1) - agm(1) - 2.0_dp*wm*s2*nm_(1), &
                 agn(2) + 2.0_dp*wn*s3*nn(2) - agm(2) - 2.0_dp*wm*s2*nm_(2), &
-                est + 4.0_dp*uround, 4.0_dp*uround*(sb + abs(wn*s3) + abs(wm*s2)) &
-                + 2.0_dp*(abs(wn) + abs(wm))*ev, sb, y1, y2, st, rel)
+                4.0_dp*uround, 4.0_dp*uround*sb + 2.0_dp*(abs(wn) + abs(wm))*ev &
+                + (abs(en - em) + abs(wn**2 - wm**2))*exb &
+                + 2.0_dp*uround*(abs(em) + abs(en) + wm**2 + wn**2)*sx, sb, y1, y2, st, rel)
     if (failed(st)) return
     est = max(est, rel)
     sam = y1
@@ -503,53 +522,77 @@ contains
     real(dp), intent(in) :: xc(2), vc(2), ac(2)
     real(dp), intent(out) :: xk(2), vk(2), ak(2), us(2), sk, sc, svk, svc, sak, sac, est
     integer, intent(out) :: st
-    real(dp) :: nm_(2), ns_(2), dca(2), s2, s3, sb, rel
+    real(dp) :: nm_(2), dca(2), s2, s3, sb, rel, vr(2), ar(2), ex, sx
     real(dp) :: vgc(2), agc(2), vgk(2), agk(2), y1, y2, d2, d3, ev
     us = [um(1)*ct2 - um(2)*st2, um(2)*ct2 + um(1)*st2]
     nm_ = [-um(2), um(1)]
-    ns_ = [-us(2), us(1)]
     dca = xc - xa
     sb = abs(dca(1)) + abs(dca(2))
+    ! C - A carries the rounding of the coordinates far from the origin (as prp_kernel):
+    ! u sx, sx = their size beyond the group's; C - A again in the velocities below
+    sx = max(0.0_dp, abs(xa(1)) + abs(xa(2)) + abs(xc(1)) + abs(xc(2)) - sb)
     ! s2 um + s3 us = C - A, solved in the frame of the guide (DPRM5's solve_kind5: a
     ! small T2 keeps its digits)
-    call kind5(t2, um, nm_, dca, 4.0_dp*uround*sb, sb, s2, s3, st, est)
+    call kind5(t2, um, nm_, dca, 4.0_dp*uround*sb + 2.0_dp*uround*sx, sb, s2, s3, st, est)
     if (failed(st)) return
     sk = s2
     sc = s3
     xk = xa + s2*um
     if (level < 2) return
+    ex = est*max(norm2d(s2, s3), sb)       ! K's absolute error along the guide
     call carried(xa, va, aa, wm, em, xc, vgc, agc)
     call carried(xa, va, aa, wm, em, xk, vgk, agk)
+    ! C's velocity relative to the guide's link: vr = s2' um + s3' us
+    vr = vc - vgc
     sb = abs(vc(1)) + abs(vc(2)) + abs(vgc(1)) + abs(vgc(2))
-    call kind5(t2, um, nm_, vc - vgc, 4.0_dp*uround*sb, sb, d2, d3, st, rel)
+    call kind5(t2, um, nm_, vr, 4.0_dp*uround*sb + 2.0_dp*uround*abs(wm)*sx, sb, d2, d3, &
+               st, rel)
     if (failed(st)) return
-    rel = rel + est                       ! the position's error moves the system
+    rel = rel + est                       ! the position's error moves K's velocity
     est = max(est, rel)
     svk = d2
     svc = d3
     vk = vgk + d2*um
     if (level < 3) return
     ev = rel*max(norm2d(d2, d3), sb)
-    call kind5(t2, um, nm_, ac - agc - 2.0_dp*wm*(d2*nm_ + d3*ns_), &
-               4.0_dp*uround*(sb + abs(wm)*(abs(d2) + abs(d3))) + 4.0_dp*abs(wm)*ev, &
-               sb, y1, y2, st, rel)
+    ! the Coriolis term 2 w (s2' nm + s3' ns) is 2 w k x vr: computed so, it is known to
+    ! rounding, where s2', s3' each grow as 1/t2 and cancel
+    ar = ac - agc - 2.0_dp*wm*[-vr(2), vr(1)]
+    sb = abs(ac(1)) + abs(ac(2)) + abs(agc(1)) + abs(agc(2)) &
+         + 2.0_dp*abs(wm)*(abs(vr(1)) + abs(vr(2)))
+    call kind5(t2, um, nm_, ar, 4.0_dp*uround*sb + 2.0_dp*uround*(abs(em) + wm**2)*sx, sb, &
+               y1, y2, st, rel)
     if (failed(st)) return
-    est = max(est, rel + est)
+    ! K's acceleration agk + s2'' um + 2 w s2' nm: the errors of s2' and of K, relative
+    ! to the size of its terms
+    rel = rel + (2.0_dp*abs(wm)*ev + (abs(em) + wm**2)*ex)/max(norm2d(y1, y2), sb, &
+                 abs(agk(1)) + abs(agk(2)) + 2.0_dp*abs(wm*d2))
+    est = max(est, rel)
     sak = y1
     sac = y2
     ak = agk + y1*um + 2.0_dp*wm*d2*nm_
   end subroutine rpp_kernel
 
   ! ym um + ys us = bb (us = um turned by t2) through numerics' solve_kind5, which solves
-  ! y1 e(FIM+T2) - y2 e(FIM) = b in the guide's frame: ys = y1, ym = -y2
+  ! y1 e(FIM+T2) - y2 e(FIM) = b in the guide's frame: ys = y1, ym = -y2.  A slot near
+  ! +-pi is the same slot reversed: solved at t2 -+ pi (pi to twice double precision;
+  ! t2 -+ pi_hi exact for pi/2 < |t2| <= 2 pi), ys negated: it keeps its digits as a
+  ! small t2 does (solve_kind5 takes t2 as known to an ulp, 2u pi near pi)
   pure subroutine kind5(t2, um, nm_, bb, db, sbb, ym, ys, st5, rel5)
     real(dp), intent(in) :: t2, um(2), nm_(2), bb(2), db, sbb
     real(dp), intent(out) :: ym, ys, rel5
     integer, intent(out) :: st5
-    real(dp) :: z1, z2
-    call solve_kind5(t2, bb(1)*um(1) + bb(2)*um(2), bb(1)*nm_(1) + bb(2)*nm_(2), db, &
+    real(dp), parameter :: pi_hi = 3.141592653589793_dp, pi_lo = 1.2246467991473532e-16_dp
+    real(dp) :: z1, z2, tr, sgn
+    tr = t2
+    sgn = 1.0_dp
+    if (abs(t2) > 0.5_dp*pi_hi) then
+      tr = (t2 - sign(pi_hi, t2)) - sign(pi_lo, t2)
+      sgn = -1.0_dp
+    end if
+    call solve_kind5(tr, bb(1)*um(1) + bb(2)*um(2), bb(1)*nm_(1) + bb(2)*nm_(2), db, &
                      sbb, z1, z2, st5, rel5)
-    ys = z1
+    ys = sgn*z1
     ym = -z2
   end subroutine kind5
 
