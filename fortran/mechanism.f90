@@ -545,6 +545,7 @@ contains
       dir = 0.0_dp
       ty = kind_pairs(:, kind)
       frl = 0
+      pt = pb                               ! (kinds 1-5 only reach here: gslot > 0)
       select case (kind)
       case (1)
         pt = [pa, pb, pc]
