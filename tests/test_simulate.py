@@ -181,3 +181,67 @@ def test_a_loose_tolerance_does_not_lose_a_branch_change():
     exact, _, _ = machines.four_bar_exact(1, t)
     sim = m.simulate(t, phi0=math.pi / 2, omega0=1.0, gravity=G, rtol=1e-4)
     assert np.max(np.abs(sim.phi - exact)) < 1e-7
+
+
+def _flywheel(J):
+    """A crank carrying a disc of inertia J about its pivot (no gravity load)."""
+    m = sarkp.Mechanism()
+    m.fixed("O", 0.0, 0.0)
+    m.crank("A", "O", 0.5)
+    m.mass("O", "A", mass=1.0, inertia=J, centre=0.0)
+    return m
+
+
+def test_stall_against_coulomb_friction():
+    """A flywheel J = 2 at 3 rad/s, a motor torque of 1 N m against dry friction of 3 N m
+    (a load of omega, zero at rest): it slows at (1 - 3)/2 = -1 rad/s^2, stops at t = 3 s,
+    phi = 4.5 rad, and the friction holds it there (the motor is weaker): a stall event
+    at that time and angle, status "stalled", rest afterwards -- not a crash."""
+    m = _flywheel(2.0)
+    m.torque("O", "A", lambda phi, omega: 1.0 - 3.0 * np.sign(omega))
+    t = np.linspace(0.0, 5.0, 11)
+    sim = m.simulate(t, phi0=0.0, omega0=3.0, rtol=1e-10)
+    assert sim.status == "stalled"
+    (stall,) = sim.events_of("stall")
+    assert abs(stall.t - 3.0) < 1e-8 and abs(stall.phi - 4.5) < 1e-8
+    moving = t < 3.0
+    assert np.max(np.abs(sim.phi[moving] - (3.0 * t - 0.5 * t**2)[moving])) < 1e-9
+    assert np.max(np.abs(sim.omega[moving] - (3.0 - t)[moving])) < 1e-9
+    assert np.all(sim.phi[~moving] == stall.phi) and np.all(sim.omega[~moving] == 0.0)
+    assert not sim.events_of("turning point")
+
+
+def test_stall_against_a_one_way_load():
+    """A 1 m pendulum released from the horizontal (phi = pi) with a pawl: a torque of
+    2 m g L against any backward turning (a one-way load of omega).  Forward it swings
+    freely (the Jacobi solution, mirrored), reaches the far horizontal phi = 2 pi at
+    the half period 2 K(1/2)/sqrt(g), where gravity would turn it back: the pawl holds
+    it -- a stall at that time and angle."""
+    m = machines.pendulum()
+    m.torque("O", "P", lambda phi, omega: np.where(omega < 0.0, 2.0 * G, 0.0))
+    t = np.linspace(0.0, 2.0, 21)
+    sim = m.simulate(t, phi0=math.pi, omega0=0.0, gravity=G, rtol=1e-10)
+    half = 2 * float(mp.ellipk(0.5)) / math.sqrt(G)
+    assert sim.status == "stalled"
+    (stall,) = sim.events_of("stall")
+    assert abs(stall.t - half) < 1e-8 and abs(stall.phi - 2 * math.pi) < 1e-8
+    moving = t < half
+    exact = math.pi - machines.pendulum_exact(t[moving])
+    assert np.max(np.abs(sim.phi[moving] - exact)) < 1e-9
+    assert np.all(sim.phi[~moving] == stall.phi)
+
+
+def test_time_dependent_load():
+    """A flywheel J = 2 from rest under the torque M(t) = cos(t): omega = sin(t)/2,
+    phi = (1 - cos t)/2 (the load's t is the simulation's time), turning back at
+    t = k pi."""
+    m = _flywheel(2.0)
+    m.torque("O", "A", lambda phi, omega, t: np.cos(t))
+    t = np.linspace(0.0, 10.0, 21)
+    sim = m.simulate(t, rtol=1e-10)
+    assert np.max(np.abs(sim.phi - 0.5 * (1.0 - np.cos(t)))) < 1e-9
+    assert np.max(np.abs(sim.omega - 0.5 * np.sin(t))) < 1e-9
+    turns = sim.events_of("turning point")
+    assert len(turns) == 3 and sim.status == "ok"
+    for k, e in enumerate(turns, start=1):
+        assert abs(e.t - k * math.pi) < 1e-8 and abs(e.epsilon - 0.5 * (-1) ** k) < 1e-8

@@ -1071,6 +1071,9 @@ class _Machine:
         # the groups whose branch follows the motion: (B, A, C) of each rrr group
         self.groups = _groups(self.m)
         self._cfg = None
+        # loads that are callables (of phi, omega, t): the solves pass t, and the
+        # patches near a crossing take M_red at each stage's own omega and t
+        self.dynamic = bool(self.m._tables()["dynamic"])
 
     def config(self):
         if self._cfg is None:
@@ -1094,7 +1097,8 @@ class _Machine:
             warnings.simplefilter("ignore", self._warning)
             try:
                 return self.m.solve(phi, omega=omega, epsilon=0.0, need=need,
-                                    gravity=self.gravity)
+                                    gravity=self.gravity,
+                                    t=t if self.dynamic else None)
             except self._errors as e:
                 raise _Failed(str(e)) from e
 
@@ -1193,19 +1197,34 @@ class _Crossing:
     ``phi``; ``side`` is the side the motion is on (+1: phi > it); J, J', M_red near it
     from the samples (nodes, values)."""
 
-    def __init__(self, phi, side, groups, nodes, values):
+    def __init__(self, phi, side, groups, nodes, values, cfgs):
         self.phi, self.side, self.groups = phi, side, groups
         self.nodes, self.values = nodes, values
+        self.cfgs = cfgs                  # the branches of the two halves of the nodes
         self.bary = np.array([1.0 / np.prod(x - np.delete(nodes, j))
                               for j, x in enumerate(nodes)])
 
     def passed(self, phi):
         return (phi - self.phi) * self.side < 0.0
 
-    def patch(self, phi):
-        """(J, J', M_red) at the angles phi (interpolated)."""
+    def patch(self, phi, mach=None, omega=None, t=None):
+        """(J, J', M_red) at the angles phi (interpolated); with loads that depend on
+        omega or t (mach.dynamic), M_red from the nodes solved at each state's own
+        omega and t."""
         L = _lagrange(phi, self.nodes, self.bary)
-        return (L @ self.values).T
+        J, Jp, M = (L @ self.values).T
+        if mach is not None and mach.dynamic:
+            k, half = len(phi), len(self.nodes) // 2
+            Mn = np.empty((k, len(self.nodes)))
+            for part, cfg in ((slice(0, half), self.cfgs[0]),
+                              (slice(half, None), self.cfgs[1])):
+                nodes = self.nodes[part]
+                mach.set_config(cfg)
+                r = mach.solve(np.tile(nodes, k), np.repeat(omega, len(nodes)),
+                               np.repeat(t, len(nodes)), "forces")
+                Mn[:, part] = r.reduced_moment.reshape(k, len(nodes))
+            M = np.sum(L * Mn, axis=1)
+        return J, Jp, M
 
 
 def _flip(cfg, groups):
@@ -1241,7 +1260,7 @@ def _rhs(mach, base, crossings, ph, om, ts, y):
     for cr in crossings:
         near = np.abs(ph - cr.phi) < _ZONE
         if near.any():
-            J, Jp, M = cr.patch(ph[near])
+            J, Jp, M = cr.patch(ph[near], mach, om[near], ts[near])
             F[near] = (M - 0.5 * Jp * om[near] ** 2) / J
             zone |= near
     parts = []
@@ -1287,7 +1306,8 @@ def _crossing(mach, base, groups, rough, side):
             for res in (rn, rf):
                 J, Mr, Mb = res.reduced_inertia, res.reduced_moment, res.balancing_moment
                 vals.append(np.stack((J, 2.0 * (Mb + Mr), Mr), axis=1))
-            return _Crossing(float(star), side, list(groups), x, np.concatenate(vals))
+            return _Crossing(float(star), side, list(groups), x, np.concatenate(vals),
+                             (base, _flip(base, groups)))
         rough = star
     return None
 
@@ -1383,7 +1403,8 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
     base = start_cfg                          # the branches at phi = y
     status = "ok"
     steps = rejected = in_row = 0
-    stall = _stall_check(mach, y, w, e, wref, start_cfg)
+    h_acc = h
+    stall = _stall_check(mach, y, w, e, wref, start_cfg, tcur)
     if stall:
         events.append(Event("stall", tcur, y, 0.0, 0.0, "at rest and held there by "
                                                         "the loads"))
@@ -1432,6 +1453,35 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
         if not ok:
             rejected += 1
             in_row += 1
+            tau = _stop_ahead(w, e, h, F, c, b, bary, a1) if mach.dynamic else None
+            if tau is not None:
+                # the trial step passes a stop of the crank, where a load of omega (dry
+                # friction, a pawl) may jump: step to the stop it predicts; once the
+                # stop is nearer than rounding, stop there (a stall or a turning point)
+                if abs(w) > 1e-3 * rtol * wref and tau * h > 1e-12 * span:
+                    h *= tau
+                    continue
+                dt = -w / e if e * w < 0.0 else tau * h
+                ts_, ys_ = float(tcur + dt), float(y + w * dt + 0.5 * e * dt * dt)
+                ke = ko + int(np.searchsorted(t_out[ko:], ts_, side="left"))
+                d_ = t_out[ko:ke] - tcur
+                phi_o[ko:ke], om_o[ko:ke], ep_o[ko:ke] = y + w * d_ + 0.5 * e * d_**2, \
+                    w + e * d_, e
+                ko = ke
+                cfg = _stage_configs(base, crossings, [ys_])[0]
+                held, after = _at_rest(mach, ys_, wref, cfg, ts_, -1.0 if w > 0 else 1.0)
+                if held:
+                    events.append(Event("stall", ts_, ys_, 0.0, 0.0,
+                                        "stopped and held at rest by the loads"))
+                    phi_o[ko:], om_o[ko:], ep_o[ko:] = ys_, 0.0, 0.0
+                    ko, status = n, "stalled"
+                    break
+                events.append(Event("turning point", ts_, ys_, 0.0, after,
+                                    "omega = 0, epsilon != 0: the crank turns back"))
+                tcur, y, w, e = ts_, ys_, 0.0, after
+                F = np.full(s, e)
+                h, in_row = h_acc, 0
+                continue
             h *= 0.5 if not math.isfinite(err) else max(0.2, 0.8 * err ** (-1.0 / s))
             if h < 1e-12 * span or in_row > 40:
                 raise RangeError(f"simulate: the step size fell to {h!r} s at t = {tcur!r}, "
@@ -1441,6 +1491,7 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
             continue
         steps += 1
         in_row = 0
+        h_acc = h
         t1 = tcur + h
 
         def at(tau, F=F, y=y, w=w, h=h):
@@ -1464,7 +1515,8 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
                 tau = _root(lambda u: float(at(u)[1]), taus[i], taus[i + 1], a_)
                 pt, _, et = (float(v) for v in at(tau))
                 tt = float(tcur + tau * h)
-                if _stall_check(mach, pt, 0.0, et, wref, _stage_configs(base, crossings, [pt])[0]):
+                if _stall_check(mach, pt, 0.0, et, wref,
+                                _stage_configs(base, crossings, [pt])[0], tt):
                     events.append(Event("stall", tt, pt, 0.0, 0.0,
                                         "stopped and held at rest by the loads"))
                     stop = (tau, pt)
@@ -1483,7 +1535,7 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
             ko = ke
         if stop is not None:
             phi_o[ko:], om_o[ko:], ep_o[ko:] = stop[1], 0.0, 0.0
-            status = "stalled"
+            ko, status = n, "stalled"
             break
         # branches: the crossings passed in this step take effect
         cfg = base
@@ -1540,18 +1592,45 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
                       stats, mach.m, mach.gravity)
 
 
-def _stall_check(mach, phi, w, e, wref, cfg):
-    """At rest (w = 0): whether the loads hold the crank there -- epsilon just after
-    the stop, on either side, points back to rest (or is zero)."""
+def _stall_check(mach, phi, w, e, wref, cfg, t):
+    """At rest (w = 0) at time t: whether the loads hold the crank there -- epsilon
+    just after the stop, on either side, points back to rest (or is zero)."""
     if w != 0.0:
         return False
+    return _at_rest(mach, phi, wref, cfg, t, 1.0)[0]
+
+
+def _at_rest(mach, phi, wref, cfg, t, going):
+    """At rest at (phi, t): (held, epsilon as the crank starts to move in the
+    direction ``going``, +1 or -1) -- held: epsilon just after the stop, on either
+    side, points back to rest (or is zero)."""
     d = 1e-9 * wref
-    cfgs = [cfg, cfg]
     try:
-        ee = mach.epsilon(np.array([phi, phi]), np.array([d, -d]), np.zeros(2), cfgs)[0]
+        ee = mach.epsilon(np.array([phi, phi]), np.array([d, -d]), np.full(2, t),
+                          [cfg, cfg])[0]
     except _Failed:
-        return False
-    return bool(ee[0] <= 0.0 <= ee[1])
+        return False, 0.0
+    return bool(ee[0] <= 0.0 <= ee[1]), float(ee[0] if going > 0 else ee[1])
+
+
+def _stop_ahead(w, e, h, F, c, b, bary, a1):
+    """Where a trial step (its stage values F) brings the crank to a stop: the fraction
+    of the step at which its omega reaches zero, None if it keeps its sign."""
+    if w == 0.0 or not np.isfinite(F).all():
+        return None
+    taus = np.concatenate(([0.0], c, [1.0]))
+    wt = np.concatenate(([w], w + h * (a1 @ F), [w + h * float(b @ F)]))
+    cross = np.flatnonzero(wt * w <= 0.0)
+    if not cross.size:
+        return None
+    k = int(cross[0])
+
+    def omega(u):
+        return w + h * float((_integrals([u], c, b, bary)[1] @ F)[0])
+    tau = _root(omega, taus[k - 1], taus[k], wt[k - 1])
+    if not 0.0 < tau < 1.0 and e * w < 0.0:
+        tau = -w / (e * h)
+    return min(max(tau, 1e-3), 0.9)
 
 
 def _predict(mach, base, crossings, parts, ph, y1, reach):
