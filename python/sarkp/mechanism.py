@@ -453,14 +453,16 @@ class Mechanism:
         """Set the branch (+1 or -1) of the group that places joint ``B``."""
         who = f"set_branch({B!r})"
         q = _branch(who, branch)
-        for kind, _, reals, name in self._steps:
+        for k, (kind, _, reals, name) in enumerate(self._steps):
             if name == B and 1 <= kind <= 5:
                 slot = self._BRANCH_SLOT.get(kind)
                 if slot is None:
                     raise ValueError(f"{who}: a {('prp', 'rpp')[kind - 4]} group has one "
                                      f"position, no branch")
                 reals[slot] = q
-                self._cache = None
+                tab = getattr(self, "_cache", None)
+                if tab is not None:         # only the group's reals depend on it
+                    tab["gr"][slot, k] = q
                 return
         raise ValueError(f"{who}: no group places joint {B!r}")
 
