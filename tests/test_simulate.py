@@ -245,3 +245,107 @@ def test_time_dependent_load():
     assert len(turns) == 3 and sim.status == "ok"
     for k, e in enumerate(turns, start=1):
         assert abs(e.t - k * math.pi) < 1e-8 and abs(e.epsilon - 0.5 * (-1) ** k) < 1e-8
+
+
+def _offset_slider_crank():
+    """Crank 1 m about O, rod 1.5 m, the slider B on the line y = 0.5 (offset 0.5 from
+    the guide y = 0 through K = O): at phi = -pi/2 the rod stands normal to the guide,
+    a toggle the crank passes (A is then 1.5 m from the slider's line)."""
+    m = sarkp.Mechanism()
+    m.fixed("O", 0.0, 0.0)
+    m.fixed("K", 0.0, 0.0)
+    m.crank("A", "O", 1.0)
+    m.rrp("B", "A", "K", 0.0, 1.5, branch=1, offset=0.5)
+    m.mass("O", "A", mass=0.0, inertia=1.0, centre=0.0)
+    m.mass("B", mass=1.0)
+    return m
+
+
+def _slider_x(phi, lib=np):
+    """B's x on the continuous motion: (x - cos phi)^2 = 2.25 - (sin phi - 0.5)^2
+    = 2 sin^2(phi/2 + pi/4) (2 - sin phi), the root analytic in phi (period 4 pi)."""
+    return lib.cos(phi) + lib.sqrt(2) * lib.sin(phi / 2 + lib.pi / 4) * \
+        lib.sqrt(2 - lib.sin(phi))
+
+
+def test_rrp_group_follows_the_motion_through_its_toggle():
+    """The offset slider-crank, free (crank inertia 1, slider 1 kg, no gravity), from
+    phi = 0 at 2 rad/s: the slider passes from one geometric branch to the other at
+    every phi = 3 pi/2 (mod 2 pi).  References: B's x against the closed form of the
+    continuous motion, the times of the toggles against the energy integral t(phi) =
+    integral of sqrt(J(phi)/(2 E)) with J = 1 + x'(phi)^2 (mpmath), the energy kept."""
+    m = _offset_slider_crank()
+    t = np.linspace(0.0, 8.0, 17)
+    sim = m.simulate(t, phi0=0.0, omega0=2.0, rtol=1e-10)
+    r = sim.solve(need="forces")
+    assert np.max(np.abs(r.position("B")[:, 0] - _slider_x(sim.phi))) < 1e-9
+    assert np.max(np.abs(r.position("B")[:, 1] - 0.5)) < 1e-12
+    energy = r.reduced_inertia * sim.omega**2 / 2
+    assert np.max(np.abs(energy / energy[0] - 1.0)) < 1e-9
+    with mp.workdps(30):
+        J = lambda p: 1 + mp.diff(lambda q: _slider_x(q, mp), p) ** 2      # noqa: E731
+        E = J(0) * 2                                                       # omega0 = 2
+        when = lambda p: mp.quad(lambda q: mp.sqrt(J(q) / (2 * E)), [0, p])  # noqa: E731
+        crossings = [3 * mp.pi / 2 + 2 * k * mp.pi for k in range(2)]
+        times = [float(when(p)) for p in crossings]
+    branch = sim.events_of("branch")
+    assert sim.phi[-1] > float(crossings[-1]) and len(branch) == 2
+    for e, p, te in zip(branch, crossings, times):
+        assert abs(e.phi - float(p)) < 1e-9 and abs(e.t - te) < 1e-8
+        assert "'B'" in e.note
+    assert [b[1] for b in sim.branches] == [(1,), (-1,), (1,)]
+    assert m.branch("B") == 1
+
+
+def test_rpr_group_follows_the_motion_through_its_change_point():
+    """A crank 1 m about O and a slotted link 3 about C = (1.5, 0) whose axis passes 0.5
+    m from the crank pin (rpr, h = 0.5): at phi = 0 (mod 2 pi) the pin comes within 0.5
+    m of C, B (the foot of the perpendicular) passes through C, and the continuous motion
+    takes the other geometric branch.  References: the energy kept (crank and link 3,
+    inertia 1 each, no loads), link 3's axis turning continuously (mod pi), B always
+    0.5 m from A and on the axis through C."""
+    m = sarkp.Mechanism()
+    m.fixed("O", 0.0, 0.0)
+    m.fixed("C", 1.5, 0.0)
+    m.crank("A", "O", 1.0)
+    m.rpr("B", "A", "C", 0.5, math.pi / 2, branch=1)
+    m.mass("O", "A", mass=0.0, inertia=1.0, centre=0.0)
+    m.mass("C", "B", mass=0.0, inertia=1.0, centre=0.0)
+    t = np.linspace(0.0, 8.0, 33)
+    sim = m.simulate(t, phi0=math.pi / 2, omega0=2.0, rtol=1e-10)
+    branch = sim.events_of("branch")
+    assert len(branch) == 2 and sim.status == "ok"
+    for e, k in zip(branch, (1, 2)):
+        assert abs(e.phi - 2 * k * math.pi) < 1e-9
+    r = sim.solve(need="forces")
+    energy = r.reduced_inertia * sim.omega**2 / 2
+    assert np.max(np.abs(energy / energy[0] - 1.0)) < 1e-9
+    # the axis's direction mod pi moves by less than 0.6 rad between outputs
+    step = np.diff(r.angle("C", "B"))
+    assert np.max(np.abs((step + math.pi / 2) % math.pi - math.pi / 2)) < 0.6
+    a, b = r.position("A"), r.position("B")
+    assert np.max(np.abs(np.hypot(*(b - a).T) - 0.5)) < 1e-9
+    d = b - [1.5, 0.0]
+    assert np.max(np.abs(d[:, 0] * (b - a)[:, 0] + d[:, 1] * (b - a)[:, 1])) < 1e-9
+
+
+def test_set_branch_after_a_solve_takes_effect():
+    """set_branch updates the cached tables in place (simulate flips branches often):
+    the next solve gives the other root, B mirrored in the line A -> C."""
+    m = sarkp.Mechanism()
+    m.fixed("O", 0.0, 0.0)
+    m.fixed("C", 0.4, 0.0)
+    m.crank("A", "O", 0.1)
+    m.rrr("B", "A", "C", 0.35, 0.3, branch=1)
+    phi = np.linspace(0.0, 2 * math.pi, 7)
+    up = m.solve(phi, need="positions")
+    b1, a = up.position("B"), up.position("A")
+    m.set_branch("B", -1)
+    b2 = m.solve(phi, need="positions").position("B")
+    u = np.array([0.4, 0.0]) - a
+    u /= np.hypot(*u.T)[:, None]
+    d = b1 - a
+    mirror = a + 2 * (d * u).sum(axis=1)[:, None] * u - d
+    assert np.max(np.abs(b2 - mirror)) < 1e-14
+    m.set_branch("B", 1)
+    assert np.array_equal(m.solve(phi, need="positions").position("B"), b1)

@@ -1068,8 +1068,10 @@ class _Machine:
         self.points = 0
         self._errors = (SarkpError, FloatingPointError)
         self._warning = SignificanceWarning
-        # the groups whose branch follows the motion: (B, A, C) of each rrr group
+        # the groups whose branch follows the motion: (B, A, C) of each rrr and rpr
+        # group, (B, A, K) of each rrp group on a frame guide; rrp: its guide's direction
         self.groups = _groups(self.m)
+        self.rrp, self.guides = _guides(self.m)
         self._cfg = None
         # loads that are callables (of phi, omega, t): the solves pass t, and the
         # patches near a crossing take M_red at each stage's own omega and t
@@ -1142,17 +1144,31 @@ class _Machine:
         return self._cols
 
     def sides(self, r):
-        """The signed side of each rrr group (its new joint left of A->C: > 0), scaled
-        to a number of order 1, at every position of the result r."""
+        """The signed side of each group at every position of the result r, a number
+        of order 1 whose sign is the geometric branch: rrr, rpr -- B left of A->C;
+        rrp -- B ahead of the foot of the perpendicular from A along the guide."""
         n = np.size(r.phi)
         if not self.groups:
             return np.zeros((n, 0))
         P = self._joints(r, "positions")
-        b, a, c = P[:, :, 0], P[:, :, 1], P[:, :, 2]
+        return self._side(P, np.zeros_like(P))[0]
+
+    def _side(self, P, V):
+        """The side and its rate from the joints' positions P and velocities V,
+        (..., G, 3, 2) each (the rate with each group's scale held fixed)."""
+        b, a, c = P[..., 0, :], P[..., 1, :], P[..., 2, :]
         u, v = c - a, b - a
+        du, dv = V[..., 2, :] - V[..., 1, :], V[..., 0, :] - V[..., 1, :]
         lab = np.hypot(v[..., 0], v[..., 1])
-        lcb = np.hypot((b - c)[..., 0], (b - c)[..., 1])
-        return (u[..., 0] * v[..., 1] - u[..., 1] * v[..., 0]) / (lab * (lab + lcb))
+        scale = lab * (lab + np.hypot((b - c)[..., 0], (b - c)[..., 1]))
+        s = (u[..., 0] * v[..., 1] - u[..., 1] * v[..., 0]) / scale
+        ds = (du[..., 0] * v[..., 1] - du[..., 1] * v[..., 0] + u[..., 0] * dv[..., 1]
+              - u[..., 1] * dv[..., 0]) / scale
+        if self.rrp.any():
+            g = self.guides
+            s = np.where(self.rrp, (v * g).sum(axis=-1) / lab, s)
+            ds = np.where(self.rrp, (dv * g).sum(axis=-1) / lab, ds)
+        return s, ds
 
     def _joints(self, r, field):
         """The groups' (B, A, C) from a result's positions or velocities: (n, G, 3, 2)."""
@@ -1169,17 +1185,8 @@ class _Machine:
         angle phi[k] (the current branches)."""
         r = self.solve(np.asarray(phi, dtype=float), 1.0, 0.0, "velocities")
         rows = np.arange(len(groups))
-        P = self._joints(r, "positions")[rows, groups]             # (n, 3, 2)
-        V = self._joints(r, "velocities")[rows, groups]
-        b, a, c = P[:, 0], P[:, 1], P[:, 2]
-        vb, va, vc = V[:, 0], V[:, 1], V[:, 2]
-        u, v, du, dv = c - a, b - a, vc - va, vb - va
-        lab = np.hypot(v[:, 0], v[:, 1])
-        scale = lab * (lab + np.hypot(*(b - c).T))
-        s = (u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]) / scale
-        ds = (du[:, 0] * v[:, 1] - du[:, 1] * v[:, 0] + u[:, 0] * dv[:, 1]
-              - u[:, 1] * dv[:, 0]) / scale
-        return s, ds
+        s, ds = self._side(self._joints(r, "positions"), self._joints(r, "velocities"))
+        return s[rows, groups], ds[rows, groups]
 
 
 # Near a toggle or a change point the group kernels lose digits (positions as eps/d,
@@ -1548,7 +1555,7 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
                 names = ", ".join(repr(mach.groups[j][0]) for j in cr.groups)
                 events.append(Event(
                     "branch", float(tcur + tau * h), cr.phi, wt_, et,
-                    f"rrr group(s) {names} passed a toggle or change point (the signed "
+                    f"group(s) {names} passed a toggle or change point (the signed "
                     f"side of the new joint went through zero): the continuous motion "
                     f"takes the other geometric branch"))
                 branch_log.append((float(tcur + tau * h), cfg))
@@ -1572,7 +1579,7 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
             if S.min() < 1e-4:
                 B = mach.groups[int(S[-1].argmin())][0]
                 raise RangeError(
-                    f"simulate: the rrr group placing {B!r} reaches a toggle or change "
+                    f"simulate: the group placing {B!r} reaches a toggle or change "
                     f"point at t = {tcur!r}, phi = {y!r}: the geometric branch rule "
                     f"(branches='geometric') cannot follow the motion there; "
                     f"branches='continuous' does")
@@ -1766,10 +1773,25 @@ class _SimulationBase(Result):
                                                     paths=paths)
 
 
+def _followed(kind, ints, reals):
+    """Whether simulate follows a group's branch through toggles: rrr; rrp on a frame
+    guide; rpr with its slider off link 3's axis (h != 0: else B = A, no branch)."""
+    return kind == 1 or (kind == 2 and ints[5] == 0) or \
+        (kind == 3 and np.all(np.asarray(reals[0]) != 0.0))
+
+
 def _groups(m):
     names = {i: nm for nm, i in m._points.items()}
-    return [(B, names[ints[1]], names[ints[2]]) for kind, ints, _, B in m._steps
-            if kind == 1]
+    return [(B, names[ints[1]], names[ints[2]]) for kind, ints, reals, B in m._steps
+            if _followed(kind, ints, reals)]
+
+
+def _guides(m):
+    """For the followed groups: which are rrp, and their guides' unit directions."""
+    rows = [(kind == 2, (float(reals[2]), float(reals[3])) if kind == 2 else (0.0, 0.0))
+            for kind, ints, reals, _ in m._steps if _followed(kind, ints, reals)]
+    return (np.array([r[0] for r in rows], dtype=bool),
+            np.array([r[1] for r in rows], dtype=float).reshape(-1, 2))
 
 
 Simulation = result_type(
@@ -1782,7 +1804,8 @@ Simulation = result_type(
     crank's angle (rad), angular velocity (rad/s) and acceleration (rad/s^2) there;
     ``events`` -- the turning points, stalls and branch changes, in time order (each an
     :data:`Event`); ``branches`` -- ``(t, branches)`` from the start and at each branch
-    change, the branches (+1/-1) of the rrr groups in their order; ``status`` -- "ok" or
+    change, the branches (+1/-1) of the followed groups (rrr, rrp on a frame guide,
+    rpr) in their order; ``status`` -- "ok" or
     "stalled"; ``stats`` -- steps, rejected steps, mechanism calls and positions solved,
     the method's order; ``mechanism`` -- a copy of the mechanism at the start;
     ``gravity``.  ``sim.solve(need)`` gives positions and forces along the motion,
