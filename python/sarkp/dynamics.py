@@ -1319,17 +1319,52 @@ def _crossing(mach, base, groups, rough, side):
     return None
 
 
-def _root(f, a, b, fa):
-    """A root of f in [a, b] where f changes sign (bisection to rounding)."""
+_LEGENDRE = {}
+
+
+def _series(F, c):
+    """A step's F(tau) through its values at the nodes c, as a Legendre series on
+    [0, 1], and its first and second integrals from 0: cheap scalar evaluations (by
+    Clenshaw's recurrence) for the roots of omega and phi inside the step."""
+    n = len(c)
+    if _LEGENDRE.get(n) is None:            # coefficients from the Gauss rule, exact
+        x, wg = np.polynomial.legendre.leggauss(n)
+        V = np.polynomial.legendre.legvander(x, n - 1)             # V[i, k] = P_k(x_i)
+        _LEGENDRE[n] = (V * wg[:, None]).T * (np.arange(n) + 0.5)[:, None]
+    L = np.polynomial.legendre
+    a0 = _LEGENDRE[n] @ F                      # in x = 2 tau - 1: dtau = dx / 2
+    a1 = L.legint(a0, lbnd=-1.0, scl=0.5)
+    a2 = L.legint(a1, lbnd=-1.0, scl=0.5)
+    return tuple((lambda u, a=a: float(L.legval(2.0 * u - 1.0, a))) for a in (a0, a1, a2))
+
+
+def _root(f, a, b, fa, df=None):
+    """A root of f in [a, b] where f changes sign: bisection to rounding, or with the
+    derivative df Newton's method kept inside the bracket (bisecting where it leaves)."""
+    x = 0.5 * (a + b)
     for _ in range(200):
-        mid = 0.5 * (a + b)
-        if not a < mid < b:
+        if not a < x < b:
             break
-        fm = f(mid)
-        if (fm > 0.0) == (fa > 0.0) and fm != 0.0:
-            a, fa = mid, fm
+        fx = f(x)
+        if fx == 0.0:
+            return x
+        if (fx > 0.0) == (fa > 0.0):
+            a, fa = x, fx
         else:
-            b = mid
+            b = x
+        mid = 0.5 * (a + b)
+        if df is None:
+            x = mid
+            continue
+        d = df(x)
+        step = fx / d if d != 0.0 else math.inf
+        new = x - step
+        if not a < new < b:
+            x = mid
+        elif abs(step) <= 1e-15 * max(abs(x), 1e-300) + 1e-300:
+            return new
+        else:
+            x = new
     return 0.5 * (a + b)
 
 
@@ -1352,6 +1387,10 @@ def _check_time(who, t):
         raise ValueError(f"{who}: t must be strictly increasing: t[{k + 1}] = "
                          f"{float(t[k + 1])!r} <= t[{k}] = {float(t[k])!r}")
     return t
+
+
+# with groups followed, steps of looser tolerances can leap past a crossing's warning
+_FOLLOW_RTOL = 1e-6
 
 
 def simulate(m, t, *, phi0=0.0, omega0=0.0, gravity=0.0, rtol=1e-8,
@@ -1382,7 +1421,7 @@ def simulate(m, t, *, phi0=0.0, omega0=0.0, gravity=0.0, rtol=1e-8,
     if follow:
         # steps of looser tolerances can leap past a crossing's warning (a missed
         # branch change at rtol 1e-4 on the N-four-bar): at most 1e-6 then
-        rtol = min(rtol, 1e-6)
+        rtol = min(rtol, _FOLLOW_RTOL)
     with np.errstate(all="ignore"):
         return _integrate(mach, t, phi0, omega0, eps0, rtol, follow, max_steps)
 
@@ -1510,6 +1549,23 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
             out = (y + h * w * tau + h * h * (P2 @ F), w + h * (P1 @ F), L @ F)
             return tuple(v.reshape(shape) for v in out)
 
+        series = []
+
+        def omega_at(u, F=F, w=w, h=h):
+            """omega at the fraction u of the step (scalar; for root finding)."""
+            if not series:
+                series.extend(_series(F, c))
+            return w + h * series[1](u)
+
+        def phi_at(u, F=F, y=y, w=w, h=h):
+            if not series:
+                series.extend(_series(F, c))
+            return y + h * w * u + h * h * series[2](u)
+
+        def rates(u, which, h=h):
+            """d(omega)/du (which 1) or d(phi)/du (which 2) at u."""
+            return h * series[0](u) if which == 1 else h * omega_at(u)
+
         # turning points and stalls: omega's sign changes inside the step
         taus = np.concatenate(([0.0], c, [1.0]))
         wt = np.concatenate(([w], w + h * (a1 @ F), [w1]))
@@ -1519,7 +1575,7 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
             if i == 0 and a_ == 0.0:
                 continue
             if (a_ > 0.0 and b_ <= 0.0) or (a_ < 0.0 and b_ >= 0.0):
-                tau = _root(lambda u: float(at(u)[1]), taus[i], taus[i + 1], a_)
+                tau = _root(omega_at, taus[i], taus[i + 1], a_, lambda u: rates(u, 1))
                 pt, _, et = (float(v) for v in at(tau))
                 tt = float(tcur + tau * h)
                 if _stall_check(mach, pt, 0.0, et, wref,
@@ -1548,7 +1604,8 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
         cfg = base
         for cr in crossings:
             if cr.passed(y1):
-                tau = _root(lambda u: float(at(u)[0]) - cr.phi, 0.0, 1.0, y - cr.phi)
+                tau = _root(lambda u: phi_at(u) - cr.phi, 0.0, 1.0, y - cr.phi,
+                            lambda u: rates(u, 2))
                 pt, wt_, et = (float(v) for v in at(tau))
                 cfg = _flip(cfg, cr.groups)
                 cr.side = -cr.side
@@ -1632,9 +1689,8 @@ def _stop_ahead(w, e, h, F, c, b, bary, a1):
         return None
     k = int(cross[0])
 
-    def omega(u):
-        return w + h * float((_integrals([u], c, b, bary)[1] @ F)[0])
-    tau = _root(omega, taus[k - 1], taus[k], wt[k - 1])
+    integral = _series(F, c)[1]
+    tau = _root(lambda u: w + h * integral(u), taus[k - 1], taus[k], wt[k - 1])
     if not 0.0 < tau < 1.0 and e * w < 0.0:
         tau = -w / (e * h)
     return min(max(tau, 1e-3), 0.9)
