@@ -1185,8 +1185,9 @@ class Mechanism:
                  branches="continuous"):
         """The motion in time under the mechanism's loads, from phi0, omega0 at t[0].
 
-        Integrates J(phi) phi'' + J'(phi) phi'^2/2 = M(phi) (masses, inertias, gravity,
-        springs, forces, torques) through reversals and from rest, by Gauss-Legendre
+        Integrates J(phi) phi'' + J'(phi) phi'^2/2 = M(phi, omega, t) (masses,
+        inertias, gravity, springs, forces, torques; loads may be callables of phi,
+        omega and t) through reversals and from rest, by Gauss-Legendre
         collocation with 8 nodes (order 16 at the step ends, 8 for the dense output,
         whose error estimate is held to rtol), each sweep of the stages one vectorised
         :meth:`solve`.  Turning points (omega = 0, epsilon != 0), stalls (at rest and
@@ -1206,9 +1207,10 @@ class Mechanism:
             groups followed through toggles (branches="continuous") at most 1e-6 is
             used: looser steps can leap past a crossing's warning.
         branches : {"continuous", "geometric"}
-            "continuous": an RRR group passing a toggle or change point takes the
-            branch with a continuous velocity (the other geometric one), a "branch"
-            event; the branch given is the start's.  "geometric": the book's rule kept
+            "continuous": an RRR group, an RRP group on a frame guide or an RPR
+            group passing a toggle or change point takes the branch with a continuous
+            velocity (the other geometric one), a "branch" event; the branch given is
+            the start's.  "geometric": the book's rule kept
             (an error at a toggle the motion passes).
 
         Returns
