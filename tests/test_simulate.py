@@ -349,3 +349,25 @@ def test_set_branch_after_a_solve_takes_effect():
     assert np.max(np.abs(b2 - mirror)) < 1e-14
     m.set_branch("B", 1)
     assert np.array_equal(m.solve(phi, need="positions").position("B"), b1)
+
+
+def test_load_of_omega_through_toggles_and_change_points():
+    """The N-four-bar (N = 1) with a damping torque -0.3 omega on the crank: its J is
+    constant, (4N + 1)/3, so phi'' = (-G cos(phi) - 0.3 phi')/J, integrated here by
+    scipy's DOP853 at rtol 1e-13 from the closed form.  The crank passes the toggle at
+    pi and the change point at 2 pi, where simulate takes J, J' and M near the crossing
+    from samples: M must be the damping at the motion's own omega (the samples are
+    taken at omega = 1)."""
+    from scipy.integrate import solve_ivp
+    N, c = 1, 0.3
+    J, Gm = (4 * N + 1) / 3, G * (3 * N + 1) / 2
+    m = machines.n_four_bar(N)
+    m.torque("O0", "A0", lambda phi, omega: -c * omega)
+    t = np.linspace(0.0, 3.0, 13)
+    sim = m.simulate(t, phi0=math.pi / 2, omega0=4.0, gravity=G, rtol=1e-10)
+    ref = solve_ivp(lambda _, y: [y[1], (-Gm * math.cos(y[0]) - c * y[1]) / J],
+                    (0.0, 3.0), [math.pi / 2, 4.0], method="DOP853", rtol=1e-13,
+                    atol=1e-13, t_eval=t)
+    assert len(sim.events_of("branch")) >= 2          # a toggle and a change point
+    assert np.max(np.abs(sim.phi - ref.y[0])) < 1e-8
+    assert np.max(np.abs(sim.omega - ref.y[1])) < 1e-8
