@@ -1499,7 +1499,7 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
         if not ok:
             rejected += 1
             in_row += 1
-            tau = _stop_ahead(w, e, h, F, c, b, bary, a1) if mach.dynamic else None
+            tau = _stop_ahead(w, e, h, F, c, b, a1) if mach.dynamic else None
             if tau is not None:
                 # the trial step passes a stop of the crank, where a load of omega (dry
                 # friction, a pawl) may jump: step to the stop it predicts; once the
@@ -1677,7 +1677,7 @@ def _at_rest(mach, phi, wref, cfg, t, going):
     return bool(ee[0] <= 0.0 <= ee[1]), float(ee[0] if going > 0 else ee[1])
 
 
-def _stop_ahead(w, e, h, F, c, b, bary, a1):
+def _stop_ahead(w, e, h, F, c, b, a1):
     """Where a trial step (its stage values F) brings the crank to a stop: the fraction
     of the step at which its omega reaches zero, None if it keeps its sign."""
     if w == 0.0 or not np.isfinite(F).all():
@@ -1688,7 +1688,6 @@ def _stop_ahead(w, e, h, F, c, b, bary, a1):
     if not cross.size:
         return None
     k = int(cross[0])
-
     integral = _series(F, c)[1]
     tau = _root(lambda u: w + h * integral(u), taus[k - 1], taus[k], wt[k - 1])
     if not 0.0 < tau < 1.0 and e * w < 0.0:
