@@ -111,13 +111,16 @@ def cases(notes):
             lk, names = bk.pylinkage_linkage("fourbar", n, ref0)
             lk.step_fast_with_kinematics(iterations=n)        # numba compiles here
             lk.step_fast(iterations=n)
+            # a linkage per case: its state goes on from call to call (a whole turn
+            # per call), the errors are those of the first turn
             lk, names = bk.pylinkage_linkage("fourbar", n, ref0)
+            lk2, _ = bk.pylinkage_linkage("fourbar", n, ref0)
             j = names.index("B")
             out.append(("positions", "pylinkage (numba)", n,
                         lambda lk=lk, n=n: lk.step_fast(iterations=n),
                         lambda r, idx=idx, j=j: _xy(r[idx, j])))
             out.append(("full", "pylinkage (numba)", n,
-                        lambda lk=lk, n=n: lk.step_fast_with_kinematics(iterations=n),
+                        lambda lk=lk2, n=n: lk.step_fast_with_kinematics(iterations=n),
                         lambda r, idx=idx, j=j: _xy(r[0][idx, j], r[1][idx, j],
                                                     r[2][idx, j])))
         notes.append(f"pylinkage {pylinkage.__version__}: B's branch from the position "
