@@ -371,3 +371,82 @@ def test_load_of_omega_through_toggles_and_change_points():
     assert len(sim.events_of("branch")) >= 2          # a toggle and a change point
     assert np.max(np.abs(sim.phi - ref.y[0])) < 1e-8
     assert np.max(np.abs(sim.omega - ref.y[1])) < 1e-8
+
+
+def _guide_on_the_crank(alpha=0.3):
+    """A rod 1.5 m about the frame pivot F = (1, 0) whose end B slides on a guide carried
+    by the crank: through O, at the angle alpha from the crank's direction, B 0.5 m off
+    its axis (along the left normal).  With psi = phi + alpha, u = (cos psi, sin psi):
+    F's distance from B's line is 0.5 + sin psi <= 1.5, so at psi = pi/2 (mod 2 pi) the
+    rod stands normal to the guide, a toggle the crank passes."""
+    m = sarkp.Mechanism()
+    m.fixed("O", 0.0, 0.0)
+    m.fixed("F", 1.0, 0.0)
+    m.crank("P", "O", 1.0)
+    m.rrp("B", "F", "O", alpha, 1.5, branch=1, offset=0.5, guide=("O", "P"))
+    m.mass("O", "P", mass=0.0, inertia=1.0, centre=0.0)
+    m.mass("B", mass=1.0)
+    return m
+
+
+def _along_guide(psi, lib=np):
+    """B's coordinate along the guide from O on the continuous motion:
+    s = cos psi + root, root^2 = 2.25 - (sin psi + 0.5)^2 = 2 sin^2(pi/4 - psi/2)
+    (2 + sin psi), the root analytic in psi (period 4 pi)."""
+    return lib.cos(psi) + lib.sqrt(2) * lib.sin(lib.pi / 4 - psi / 2) * \
+        lib.sqrt(2 + lib.sin(psi))
+
+
+def test_rrp_group_on_a_moving_guide_follows_the_motion_through_its_toggle():
+    """The guide turns with the crank (crank inertia 1, B 1 kg, no loads), from phi = 0
+    at 2 rad/s: B passes from one geometric branch to the other at every psi = pi/2
+    (mod 2 pi), where the side (B - F).u / l2 goes through zero while u turns.
+    References: B = s u + 0.5 n against the closed form s(psi); the toggle times against
+    the energy integral t(phi) = integral of sqrt(J / (2 E)), J = 1 + (s' - 0.5)^2 + s^2
+    (B's speed per unit crank rate: v_B = (s' - 0.5) u + s n), by mpmath quad; energy
+    kept.  The geometric rule (branches="geometric") stops at the toggle."""
+    alpha = 0.3
+    m = _guide_on_the_crank(alpha)
+    t = np.linspace(0.0, 4.0, 17)
+    sim = m.simulate(t, phi0=0.0, omega0=2.0, rtol=1e-10)
+    r = sim.solve(need="forces")
+    psi = sim.phi + alpha
+    u = np.stack((np.cos(psi), np.sin(psi)), axis=1)
+    n = np.stack((-np.sin(psi), np.cos(psi)), axis=1)
+    exact = _along_guide(psi)[:, None] * u + 0.5 * n
+    assert np.max(np.abs(r.position("B") - exact)) < 1e-9
+    energy = r.reduced_inertia * sim.omega**2 / 2
+    assert np.max(np.abs(energy / energy[0] - 1.0)) < 1e-9
+    with mp.workdps(30):
+        def J(p):
+            s = _along_guide(p + alpha, mp)
+            ds = mp.diff(lambda q: _along_guide(q + alpha, mp), p)
+            return 1 + (ds - mp.mpf(0.5)) ** 2 + s ** 2
+        E = J(0) * 2                                                       # omega0 = 2
+        when = lambda p: mp.quad(lambda q: mp.sqrt(J(q) / (2 * E)), [0, p])  # noqa: E731
+        crossings = [mp.pi / 2 - alpha + 2 * k * mp.pi for k in range(2)]
+        times = [float(when(p)) for p in crossings]
+    branch = sim.events_of("branch")
+    assert sim.phi[-1] > float(crossings[-1]) and len(branch) == 2
+    for e, p, te in zip(branch, crossings, times):
+        assert abs(e.phi - float(p)) < 1e-9 and abs(e.t - te) < 1e-8
+        assert "'B'" in e.note
+    assert [b[1] for b in sim.branches] == [(1,), (-1,), (1,)]
+    assert m.branch("B") == 1
+    with pytest.raises(sarkp.RangeError, match="cannot (be )?follow"):
+        m.simulate(t, phi0=0.0, omega0=2.0, rtol=1e-10, branches="geometric")
+
+
+def test_side_rate_of_a_group_on_a_moving_guide():
+    """The rate of the rrp side (B - F).u / l2 that the crossing search's Newton steps
+    use, with the guide u turning with the crank (the term (B - F).u'), against central
+    differences of the side itself."""
+    from sarkp.dynamics import _Machine
+    mach = _Machine(_guide_on_the_crank(), 0.0)
+    phi = np.array([0.2, 0.9, 1.1, 2.5, -1.0])
+    s, ds = mach.side_rate(phi, [0] * len(phi))
+    h = 1e-5
+    side = lambda p: mach.sides(mach.solve_with(p, (1,), "positions"))[:, 0]  # noqa: E731
+    numeric = (side(phi + h) - side(phi - h)) / (2 * h)
+    assert np.max(np.abs(s - side(phi))) < 1e-15
+    assert np.max(np.abs(ds - numeric)) < 1e-8

@@ -1069,9 +1069,10 @@ class _Machine:
         self._errors = (SarkpError, FloatingPointError)
         self._warning = SignificanceWarning
         # the groups whose branch follows the motion: (B, A, C) of each rrr and rpr
-        # group, (B, A, K) of each rrp group on a frame guide; rrp: its guide's direction
+        # group, (B, A, K) of each rrp group; rrp: its slider block's link, which turns
+        # with the guide (the guide's direction and its rate from the results)
         self.groups = _groups(self.m)
-        self.rrp, self.guides = _guides(self.m)
+        self.rrp, self.blocks = _guides(self.m)
         self._cfg = None
         # loads that are callables (of phi, omega, t): the solves pass t, and the
         # patches near a crossing take M_red at each stage's own omega and t
@@ -1140,7 +1141,10 @@ class _Machine:
             nop = r.positions.shape[-2]
             xy = np.array([fixed.get(nm, (0.0, 0.0)) for g in self.groups for nm in g])
             idx = np.array([moving.get(nm, nop) for g in self.groups for nm in g])
-            self._cols = (idx, xy, idx == nop)
+            links = r.columns[2]               # {link index: column}: all links stored
+            blocks = np.array([links[li] if li >= 0 else 0 for li in self.blocks],
+                              dtype=int)
+            self._cols = (idx, xy, idx == nop, blocks)
         return self._cols
 
     def sides(self, r):
@@ -1151,11 +1155,24 @@ class _Machine:
         if not self.groups:
             return np.zeros((n, 0))
         P = self._joints(r, "positions")
-        return self._side(P, np.zeros_like(P))[0]
+        return self._side(P, np.zeros_like(P), self._guide(r, False))[0]
 
-    def _side(self, P, V):
+    def _guide(self, r, rate):
+        """The rrp groups' guide directions (n, G, 2) (other groups: zeros) and, with
+        rate, their angular rates (n, G) (the slider block turns with its guide)."""
+        if not self.rrp.any():
+            return None
+        n = np.size(r.phi)
+        blocks = self._columns(r)[3]
+        D = np.asarray(r.directions).reshape(n, -1, 2)[:, blocks, :] * self.rrp[:, None]
+        if not rate:
+            return D, np.zeros(D.shape[:-1])
+        return D, np.asarray(r.omegas).reshape(n, -1)[:, blocks] * self.rrp
+
+    def _side(self, P, V, guide=None):
         """The side and its rate from the joints' positions P and velocities V,
-        (..., G, 3, 2) each (the rate with each group's scale held fixed)."""
+        (..., G, 3, 2) each (the rate with each group's scale held fixed); guide: the
+        rrp groups' guide directions and rates (:meth:`_guide`)."""
         b, a, c = P[..., 0, :], P[..., 1, :], P[..., 2, :]
         u, v = c - a, b - a
         du, dv = V[..., 2, :] - V[..., 1, :], V[..., 0, :] - V[..., 1, :]
@@ -1164,16 +1181,20 @@ class _Machine:
         s = (u[..., 0] * v[..., 1] - u[..., 1] * v[..., 0]) / scale
         ds = (du[..., 0] * v[..., 1] - du[..., 1] * v[..., 0] + u[..., 0] * dv[..., 1]
               - u[..., 1] * dv[..., 0]) / scale
-        if self.rrp.any():
-            g = self.guides
+        if guide is not None:
+            # rrp: (B - A).g / l2, g the guide's direction, turning at the rate wg
+            # (on a moving link): d g = wg k x g
+            g, wg = guide
+            dg = wg[..., None] * np.stack((-g[..., 1], g[..., 0]), axis=-1)
             s = np.where(self.rrp, (v * g).sum(axis=-1) / lab, s)
-            ds = np.where(self.rrp, (dv * g).sum(axis=-1) / lab, ds)
+            ds = np.where(self.rrp, ((dv * g).sum(axis=-1) + (v * dg).sum(axis=-1)) / lab,
+                          ds)
         return s, ds
 
     def _joints(self, r, field):
         """The groups' (B, A, C) from a result's positions or velocities: (n, G, 3, 2)."""
         n = np.size(r.phi)
-        idx, xy, frame = self._columns(r)
+        idx, xy, frame, _ = self._columns(r)
         a = getattr(r, field).reshape(n, -1, 2)
         P = np.concatenate((a, np.zeros((n, 1, 2))), axis=1)[:, idx, :]
         if field == "positions":
@@ -1185,7 +1206,8 @@ class _Machine:
         angle phi[k] (the current branches)."""
         r = self.solve(np.asarray(phi, dtype=float), 1.0, 0.0, "velocities")
         rows = np.arange(len(groups))
-        s, ds = self._side(self._joints(r, "positions"), self._joints(r, "velocities"))
+        s, ds = self._side(self._joints(r, "positions"), self._joints(r, "velocities"),
+                           self._guide(r, True))
         return s[rows, groups], ds[rows, groups]
 
 
@@ -1829,10 +1851,10 @@ class _SimulationBase(Result):
 
 
 def _followed(kind, ints, reals):
-    """Whether simulate follows a group's branch through toggles: rrr; rrp on a frame
-    guide; rpr with its slider off link 3's axis (h != 0: else B = A, no branch)."""
-    return kind == 1 or (kind == 2 and ints[5] == 0) or \
-        (kind == 3 and np.all(np.asarray(reals[0]) != 0.0))
+    """Whether simulate follows a group's branch through toggles: rrr; rrp (its guide
+    on the frame or on a moving link); rpr with its slider off link 3's axis (h != 0:
+    else B = A, no branch)."""
+    return kind in (1, 2) or (kind == 3 and np.all(np.asarray(reals[0]) != 0.0))
 
 
 def _groups(m):
@@ -1842,11 +1864,11 @@ def _groups(m):
 
 
 def _guides(m):
-    """For the followed groups: which are rrp, and their guides' unit directions."""
-    rows = [(kind == 2, (float(reals[2]), float(reals[3])) if kind == 2 else (0.0, 0.0))
+    """For the followed groups: which are rrp, and the link index of each rrp group's
+    slider block (-1 for the others): the block's direction is the guide's."""
+    rows = [ints[4] if kind == 2 else -1
             for kind, ints, reals, _ in m._steps if _followed(kind, ints, reals)]
-    return (np.array([r[0] for r in rows], dtype=bool),
-            np.array([r[1] for r in rows], dtype=float).reshape(-1, 2))
+    return np.array([r >= 0 for r in rows], dtype=bool), np.array(rows, dtype=int)
 
 
 Simulation = result_type(
@@ -1859,8 +1881,8 @@ Simulation = result_type(
     crank's angle (rad), angular velocity (rad/s) and acceleration (rad/s^2) there;
     ``events`` -- the turning points, stalls and branch changes, in time order (each an
     :data:`Event`); ``branches`` -- ``(t, branches)`` from the start and at each branch
-    change, the branches (+1/-1) of the followed groups (rrr, rrp on a frame guide,
-    rpr) in their order; ``status`` -- "ok" or
+    change, the branches (+1/-1) of the followed groups (rrr, rrp, rpr) in their
+    order; ``status`` -- "ok" or
     "stalled"; ``stats`` -- steps, rejected steps, mechanism calls and positions solved,
     the method's order; ``mechanism`` -- a copy of the mechanism at the start;
     ``gravity``.  ``sim.solve(need)`` gives positions and forces along the motion,
