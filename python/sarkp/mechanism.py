@@ -1208,9 +1208,9 @@ class Mechanism:
             used: looser steps can leap past a crossing's warning.
         branches : {"continuous", "geometric"}
             "continuous": an RRR group, an RRP group (its guide on the frame or on a
-            moving link) or an RPR group passing a toggle or change point takes the branch with a continuous
-            velocity (the other geometric one), a "branch" event; the branch given is
-            the start's.  "geometric": the book's rule kept
+            moving link) or an RPR group passing a toggle or change point takes the
+            branch with a continuous velocity (the other geometric one), a "branch"
+            event; the branch given is the start's.  "geometric": the book's rule kept
             (an error at a toggle the motion passes).
 
         Returns
