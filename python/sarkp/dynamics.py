@@ -1728,9 +1728,13 @@ def _predict(mach, base, crossings, parts, ph, y1, reach):
     for idx, r in parts:
         if last & set(np.atleast_1d(idx).tolist()):
             S[idx] = np.abs(mach.sides(r))
-    busy = {j for cr in crossings if abs(cr.phi - y1) < 4.0 * reach + _ZETA
-            for j in cr.groups}
     pa, pb = float(ph[-2]), float(ph[-1])
+    # a group is busy with a crossing ahead (or just passed); one behind the motion
+    # does not hide the group's next crossing (the N-four-bar's change point at 2 pi
+    # behind its toggle at pi: found only when a rejected step had shrunk to it)
+    ahead = 1.0 if pb >= pa else -1.0
+    busy = {j for cr in crossings if abs(cr.phi - y1) < 4.0 * reach + _ZETA
+            and (cr.phi - y1) * ahead > -_ZETA for j in cr.groups}
     sa, sb = S[-2], S[-1]
     cand, P = [], []
     for j in range(G):
@@ -1744,16 +1748,21 @@ def _predict(mach, base, crossings, parts, ph, y1, reach):
         return crossings
     guess = np.array(P)
     P = guess.copy()
+    good = np.full(len(P), y1)                 # the last angles where it assembled
     mach.set_config(base)
     for _ in range(20):
-        for _ in range(12):                            # damped: stay where it assembles
+        for _ in range(12):
+            # damped: a step past the crossing where the mechanism does not assemble
+            # on these branches goes back halfway to the last angle where it did (the
+            # N-four-bar: halving towards y1 made Newton cycle 20 times per crossing)
             try:
                 sv, dv = mach.side_rate(P, cand)
                 break
             except _Failed:
-                P = 0.5 * (P + y1)
+                P = 0.5 * (P + good)
         else:
             return crossings
+        good = P.copy()
         sv, dv = np.abs(sv), dv * np.sign(sv)
         with np.errstate(all="ignore"):
             step = np.where(dv != 0.0, sv / dv, 0.0)
