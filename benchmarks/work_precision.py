@@ -19,7 +19,9 @@ branches set from the sign of sin(phi), which scipy cannot find by itself); and
 cubic spline; pendulum: the half period t(2 pi) from the grid pi .. 2 pi, whose end is a
 turning point).
 
-CPU time: time.process_time, best of REPEAT runs (one for the N-four-bar), the methods of one problem
+On the pendulum (no groups, so no tolerance cap) simulate also runs at rtol 1e-2 and 1e-3.
+
+CPU time: time.process_time, best of REPEAT = 3 runs (one for the N-four-bar), the methods of one problem
 interleaved in one process.  Writes results/work_precision.csv and .png.  Run from
 outside the source tree: ``python benchmarks/work_precision.py`` (SARKP_BENCH_QUICK=1:
 fewer tolerances, one repeat).
@@ -45,7 +47,7 @@ sys.path.insert(0, str(HERE.parent / "tests"))
 import machines  # noqa: E402
 
 QUICK = os.environ.get("SARKP_BENCH_QUICK") == "1"
-REPEAT = 1 if QUICK else 2
+REPEAT = 1 if QUICK else 3
 G = 9.81
 RTOLS = (1e-4, 1e-6, 1e-8, 1e-10, 1e-12) if not QUICK else (1e-6, 1e-10)
 SCIPY = ("RK45", "DOP853", "Radau", "LSODA")
@@ -159,9 +161,13 @@ def pendulum_runs():
     t = np.linspace(0.0, 20.0, 41)
     ref = machines.pendulum_exact(t)
     rows = []
-    for rtol in RTOLS:
+    # simulate's error at rtol 1e-4 is already 1e-7 here (its estimate is of the dense
+    # output's order 8, the step ends are of order 16): looser tolerances too, for it
+    for rtol in ((1e-2, 1e-3) if not QUICK else ()) + RTOLS:
         for method in ("simulate",) + SCIPY:
             if method in ("Radau", "LSODA") and rtol < 1e-10:
+                continue
+            if method != "simulate" and rtol > 1e-4:
                 continue
             if method == "simulate":
                 sec, sim = cpu(lambda: m.simulate(t, gravity=G, rtol=rtol))

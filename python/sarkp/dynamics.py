@@ -1068,9 +1068,15 @@ class _Machine:
         self.points = 0
         self._errors = (SarkpError, FloatingPointError)
         self._warning = SignificanceWarning
-        # the groups whose branch follows the motion: (B, A, C) of each rrr group
+        # the groups whose branch follows the motion: (B, A, C) of each rrr and rpr
+        # group, (B, A, K) of each rrp group; rrp: its slider block's link, which turns
+        # with the guide (the guide's direction and its rate from the results)
         self.groups = _groups(self.m)
+        self.rrp, self.blocks = _guides(self.m)
         self._cfg = None
+        # loads that are callables (of phi, omega, t): the solves pass t, and the
+        # patches near a crossing take M_red at each stage's own omega and t
+        self.dynamic = bool(self.m._tables()["dynamic"])
 
     def config(self):
         if self._cfg is None:
@@ -1094,7 +1100,8 @@ class _Machine:
             warnings.simplefilter("ignore", self._warning)
             try:
                 return self.m.solve(phi, omega=omega, epsilon=0.0, need=need,
-                                    gravity=self.gravity)
+                                    gravity=self.gravity,
+                                    t=t if self.dynamic else None)
             except self._errors as e:
                 raise _Failed(str(e)) from e
 
@@ -1134,26 +1141,60 @@ class _Machine:
             nop = r.positions.shape[-2]
             xy = np.array([fixed.get(nm, (0.0, 0.0)) for g in self.groups for nm in g])
             idx = np.array([moving.get(nm, nop) for g in self.groups for nm in g])
-            self._cols = (idx, xy, idx == nop)
+            links = r.columns[2]               # {link index: column}: all links stored
+            blocks = np.array([links[li] if li >= 0 else 0 for li in self.blocks],
+                              dtype=int)
+            self._cols = (idx, xy, idx == nop, blocks)
         return self._cols
 
     def sides(self, r):
-        """The signed side of each rrr group (its new joint left of A->C: > 0), scaled
-        to a number of order 1, at every position of the result r."""
+        """The signed side of each group at every position of the result r, a number
+        of order 1 whose sign is the geometric branch: rrr, rpr -- B left of A->C;
+        rrp -- B ahead of the foot of the perpendicular from A along the guide."""
         n = np.size(r.phi)
         if not self.groups:
             return np.zeros((n, 0))
         P = self._joints(r, "positions")
-        b, a, c = P[:, :, 0], P[:, :, 1], P[:, :, 2]
+        return self._side(P, np.zeros_like(P), self._guide(r, False))[0]
+
+    def _guide(self, r, rate):
+        """The rrp groups' guide directions (n, G, 2) (other groups: zeros) and, with
+        rate, their angular rates (n, G) (the slider block turns with its guide)."""
+        if not self.rrp.any():
+            return None
+        n = np.size(r.phi)
+        blocks = self._columns(r)[3]
+        D = np.asarray(r.directions).reshape(n, -1, 2)[:, blocks, :] * self.rrp[:, None]
+        if not rate:
+            return D, np.zeros(D.shape[:-1])
+        return D, np.asarray(r.omegas).reshape(n, -1)[:, blocks] * self.rrp
+
+    def _side(self, P, V, guide=None):
+        """The side and its rate from the joints' positions P and velocities V,
+        (..., G, 3, 2) each (the rate with each group's scale held fixed); guide: the
+        rrp groups' guide directions and rates (:meth:`_guide`)."""
+        b, a, c = P[..., 0, :], P[..., 1, :], P[..., 2, :]
         u, v = c - a, b - a
+        du, dv = V[..., 2, :] - V[..., 1, :], V[..., 0, :] - V[..., 1, :]
         lab = np.hypot(v[..., 0], v[..., 1])
-        lcb = np.hypot((b - c)[..., 0], (b - c)[..., 1])
-        return (u[..., 0] * v[..., 1] - u[..., 1] * v[..., 0]) / (lab * (lab + lcb))
+        scale = lab * (lab + np.hypot((b - c)[..., 0], (b - c)[..., 1]))
+        s = (u[..., 0] * v[..., 1] - u[..., 1] * v[..., 0]) / scale
+        ds = (du[..., 0] * v[..., 1] - du[..., 1] * v[..., 0] + u[..., 0] * dv[..., 1]
+              - u[..., 1] * dv[..., 0]) / scale
+        if guide is not None:
+            # rrp: (B - A).g / l2, g the guide's direction, turning at the rate wg
+            # (on a moving link): d g = wg k x g
+            g, wg = guide
+            dg = wg[..., None] * np.stack((-g[..., 1], g[..., 0]), axis=-1)
+            s = np.where(self.rrp, (v * g).sum(axis=-1) / lab, s)
+            ds = np.where(self.rrp, ((dv * g).sum(axis=-1) + (v * dg).sum(axis=-1)) / lab,
+                          ds)
+        return s, ds
 
     def _joints(self, r, field):
         """The groups' (B, A, C) from a result's positions or velocities: (n, G, 3, 2)."""
         n = np.size(r.phi)
-        idx, xy, frame = self._columns(r)
+        idx, xy, frame, _ = self._columns(r)
         a = getattr(r, field).reshape(n, -1, 2)
         P = np.concatenate((a, np.zeros((n, 1, 2))), axis=1)[:, idx, :]
         if field == "positions":
@@ -1165,17 +1206,9 @@ class _Machine:
         angle phi[k] (the current branches)."""
         r = self.solve(np.asarray(phi, dtype=float), 1.0, 0.0, "velocities")
         rows = np.arange(len(groups))
-        P = self._joints(r, "positions")[rows, groups]             # (n, 3, 2)
-        V = self._joints(r, "velocities")[rows, groups]
-        b, a, c = P[:, 0], P[:, 1], P[:, 2]
-        vb, va, vc = V[:, 0], V[:, 1], V[:, 2]
-        u, v, du, dv = c - a, b - a, vc - va, vb - va
-        lab = np.hypot(v[:, 0], v[:, 1])
-        scale = lab * (lab + np.hypot(*(b - c).T))
-        s = (u[:, 0] * v[:, 1] - u[:, 1] * v[:, 0]) / scale
-        ds = (du[:, 0] * v[:, 1] - du[:, 1] * v[:, 0] + u[:, 0] * dv[:, 1]
-              - u[:, 1] * dv[:, 0]) / scale
-        return s, ds
+        s, ds = self._side(self._joints(r, "positions"), self._joints(r, "velocities"),
+                           self._guide(r, True))
+        return s[rows, groups], ds[rows, groups]
 
 
 # Near a toggle or a change point the group kernels lose digits (positions as eps/d,
@@ -1193,19 +1226,34 @@ class _Crossing:
     ``phi``; ``side`` is the side the motion is on (+1: phi > it); J, J', M_red near it
     from the samples (nodes, values)."""
 
-    def __init__(self, phi, side, groups, nodes, values):
+    def __init__(self, phi, side, groups, nodes, values, cfgs):
         self.phi, self.side, self.groups = phi, side, groups
         self.nodes, self.values = nodes, values
+        self.cfgs = cfgs                  # the branches of the two halves of the nodes
         self.bary = np.array([1.0 / np.prod(x - np.delete(nodes, j))
                               for j, x in enumerate(nodes)])
 
     def passed(self, phi):
         return (phi - self.phi) * self.side < 0.0
 
-    def patch(self, phi):
-        """(J, J', M_red) at the angles phi (interpolated)."""
+    def patch(self, phi, mach=None, omega=None, t=None):
+        """(J, J', M_red) at the angles phi (interpolated); with loads that depend on
+        omega or t (mach.dynamic), M_red from the nodes solved at each state's own
+        omega and t."""
         L = _lagrange(phi, self.nodes, self.bary)
-        return (L @ self.values).T
+        J, Jp, M = (L @ self.values).T
+        if mach is not None and mach.dynamic:
+            k, half = len(phi), len(self.nodes) // 2
+            Mn = np.empty((k, len(self.nodes)))
+            for part, cfg in ((slice(0, half), self.cfgs[0]),
+                              (slice(half, None), self.cfgs[1])):
+                nodes = self.nodes[part]
+                mach.set_config(cfg)
+                r = mach.solve(np.tile(nodes, k), np.repeat(omega, len(nodes)),
+                               np.repeat(t, len(nodes)), "forces")
+                Mn[:, part] = r.reduced_moment.reshape(k, len(nodes))
+            M = np.sum(L * Mn, axis=1)
+        return J, Jp, M
 
 
 def _flip(cfg, groups):
@@ -1241,7 +1289,7 @@ def _rhs(mach, base, crossings, ph, om, ts, y):
     for cr in crossings:
         near = np.abs(ph - cr.phi) < _ZONE
         if near.any():
-            J, Jp, M = cr.patch(ph[near])
+            J, Jp, M = cr.patch(ph[near], mach, om[near], ts[near])
             F[near] = (M - 0.5 * Jp * om[near] ** 2) / J
             zone |= near
     parts = []
@@ -1287,22 +1335,58 @@ def _crossing(mach, base, groups, rough, side):
             for res in (rn, rf):
                 J, Mr, Mb = res.reduced_inertia, res.reduced_moment, res.balancing_moment
                 vals.append(np.stack((J, 2.0 * (Mb + Mr), Mr), axis=1))
-            return _Crossing(float(star), side, list(groups), x, np.concatenate(vals))
+            return _Crossing(float(star), side, list(groups), x, np.concatenate(vals),
+                             (base, _flip(base, groups)))
         rough = star
     return None
 
 
-def _root(f, a, b, fa):
-    """A root of f in [a, b] where f changes sign (bisection to rounding)."""
+_LEGENDRE = {}
+
+
+def _series(F, c):
+    """A step's F(tau) through its values at the nodes c, as a Legendre series on
+    [0, 1], and its first and second integrals from 0: cheap scalar evaluations (by
+    Clenshaw's recurrence) for the roots of omega and phi inside the step."""
+    n = len(c)
+    if _LEGENDRE.get(n) is None:            # coefficients from the Gauss rule, exact
+        x, wg = np.polynomial.legendre.leggauss(n)
+        V = np.polynomial.legendre.legvander(x, n - 1)             # V[i, k] = P_k(x_i)
+        _LEGENDRE[n] = (V * wg[:, None]).T * (np.arange(n) + 0.5)[:, None]
+    L = np.polynomial.legendre
+    a0 = _LEGENDRE[n] @ F                      # in x = 2 tau - 1: dtau = dx / 2
+    a1 = L.legint(a0, lbnd=-1.0, scl=0.5)
+    a2 = L.legint(a1, lbnd=-1.0, scl=0.5)
+    return tuple((lambda u, a=a: float(L.legval(2.0 * u - 1.0, a))) for a in (a0, a1, a2))
+
+
+def _root(f, a, b, fa, df=None):
+    """A root of f in [a, b] where f changes sign: bisection to rounding, or with the
+    derivative df Newton's method kept inside the bracket (bisecting where it leaves)."""
+    x = 0.5 * (a + b)
     for _ in range(200):
-        mid = 0.5 * (a + b)
-        if not a < mid < b:
+        if not a < x < b:
             break
-        fm = f(mid)
-        if (fm > 0.0) == (fa > 0.0) and fm != 0.0:
-            a, fa = mid, fm
+        fx = f(x)
+        if fx == 0.0:
+            return x
+        if (fx > 0.0) == (fa > 0.0):
+            a, fa = x, fx
         else:
-            b = mid
+            b = x
+        mid = 0.5 * (a + b)
+        if df is None:
+            x = mid
+            continue
+        d = df(x)
+        step = fx / d if d != 0.0 else math.inf
+        new = x - step
+        if not a < new < b:
+            x = mid
+        elif abs(step) <= 1e-15 * max(abs(x), 1e-300) + 1e-300:
+            return new
+        else:
+            x = new
     return 0.5 * (a + b)
 
 
@@ -1325,6 +1409,10 @@ def _check_time(who, t):
         raise ValueError(f"{who}: t must be strictly increasing: t[{k + 1}] = "
                          f"{float(t[k + 1])!r} <= t[{k}] = {float(t[k])!r}")
     return t
+
+
+# with groups followed, steps of looser tolerances can leap past a crossing's warning
+_FOLLOW_RTOL = 1e-6
 
 
 def simulate(m, t, *, phi0=0.0, omega0=0.0, gravity=0.0, rtol=1e-8,
@@ -1355,7 +1443,7 @@ def simulate(m, t, *, phi0=0.0, omega0=0.0, gravity=0.0, rtol=1e-8,
     if follow:
         # steps of looser tolerances can leap past a crossing's warning (a missed
         # branch change at rtol 1e-4 on the N-four-bar): at most 1e-6 then
-        rtol = min(rtol, 1e-6)
+        rtol = min(rtol, _FOLLOW_RTOL)
     with np.errstate(all="ignore"):
         return _integrate(mach, t, phi0, omega0, eps0, rtol, follow, max_steps)
 
@@ -1383,7 +1471,8 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
     base = start_cfg                          # the branches at phi = y
     status = "ok"
     steps = rejected = in_row = 0
-    stall = _stall_check(mach, y, w, e, wref, start_cfg)
+    h_acc = h
+    stall = _stall_check(mach, y, w, e, wref, start_cfg, tcur)
     if stall:
         events.append(Event("stall", tcur, y, 0.0, 0.0, "at rest and held there by "
                                                         "the loads"))
@@ -1432,6 +1521,35 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
         if not ok:
             rejected += 1
             in_row += 1
+            tau = _stop_ahead(w, e, h, F, c, b, a1) if mach.dynamic else None
+            if tau is not None:
+                # the trial step passes a stop of the crank, where a load of omega (dry
+                # friction, a pawl) may jump: step to the stop it predicts; once the
+                # stop is nearer than rounding, stop there (a stall or a turning point)
+                if abs(w) > 1e-3 * rtol * wref and tau * h > 1e-12 * span:
+                    h *= tau
+                    continue
+                dt = -w / e if e * w < 0.0 else tau * h
+                ts_, ys_ = float(tcur + dt), float(y + w * dt + 0.5 * e * dt * dt)
+                ke = ko + int(np.searchsorted(t_out[ko:], ts_, side="left"))
+                d_ = t_out[ko:ke] - tcur
+                phi_o[ko:ke], om_o[ko:ke], ep_o[ko:ke] = y + w * d_ + 0.5 * e * d_**2, \
+                    w + e * d_, e
+                ko = ke
+                cfg = _stage_configs(base, crossings, [ys_])[0]
+                held, after = _at_rest(mach, ys_, wref, cfg, ts_, -1.0 if w > 0 else 1.0)
+                if held:
+                    events.append(Event("stall", ts_, ys_, 0.0, 0.0,
+                                        "stopped and held at rest by the loads"))
+                    phi_o[ko:], om_o[ko:], ep_o[ko:] = ys_, 0.0, 0.0
+                    ko, status = n, "stalled"
+                    break
+                events.append(Event("turning point", ts_, ys_, 0.0, after,
+                                    "omega = 0, epsilon != 0: the crank turns back"))
+                tcur, y, w, e = ts_, ys_, 0.0, after
+                F = np.full(s, e)
+                h, in_row = h_acc, 0
+                continue
             h *= 0.5 if not math.isfinite(err) else max(0.2, 0.8 * err ** (-1.0 / s))
             if h < 1e-12 * span or in_row > 40:
                 raise RangeError(f"simulate: the step size fell to {h!r} s at t = {tcur!r}, "
@@ -1441,6 +1559,7 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
             continue
         steps += 1
         in_row = 0
+        h_acc = h
         t1 = tcur + h
 
         def at(tau, F=F, y=y, w=w, h=h):
@@ -1452,6 +1571,23 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
             out = (y + h * w * tau + h * h * (P2 @ F), w + h * (P1 @ F), L @ F)
             return tuple(v.reshape(shape) for v in out)
 
+        series = []
+
+        def omega_at(u, F=F, w=w, h=h):
+            """omega at the fraction u of the step (scalar; for root finding)."""
+            if not series:
+                series.extend(_series(F, c))
+            return w + h * series[1](u)
+
+        def phi_at(u, F=F, y=y, w=w, h=h):
+            if not series:
+                series.extend(_series(F, c))
+            return y + h * w * u + h * h * series[2](u)
+
+        def rates(u, which, h=h):
+            """d(omega)/du (which 1) or d(phi)/du (which 2) at u."""
+            return h * series[0](u) if which == 1 else h * omega_at(u)
+
         # turning points and stalls: omega's sign changes inside the step
         taus = np.concatenate(([0.0], c, [1.0]))
         wt = np.concatenate(([w], w + h * (a1 @ F), [w1]))
@@ -1461,10 +1597,11 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
             if i == 0 and a_ == 0.0:
                 continue
             if (a_ > 0.0 and b_ <= 0.0) or (a_ < 0.0 and b_ >= 0.0):
-                tau = _root(lambda u: float(at(u)[1]), taus[i], taus[i + 1], a_)
+                tau = _root(omega_at, taus[i], taus[i + 1], a_, lambda u: rates(u, 1))
                 pt, _, et = (float(v) for v in at(tau))
                 tt = float(tcur + tau * h)
-                if _stall_check(mach, pt, 0.0, et, wref, _stage_configs(base, crossings, [pt])[0]):
+                if _stall_check(mach, pt, 0.0, et, wref,
+                                _stage_configs(base, crossings, [pt])[0], tt):
                     events.append(Event("stall", tt, pt, 0.0, 0.0,
                                         "stopped and held at rest by the loads"))
                     stop = (tau, pt)
@@ -1483,20 +1620,21 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
             ko = ke
         if stop is not None:
             phi_o[ko:], om_o[ko:], ep_o[ko:] = stop[1], 0.0, 0.0
-            status = "stalled"
+            ko, status = n, "stalled"
             break
         # branches: the crossings passed in this step take effect
         cfg = base
         for cr in crossings:
             if cr.passed(y1):
-                tau = _root(lambda u: float(at(u)[0]) - cr.phi, 0.0, 1.0, y - cr.phi)
+                tau = _root(lambda u: phi_at(u) - cr.phi, 0.0, 1.0, y - cr.phi,
+                            lambda u: rates(u, 2))
                 pt, wt_, et = (float(v) for v in at(tau))
                 cfg = _flip(cfg, cr.groups)
                 cr.side = -cr.side
                 names = ", ".join(repr(mach.groups[j][0]) for j in cr.groups)
                 events.append(Event(
                     "branch", float(tcur + tau * h), cr.phi, wt_, et,
-                    f"rrr group(s) {names} passed a toggle or change point (the signed "
+                    f"group(s) {names} passed a toggle or change point (the signed "
                     f"side of the new joint went through zero): the continuous motion "
                     f"takes the other geometric branch"))
                 branch_log.append((float(tcur + tau * h), cfg))
@@ -1520,7 +1658,7 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
             if S.min() < 1e-4:
                 B = mach.groups[int(S[-1].argmin())][0]
                 raise RangeError(
-                    f"simulate: the rrr group placing {B!r} reaches a toggle or change "
+                    f"simulate: the group placing {B!r} reaches a toggle or change "
                     f"point at t = {tcur!r}, phi = {y!r}: the geometric branch rule "
                     f"(branches='geometric') cannot follow the motion there; "
                     f"branches='continuous' does")
@@ -1540,18 +1678,43 @@ def _integrate(mach, t_out, phi0, omega0, eps0, rtol, follow, max_steps):
                       stats, mach.m, mach.gravity)
 
 
-def _stall_check(mach, phi, w, e, wref, cfg):
-    """At rest (w = 0): whether the loads hold the crank there -- epsilon just after
-    the stop, on either side, points back to rest (or is zero)."""
+def _stall_check(mach, phi, w, e, wref, cfg, t):
+    """At rest (w = 0) at time t: whether the loads hold the crank there -- epsilon
+    just after the stop, on either side, points back to rest (or is zero)."""
     if w != 0.0:
         return False
+    return _at_rest(mach, phi, wref, cfg, t, 1.0)[0]
+
+
+def _at_rest(mach, phi, wref, cfg, t, going):
+    """At rest at (phi, t): (held, epsilon as the crank starts to move in the
+    direction ``going``, +1 or -1) -- held: epsilon just after the stop, on either
+    side, points back to rest (or is zero)."""
     d = 1e-9 * wref
-    cfgs = [cfg, cfg]
     try:
-        ee = mach.epsilon(np.array([phi, phi]), np.array([d, -d]), np.zeros(2), cfgs)[0]
+        ee = mach.epsilon(np.array([phi, phi]), np.array([d, -d]), np.full(2, t),
+                          [cfg, cfg])[0]
     except _Failed:
-        return False
-    return bool(ee[0] <= 0.0 <= ee[1])
+        return False, 0.0
+    return bool(ee[0] <= 0.0 <= ee[1]), float(ee[0] if going > 0 else ee[1])
+
+
+def _stop_ahead(w, e, h, F, c, b, a1):
+    """Where a trial step (its stage values F) brings the crank to a stop: the fraction
+    of the step at which its omega reaches zero, None if it keeps its sign."""
+    if w == 0.0 or not np.isfinite(F).all():
+        return None
+    taus = np.concatenate(([0.0], c, [1.0]))
+    wt = np.concatenate(([w], w + h * (a1 @ F), [w + h * float(b @ F)]))
+    cross = np.flatnonzero(wt * w <= 0.0)
+    if not cross.size:
+        return None
+    k = int(cross[0])
+    integral = _series(F, c)[1]
+    tau = _root(lambda u: w + h * integral(u), taus[k - 1], taus[k], wt[k - 1])
+    if not 0.0 < tau < 1.0 and e * w < 0.0:
+        tau = -w / (e * h)
+    return min(max(tau, 1e-3), 0.9)
 
 
 def _predict(mach, base, crossings, parts, ph, y1, reach):
@@ -1565,9 +1728,13 @@ def _predict(mach, base, crossings, parts, ph, y1, reach):
     for idx, r in parts:
         if last & set(np.atleast_1d(idx).tolist()):
             S[idx] = np.abs(mach.sides(r))
-    busy = {j for cr in crossings if abs(cr.phi - y1) < 4.0 * reach + _ZETA
-            for j in cr.groups}
     pa, pb = float(ph[-2]), float(ph[-1])
+    # a group is busy with a crossing ahead (or just passed); one behind the motion
+    # does not hide the group's next crossing (the N-four-bar's change point at 2 pi
+    # behind its toggle at pi: found only when a rejected step had shrunk to it)
+    ahead = 1.0 if pb >= pa else -1.0
+    busy = {j for cr in crossings if abs(cr.phi - y1) < 4.0 * reach + _ZETA
+            and (cr.phi - y1) * ahead > -_ZETA for j in cr.groups}
     sa, sb = S[-2], S[-1]
     cand, P = [], []
     for j in range(G):
@@ -1581,16 +1748,21 @@ def _predict(mach, base, crossings, parts, ph, y1, reach):
         return crossings
     guess = np.array(P)
     P = guess.copy()
+    good = np.full(len(P), y1)                 # the last angles where it assembled
     mach.set_config(base)
     for _ in range(20):
-        for _ in range(12):                            # damped: stay where it assembles
+        for _ in range(12):
+            # damped: a step past the crossing where the mechanism does not assemble
+            # on these branches goes back halfway to the last angle where it did (the
+            # N-four-bar: halving towards y1 made Newton cycle 20 times per crossing)
             try:
                 sv, dv = mach.side_rate(P, cand)
                 break
             except _Failed:
-                P = 0.5 * (P + y1)
+                P = 0.5 * (P + good)
         else:
             return crossings
+        good = P.copy()
         sv, dv = np.abs(sv), dv * np.sign(sv)
         with np.errstate(all="ignore"):
             step = np.where(dv != 0.0, sv / dv, 0.0)
@@ -1687,10 +1859,25 @@ class _SimulationBase(Result):
                                                     paths=paths)
 
 
+def _followed(kind, ints, reals):
+    """Whether simulate follows a group's branch through toggles: rrr; rrp (its guide
+    on the frame or on a moving link); rpr with its slider off link 3's axis (h != 0:
+    else B = A, no branch)."""
+    return kind in (1, 2) or (kind == 3 and np.all(np.asarray(reals[0]) != 0.0))
+
+
 def _groups(m):
     names = {i: nm for nm, i in m._points.items()}
-    return [(B, names[ints[1]], names[ints[2]]) for kind, ints, _, B in m._steps
-            if kind == 1]
+    return [(B, names[ints[1]], names[ints[2]]) for kind, ints, reals, B in m._steps
+            if _followed(kind, ints, reals)]
+
+
+def _guides(m):
+    """For the followed groups: which are rrp, and the link index of each rrp group's
+    slider block (-1 for the others): the block's direction is the guide's."""
+    rows = [ints[4] if kind == 2 else -1
+            for kind, ints, reals, _ in m._steps if _followed(kind, ints, reals)]
+    return np.array([r >= 0 for r in rows], dtype=bool), np.array(rows, dtype=int)
 
 
 Simulation = result_type(
@@ -1703,7 +1890,8 @@ Simulation = result_type(
     crank's angle (rad), angular velocity (rad/s) and acceleration (rad/s^2) there;
     ``events`` -- the turning points, stalls and branch changes, in time order (each an
     :data:`Event`); ``branches`` -- ``(t, branches)`` from the start and at each branch
-    change, the branches (+1/-1) of the rrr groups in their order; ``status`` -- "ok" or
+    change, the branches (+1/-1) of the followed groups (rrr, rrp, rpr) in their
+    order; ``status`` -- "ok" or
     "stalled"; ``stats`` -- steps, rejected steps, mechanism calls and positions solved,
     the method's order; ``mechanism`` -- a copy of the mechanism at the start;
     ``gravity``.  ``sim.solve(need)`` gives positions and forces along the motion,

@@ -453,14 +453,16 @@ class Mechanism:
         """Set the branch (+1 or -1) of the group that places joint ``B``."""
         who = f"set_branch({B!r})"
         q = _branch(who, branch)
-        for kind, _, reals, name in self._steps:
+        for k, (kind, _, reals, name) in enumerate(self._steps):
             if name == B and 1 <= kind <= 5:
                 slot = self._BRANCH_SLOT.get(kind)
                 if slot is None:
                     raise ValueError(f"{who}: a {('prp', 'rpp')[kind - 4]} group has one "
                                      f"position, no branch")
                 reals[slot] = q
-                self._cache = None
+                tab = getattr(self, "_cache", None)
+                if tab is not None:         # only the group's reals depend on it
+                    tab["gr"][slot, k] = q
                 return
         raise ValueError(f"{who}: no group places joint {B!r}")
 
@@ -1193,8 +1195,9 @@ class Mechanism:
                  branches="continuous"):
         """The motion in time under the mechanism's loads, from phi0, omega0 at t[0].
 
-        Integrates J(phi) phi'' + J'(phi) phi'^2/2 = M(phi) (masses, inertias, gravity,
-        springs, forces, torques) through reversals and from rest, by Gauss-Legendre
+        Integrates J(phi) phi'' + J'(phi) phi'^2/2 = M(phi, omega, t) (masses,
+        inertias, gravity, springs, forces, torques; loads may be callables of phi,
+        omega and t) through reversals and from rest, by Gauss-Legendre
         collocation with 8 nodes (order 16 at the step ends, 8 for the dense output,
         whose error estimate is held to rtol), each sweep of the stages one vectorised
         :meth:`solve`.  Turning points (omega = 0, epsilon != 0), stalls (at rest and
@@ -1214,7 +1217,8 @@ class Mechanism:
             groups followed through toggles (branches="continuous") at most 1e-6 is
             used: looser steps can leap past a crossing's warning.
         branches : {"continuous", "geometric"}
-            "continuous": an RRR group passing a toggle or change point takes the
+            "continuous": an RRR group, an RRP group (its guide on the frame or on a
+            moving link) or an RPR group passing a toggle or change point takes the
             branch with a continuous velocity (the other geometric one), a "branch"
             event; the branch given is the start's.  "geometric": the book's rule kept
             (an error at a toggle the motion passes).
