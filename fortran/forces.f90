@@ -238,7 +238,7 @@ contains
   ! own (st_singular, st_range) where that fails.
 
   ! DNMAF1: kind 1, pairs A, B, C.
-  subroutine dnmaf1_kernel(xa, ya, xb, yb, xc, yc, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, &
+  subroutine dnmaf1_adapter(xa, ya, xb, yb, xc, yc, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, &
                            t3, f21, g21, f23, g23, f34, g34, ier)
     real(dp), intent(in) :: xa, ya, xb, yb, xc, yc, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3
     real(dp), intent(inout) :: f21, g21, f23, g23, f34, g34
@@ -261,10 +261,10 @@ contains
     g21 = g21 - pi_exact
     call polar(r(1, 2), r(2, 2), f23, g23)
     call polar(-r(1, 3), -r(2, 3), f34, g34)
-  end subroutine dnmaf1_kernel
+  end subroutine dnmaf1_adapter
 
   ! DNMAF2: kind 2, pairs A, B and the slider on the guide, its couple about B (H34).
-  subroutine dnmaf2_kernel(xa, ya, xb, yb, fim, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
+  subroutine dnmaf2_adapter(xa, ya, xb, yb, fim, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
                            f21, g21, f23, g23, f34, g34, h34, ier)
     real(dp), intent(in) :: xa, ya, xb, yb, fim, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3
     real(dp), intent(inout) :: f21, g21, f23, g23, f34, g34, h34
@@ -289,10 +289,10 @@ contains
     call polar(r(1, 2), r(2, 2), f23, g23)
     call polar(-r(1, 3), -r(2, 3), f34, g34)
     h34 = arm(r(3, 3), f34)
-  end subroutine dnmaf2_kernel
+  end subroutine dnmaf2_adapter
 
   ! DNMAF3: kind 3, pairs A, the slider on link 3 (its couple about C: H23), C.
-  subroutine dnmaf3_kernel(xa, ya, xc, yc, fi3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
+  subroutine dnmaf3_adapter(xa, ya, xc, yc, fi3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
                            f21, g21, f23, g23, h23, f34, g34, ier)
     real(dp), intent(in) :: xa, ya, xc, yc, fi3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3
     real(dp), intent(inout) :: f21, g21, f23, g23, h23, f34, g34
@@ -317,12 +317,12 @@ contains
     call polar(r(1, 2), r(2, 2), f23, g23)
     h23 = arm(r(3, 2), f23)
     call polar(-r(1, 3), -r(2, 3), f34, g34)
-  end subroutine dnmaf3_kernel
+  end subroutine dnmaf3_adapter
 
   ! DNMA4 and DNMAF4: kind 4, the sliders on the guides u1 (FIM) and u3 (FIN) joined at
   ! the origin; every couple about it.  ier comes in as the caller's status of the
   ! book's denominator: nothing is done for st_singular, the kernel's failure replaces it.
-  subroutine prp_kernel(u1, u3, s2, v2, t2, s3, v3, t3, r, ier)
+  subroutine prp_reactions(u1, u3, s2, v2, t2, s3, v3, t3, r, ier)
     real(dp), intent(in) :: u1(2), u3(2), s2(2), v2(2), t2, s3(2), v3(2), t3
     real(dp), intent(out) :: r(3, 3)
     integer, intent(inout) :: ier
@@ -335,10 +335,10 @@ contains
     u(:, 3) = u3
     call group_reactions(origin, kind_pairs(:, 4), u, v2, t2, s2, v3, t3, s3, r, st)
     if (st /= st_ok) ier = st
-  end subroutine prp_kernel
+  end subroutine prp_reactions
 
   ! DNMAF4 (B at the origin of the kernel's coordinates).
-  subroutine dnmaf4_kernel(fim, fin, xb, yb, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
+  subroutine dnmaf4_adapter(fim, fin, xb, yb, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
                            f21, g21, h21, f23, g23, f34, g34, h34, ier)
     real(dp), intent(in) :: fim, fin, xb, yb, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3
     real(dp), intent(inout) :: f21, g21, h21, f23, g23, f34, g34, h34
@@ -347,7 +347,7 @@ contains
     u1 = unit(fim)
     u3 = unit(fin)
     ier = sine_status(u1(1), u1(2), u3(1), u3(2))           ! COS(FIM + PID2 - FIN)
-    call prp_kernel(u1, u3, [xs2 - xb, ys2 - yb], vec(f2, g2), t2, [xs3 - xb, ys3 - yb], &
+    call prp_reactions(u1, u3, [xs2 - xb, ys2 - yb], vec(f2, g2), t2, [xs3 - xb, ys3 - yb], &
                     vec(f3, g3), t3, r, ier)
     if (.not. succeeded(ier)) return
     call normal_polar(r(1:2, 1), u1, fim, f21, g21)         ! F12 = DUGL3(FIM, PID2, .)
@@ -356,15 +356,15 @@ contains
     call polar(r(1, 2), r(2, 2), f23, g23)
     call polar(-r(1, 3), -r(2, 3), f34, g34)
     h34 = arm(r(3, 3), f34)
-  end subroutine dnmaf4_kernel
+  end subroutine dnmaf4_adapter
 
   ! DNMA5 and DNMAF5: the book's kind 5 has links 2 and 3 the other way round from the
   ! kernel's (kind_pairs(:, 5): link 2 the slotted link on the guide): the kernel's link
   ! 2 is the book's link 3 (sliding on the guide u1, FIM), its link 3 the book's link 2
   ! (pivoted at the origin A, sliding in the slot u2, FIM + ETA3); every couple about
   ! A.  r(:, 1): the guide's reaction on link 3, r(:, 2): the force of 3 on 2, r(:, 3):
-  ! the reaction on 2 at A.  ier as prp_kernel's.
-  subroutine rpp_kernel(u1, u2, s2, v2, t2, s3, v3, t3, r, ier)
+  ! the reaction on 2 at A.  ier as prp_reactions's.
+  subroutine rpp_reactions(u1, u2, s2, v2, t2, s3, v3, t3, r, ier)
     real(dp), intent(in) :: u1(2), u2(2), s2(2), v2(2), t2, s3(2), v3(2), t3
     real(dp), intent(out) :: r(3, 3)
     integer, intent(inout) :: ier
@@ -377,10 +377,10 @@ contains
     u(:, 3) = 0.0_dp
     call group_reactions(origin, kind_pairs(:, 5), u, v3, t3, s3, v2, t2, s2, r, st)
     if (st /= st_ok) ier = st
-  end subroutine rpp_kernel
+  end subroutine rpp_reactions
 
   ! DNMAF5 (A at the origin).
-  subroutine dnmaf5_kernel(xa, ya, fim, tt3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
+  subroutine dnmaf5_adapter(xa, ya, fim, tt3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
                            f21, g21, f32, g32, h32, f34, g34, h34, ier)
     real(dp), intent(in) :: xa, ya, fim, tt3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3
     real(dp), intent(inout) :: f21, g21, f32, g32, h32, f34, g34, h34
@@ -388,7 +388,7 @@ contains
     real(dp) :: r(3, 3), u1(2)
     u1 = unit(fim)
     ier = den_status(sin(tt3))                               ! COS(PID2 - TT3)
-    call rpp_kernel(u1, unit(fim + tt3), [xs2 - xa, ys2 - ya], vec(f2, g2), t2, &
+    call rpp_reactions(u1, unit(fim + tt3), [xs2 - xa, ys2 - ya], vec(f2, g2), t2, &
                     [xs3 - xa, ys3 - ya], vec(f3, g3), t3, r, ier)
     if (.not. succeeded(ier)) return
     call polar(-r(1, 3), -r(2, 3), f21, g21)
@@ -397,10 +397,10 @@ contains
     call normal_polar(r(1:2, 1), u1, fim, f34, g34)         ! F43 = DUGL3(FIM, PID2, .)
     g34 = g34 - pi_exact
     h34 = arm(r(3, 1), f34)
-  end subroutine dnmaf5_kernel
+  end subroutine dnmaf5_adapter
 
   ! DNMA1: kind 1 with B at the origin, A = -L2 e(FI2), C = -L3 e(FI3).
-  subroutine dnma1_kernel(l2, fi2, l3, fi3, bs2, bs3, m2, q2, g2, m3, q3, g3, &
+  subroutine dnma1_adapter(l2, fi2, l3, fi3, bs2, bs3, m2, q2, g2, m3, q3, g3, &
                           ra, ga, rb, gb, rc, gc, ier)
     real(dp), intent(in) :: l2, fi2, l3, fi3, bs2, bs3, m2, q2, g2, m3, q3, g3
     real(dp), intent(inout) :: ra, ga, rb, gb, rc, gc
@@ -424,10 +424,10 @@ contains
     call polar(r(1, 1), r(2, 1), ra, ga)
     call polar(-r(1, 2), -r(2, 2), rb, gb)                  ! on 2 from 3
     call polar(r(1, 3), r(2, 3), rc, gc)
-  end subroutine dnma1_kernel
+  end subroutine dnma1_adapter
 
   ! DNMA2: kind 2 with B at the origin, A = -L2 e(FI2), S3 on the line B + s e(FIO + ETA).
-  subroutine dnma2_kernel(l2, fi2, eta, fio, bs2, bs3, m2, q2, g2, m3, q3, g3, &
+  subroutine dnma2_adapter(l2, fi2, eta, fio, bs2, bs3, m2, q2, g2, m3, q3, g3, &
                           ra, ga, rb, gb, rc, hc, gc, ier)
     real(dp), intent(in) :: l2, fi2, eta, fio, bs2, bs3, m2, q2, g2, m3, q3, g3
     real(dp), intent(inout) :: ra, ga, rb, gb, rc, hc, gc
@@ -451,10 +451,10 @@ contains
     call polar(-r(1, 2), -r(2, 2), rb, gb)
     call normal_polar(r(1:2, 3), u(:, 3), fio, rc, gc)
     hc = arm(r(3, 3), rc)
-  end subroutine dnma2_kernel
+  end subroutine dnma2_adapter
 
   ! DNMA3: kind 3 with C at the origin, A = -AC e(FIAC); the slider's couple about A.
-  subroutine dnma3_kernel(fi3, cs2, fics2, cs3, fics3, ac, fiac, m2, q2, g2, m3, q3, g3, &
+  subroutine dnma3_adapter(fi3, cs2, fics2, cs3, fics3, ac, fiac, m2, q2, g2, m3, q3, g3, &
                           ra, ga, rb, hb, gb, rc, gc, ier)
     real(dp), intent(in) :: fi3, cs2, fics2, cs3, fics3, ac, fiac, m2, q2, g2, m3, q3, g3
     real(dp), intent(inout) :: ra, ga, rb, hb, gb, rc, gc
@@ -481,10 +481,10 @@ contains
     ! HB*RB: the moment about C of the force on 3 from 2, whose couple is about A
     hb = arm(r(3, 2) + (a(1)*r(2, 2) - a(2)*r(1, 2)), rb)
     call polar(r(1, 3), r(2, 3), rc, gc)
-  end subroutine dnma3_kernel
+  end subroutine dnma3_adapter
 
   ! DNMA4 (B at the origin).
-  subroutine dnma4_kernel(fim, eta2, fin, eta3, bs2, bs3, m2, q2, g2, m3, q3, g3, &
+  subroutine dnma4_adapter(fim, eta2, fin, eta3, bs2, bs3, m2, q2, g2, m3, q3, g3, &
                           ra, ha, ga, rb, gb, rc, hc, gc, ier)
     real(dp), intent(in) :: fim, eta2, fin, eta3, bs2, bs3, m2, q2, g2, m3, q3, g3
     real(dp), intent(inout) :: ra, ha, ga, rb, gb, rc, hc, gc
@@ -493,7 +493,7 @@ contains
     u1 = unit(fim)
     u3 = unit(fin)
     ier = gelg_status(-u1(2), -u3(2), u1(1), u3(1))
-    call prp_kernel(u1, u3, bs2*unit(fim + eta2), vec(q2, g2), m2, bs3*unit(fin + eta3), &
+    call prp_reactions(u1, u3, bs2*unit(fim + eta2), vec(q2, g2), m2, bs3*unit(fin + eta3), &
                     vec(q3, g3), m3, r, ier)
     if (.not. succeeded(ier)) return
     call normal_polar(r(1:2, 1), u1, fim, ra, ga)
@@ -501,10 +501,10 @@ contains
     call polar(-r(1, 2), -r(2, 2), rb, gb)
     call normal_polar(r(1:2, 3), u3, fin, rc, gc)
     hc = arm(r(3, 3), rc)
-  end subroutine dnma4_kernel
+  end subroutine dnma4_adapter
 
   ! DNMA5 (A at the origin; S2 = -AS2 e(FIAS2), S3 = -AS3 e(FIAS3): E-DNMA5-3).
-  subroutine dnma5_kernel(eta3, fim, as2, as3, fias2, fias3, m2, q2, g2, m3, q3, g3, &
+  subroutine dnma5_adapter(eta3, fim, as2, as3, fias2, fias3, m2, q2, g2, m3, q3, g3, &
                           ra, ga, rb, hb, gb, rc, hc, gc, ier)
     real(dp), intent(in) :: eta3, fim, as2, as3, fias2, fias3, m2, q2, g2, m3, q3, g3
     real(dp), intent(inout) :: ra, ga, rb, hb, gb, rc, hc, gc
@@ -513,7 +513,7 @@ contains
     u1 = unit(fim)
     u2 = unit(fim + eta3)
     ier = gelg_status(-u1(2), -u2(2), u1(1), u2(1))
-    call rpp_kernel(u1, u2, -as2*unit(fias2), vec(q2, g2), m2, -as3*unit(fias3), &
+    call rpp_reactions(u1, u2, -as2*unit(fias2), vec(q2, g2), m2, -as3*unit(fias3), &
                     vec(q3, g3), m3, r, ier)
     if (.not. succeeded(ier)) return
     call polar(-r(1, 3), -r(2, 3), ra, ga)                  ! the printed DSMVKT's RA + PI
@@ -522,7 +522,7 @@ contains
     hb = arm(r(3, 2), rb)
     call normal_polar(r(1:2, 1), u1, fim, rc, gc)
     hc = arm(r(3, 1), rc)
-  end subroutine dnma5_kernel
+  end subroutine dnma5_adapter
 
   ! ============================================================================
   ! projection method (F21, F34: forces of the group ON the chain)
@@ -550,7 +550,7 @@ contains
     f21 = 0.0_dp; g21 = 0.0_dp; f23 = 0.0_dp; g23 = 0.0_dp; f34 = 0.0_dp; g34 = 0.0_dp
     h34 = 0.0_dp
     if (printed_mode == 0) then                ! corrected: over the kernel
-      call dnmaf2_kernel(xa, ya, xb, yb, fim, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, &
+      call dnmaf2_adapter(xa, ya, xb, yb, fim, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, &
                          t3, f21, g21, f23, g23, f34, g34, h34, ier)
       return
     end if
@@ -593,7 +593,7 @@ contains
                 g12n, g, den
     f21 = 0.0_dp; g21 = 0.0_dp; f23 = 0.0_dp; g23 = 0.0_dp; f34 = 0.0_dp; g34 = 0.0_dp
     if (printed_mode == 0) then                ! corrected: over the kernel
-      call dnmaf1_kernel(xa, ya, xb, yb, xc, yc, xs2, ys2, f2, g2, xs3, ys3, f3, g3, &
+      call dnmaf1_adapter(xa, ya, xb, yb, xc, yc, xs2, ys2, f2, g2, xs3, ys3, f3, g3, &
                          t2, t3, f21, g21, f23, g23, f34, g34, ier)
       return
     end if
@@ -640,7 +640,7 @@ contains
     f21 = 0.0_dp; g21 = 0.0_dp; h21 = 0.0_dp; f23 = 0.0_dp; g23 = 0.0_dp; f34 = 0.0_dp
     g34 = 0.0_dp; h34 = 0.0_dp
     if (printed_mode == 0) then                ! corrected: over the kernel
-      call dnmaf4_kernel(fim, fin, xb, yb, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
+      call dnmaf4_adapter(fim, fin, xb, yb, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
                          f21, g21, h21, f23, g23, f34, g34, h34, ier)
       return
     end if
@@ -680,7 +680,7 @@ contains
     f21 = 0.0_dp; g21 = 0.0_dp; f23 = 0.0_dp; g23 = 0.0_dp; h23 = 0.0_dp; f34 = 0.0_dp
     g34 = 0.0_dp
     if (printed_mode == 0) then                ! corrected: over the kernel
-      call dnmaf3_kernel(xa, ya, xc, yc, fi3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, &
+      call dnmaf3_adapter(xa, ya, xc, yc, fi3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, &
                          t3, f21, g21, f23, g23, h23, f34, g34, ier)
       return
     end if
@@ -727,7 +727,7 @@ contains
     f21 = 0.0_dp; g21 = 0.0_dp; f32 = 0.0_dp; g32 = 0.0_dp; h32 = 0.0_dp; f34 = 0.0_dp
     g34 = 0.0_dp; h34 = 0.0_dp
     if (printed_mode == 0) then                ! corrected: over the kernel
-      call dnmaf5_kernel(xa, ya, fim, tt3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
+      call dnmaf5_adapter(xa, ya, fim, tt3, xs2, ys2, f2, g2, xs3, ys3, f3, g3, t2, t3, &
                          f21, g21, f32, g32, h32, f34, g34, h34, ier)
       return
     end if
@@ -758,7 +758,7 @@ contains
   ! written with PI + FI2); a point between A and B has a negative BS2.  The same for BS3.
   ! RB = force on 2 from 3.  Singular: links 2 and 3 parallel (GELG IER = -1).
   ! ERRATA: E-DNMA1-1 (F12, F13, RI2 for FI2, FI3: OCR), E-DUGL6-1.
-  ! Corrected mode: dnma1_kernel (the sine and cosine of each of FI2, FI3, G2, G3 once,
+  ! Corrected mode: dnma1_adapter (the sine and cosine of each of FI2, FI3, G2, G3 once,
   ! the kernel's Cramer solve, DUGL5's 3 arctangents; the printed form takes 16 sines and
   ! cosines before its directions, DUGL6 4 more each, then re-projects RA).  The printed
   ! form, with PI = 3.14159 inside SIN(PI + FI2) and DUGL3/DUGL4's PI/2 and PI, is kept
@@ -782,7 +782,7 @@ contains
       return
     end if
     if (printed_mode == 0) then                ! corrected: over the kernel
-      call dnma1_kernel(l2, fi2, l3, fi3, bs2, bs3, m2, q2, g2, m3, q3, g3, ra, ga, &
+      call dnma1_adapter(l2, fi2, l3, fi3, bs2, bs3, m2, q2, g2, m3, q3, g3, ra, ga, &
                         rb, gb, rc, gc, ier)
       return
     end if
@@ -843,7 +843,7 @@ contains
       return
     end if
     if (printed_mode == 0) then                ! corrected: over the kernel
-      call dnma2_kernel(l2, fi2, eta, fio, bs2, bs3, m2, q2, g2, m3, q3, g3, ra, ga, &
+      call dnma2_adapter(l2, fi2, eta, fio, bs2, bs3, m2, q2, g2, m3, q3, g3, ra, ga, &
                         rb, gb, rc, hc, gc, ier)
       return
     end if
@@ -900,7 +900,7 @@ contains
       return
     end if
     if (printed_mode == 0) then                ! corrected: over the kernel
-      call dnma3_kernel(fi3, cs2, fics2, cs3, fics3, ac, fiac, m2, q2, g2, m3, q3, g3, &
+      call dnma3_adapter(fi3, cs2, fics2, cs3, fics3, ac, fiac, m2, q2, g2, m3, q3, g3, &
                         ra, ga, rb, hb, gb, rc, gc, ier)
       return
     end if
@@ -950,7 +950,7 @@ contains
     ra = 0.0_dp; ha = 0.0_dp; ga = 0.0_dp; rb = 0.0_dp; gb = 0.0_dp; rc = 0.0_dp
     hc = 0.0_dp; gc = 0.0_dp
     if (printed_mode == 0) then                ! corrected: over the kernel
-      call dnma4_kernel(fim, eta2, fin, eta3, bs2, bs3, m2, q2, g2, m3, q3, g3, ra, &
+      call dnma4_adapter(fim, eta2, fin, eta3, bs2, bs3, m2, q2, g2, m3, q3, g3, ra, &
                         ha, ga, rb, gb, rc, hc, gc, ier)
       return
     end if
@@ -997,7 +997,7 @@ contains
     ra = 0.0_dp; ga = 0.0_dp; rb = 0.0_dp; hb = 0.0_dp; gb = 0.0_dp; rc = 0.0_dp
     hc = 0.0_dp; gc = 0.0_dp
     if (printed_mode == 0) then                ! corrected: over the kernel
-      call dnma5_kernel(eta3, fim, as2, as3, fias2, fias3, m2, q2, g2, m3, q3, g3, ra, &
+      call dnma5_adapter(eta3, fim, as2, as3, fias2, fias3, m2, q2, g2, m3, q3, g3, ra, &
                         ga, rb, hb, gb, rc, hc, gc, ier)
       return
     end if
