@@ -21,7 +21,16 @@
  * fourbar_mech: the four-bar (crank O-A, RRR group A-B-C, B on the left of A->C) with the
  *   Mechanism's outputs in its layout, for a like-with-like comparison (fourbar.c forms the
  *   book's polar outputs instead): points A, B and links crank, A-B, C-B:
- *     pos[i][2][2], vel[i][2][2], acc[i][2][2], dir[i][3][2] (cos, sin), om[i][3], ep[i][3].
+ *     pos[i][2][2], vel[i][2][2], acc[i][2][2], dir[i][3][2] (cos, sin), om[i][3], ep[i][3];
+ *   level 1: positions (and directions), 2: + velocities (and omegas), 3: + accelerations.
+ * rpr_mech: the inverted slider-crank (crank O-A, RPR group: a slider pivoted at A slides
+ *   along link 3, which turns about C; A at h from link 3's axis, B the foot of the
+ *   perpendicular from A on it, on the left of A->C), the Mechanism's outputs of
+ *   Mechanism.rpr in its layout: points A, B and links crank, the slider, link 3 (the
+ *   slider turns with link 3):
+ *     pos[i][2][2], vel[i][2][2], acc[i][2][2], dir[i][3][2], om[i][3], ep[i][3]; level as
+ *   fourbar_mech.  Link 3's unknowns by Cramer's rule: v_A = w3 k x (A - C) + s' e3 and
+ *   a_A = e3 k x (A - C) - w3^2 (A - C) + s'' e3 + 2 w3 s' k x e3 (C fixed).
  * fourbar_forces_full: fourbar_forces' mechanism with what Mechanism.solve(need="forces")
  *   stores: fourbar_mech's twenty numbers per position, then
  *     react[i][4][3] (O, A, B, C: fx, fy and the couple, 0 for a revolute), mb[i], and the
@@ -133,9 +142,9 @@ int fourbar_forces(long n, const double *phi, double roa, double rab, double rcb
     return bad;
 }
 
-int fourbar_mech(long n, const double *phi, double roa, double rab, double rcb, double xc,
-                 double yc, double w1, double *pos, double *vel, double *acc, double *dir,
-                 double *om, double *ep)
+int fourbar_mech(long n, int level, const double *phi, double roa, double rab, double rcb,
+                 double xc, double yc, double w1, double *pos, double *vel, double *acc,
+                 double *dir, double *om, double *ep)
 {
     int bad = 0;
     const double d2 = rab * rab - rcb * rcb, rab2 = rab * rab;
@@ -148,21 +157,70 @@ int fourbar_mech(long n, const double *phi, double roa, double rab, double rcb, 
         double k2 = sqrt(h2);
         double ux = k1 * dx - k2 * dy, uy = k1 * dy + k2 * dx;      /* B - A */
         double wx = xa + ux - xc, wy = ya + uy - yc;                 /* B - C */
+        double *p = pos + 4 * i, *dr = dir + 6 * i;
+        p[0] = xa; p[1] = ya; p[2] = xa + ux; p[3] = ya + uy;
+        dr[0] = c; dr[1] = s; dr[2] = ux / rab; dr[3] = uy / rab; dr[4] = wx / rcb;
+        dr[5] = wy / rcb;
+        if (level < 2)
+            continue;
         double det = uy * wx - ux * wy;
         double vax = -w1 * ya, vay = w1 * xa;
         double om2 = (vax * wx + wy * vay) / det, om3 = (uy * vay + vax * ux) / det;
+        double *v = vel + 4 * i;
+        v[0] = vax; v[1] = vay; v[2] = -om3 * wy; v[3] = om3 * wx;
+        om[3 * i] = w1; om[3 * i + 1] = om2; om[3 * i + 2] = om3;
+        if (level < 3)
+            continue;
         double bx = w1 * w1 * xa + om2 * om2 * ux - om3 * om3 * wx,
                by = w1 * w1 * ya + om2 * om2 * uy - om3 * om3 * wy;
         double ep2 = -(bx * wx + wy * by) / det, ep3 = -(uy * by + bx * ux) / det;
-        double *p = pos + 4 * i, *v = vel + 4 * i, *a = acc + 4 * i, *dr = dir + 6 * i;
-        p[0] = xa; p[1] = ya; p[2] = xa + ux; p[3] = ya + uy;
-        v[0] = vax; v[1] = vay; v[2] = -om3 * wy; v[3] = om3 * wx;
+        double *a = acc + 4 * i;
         a[0] = -w1 * w1 * xa; a[1] = -w1 * w1 * ya;
         a[2] = -ep3 * wy - om3 * om3 * wx; a[3] = ep3 * wx - om3 * om3 * wy;
-        dr[0] = c; dr[1] = s; dr[2] = ux / rab; dr[3] = uy / rab; dr[4] = wx / rcb;
-        dr[5] = wy / rcb;
-        om[3 * i] = w1; om[3 * i + 1] = om2; om[3 * i + 2] = om3;
         ep[3 * i] = 0.0; ep[3 * i + 1] = ep2; ep[3 * i + 2] = ep3;
+    }
+    return bad;
+}
+
+int rpr_mech(long n, int level, const double *phi, double roa, double xc, double yc,
+             double h, double w1, double *pos, double *vel, double *acc, double *dir,
+             double *om, double *ep)
+{
+    int bad = 0;
+    for (long i = 0; i < n; i++) {
+        double s = sin(phi[i]), c = cos(phi[i]);
+        double xa = roa * c, ya = roa * s;
+        double rx = xa - xc, ry = ya - yc, d2 = rx * rx + ry * ry;  /* A - C */
+        double q = d2 - h * h;                                       /* |B - C|^2 */
+        if (!(q > 0.0)) { bad = 1; continue; }
+        double sl = sqrt(q), rd = 1.0 / d2;
+        /* B - C = (sl/d) (sl u - h n), u = (C - A)/d reversed: e3 = (B - C)/sl */
+        double ex = (sl * rx + h * ry) * rd, ey = (sl * ry - h * rx) * rd;
+        double xb = xc + sl * ex, yb = yc + sl * ey;
+        double *p = pos + 4 * i, *dr = dir + 6 * i;
+        p[0] = xa; p[1] = ya; p[2] = xb; p[3] = yb;
+        dr[0] = c; dr[1] = s; dr[2] = ex; dr[3] = ey; dr[4] = ex; dr[5] = ey;
+        if (level < 2)
+            continue;
+        /* [-ry ex; rx ey] (w3, s') = v_A */
+        double det = -ry * ey - ex * rx, rdet = 1.0 / det;
+        double vax = -w1 * ya, vay = w1 * xa;
+        double w3 = (vax * ey - ex * vay) * rdet, sv = (-ry * vay - rx * vax) * rdet;
+        double nx = -ey, ny = ex;
+        double *v = vel + 4 * i;
+        v[0] = vax; v[1] = vay;
+        v[2] = w3 * sl * nx + sv * ex; v[3] = w3 * sl * ny + sv * ey;
+        om[3 * i] = w1; om[3 * i + 1] = w3; om[3 * i + 2] = w3;
+        if (level < 3)
+            continue;
+        double bx = -w1 * w1 * xa + w3 * w3 * rx - 2.0 * w3 * sv * nx,
+               by = -w1 * w1 * ya + w3 * w3 * ry - 2.0 * w3 * sv * ny;
+        double e3 = (bx * ey - ex * by) * rdet, sa = (-ry * by - rx * bx) * rdet;
+        double *a = acc + 4 * i;
+        a[0] = -w1 * w1 * xa; a[1] = -w1 * w1 * ya;
+        a[2] = e3 * sl * nx - w3 * w3 * sl * ex + sa * ex + 2.0 * w3 * sv * nx;
+        a[3] = e3 * sl * ny - w3 * w3 * sl * ey + sa * ey + 2.0 * w3 * sv * ny;
+        ep[3 * i] = 0.0; ep[3 * i + 1] = e3; ep[3 * i + 2] = e3;
     }
     return bad;
 }

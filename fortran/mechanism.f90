@@ -83,13 +83,12 @@ contains
     integer, intent(inout) :: status(n), fgroup(n)
     ! work arrays: a block of up to nb positions for the kinematics (point p of the j-th
     ! position of the block at xb(:, p, j), link l's direction cosine at cb(l, j)), and
-    ! one position for the force step (x, v, a, c, s, w, e); allocated once per call
+    ! the links' loads of the force step (fl, ml); allocated once per call
     integer, parameter :: nb = 64
     real(dp), allocatable :: xb(:, :, :), vb(:, :, :), ab(:, :, :)
     real(dp), allocatable :: cb(:, :), sb(:, :), wb(:, :), eb(:, :), maxest(:)
     integer, allocatable :: worst(:), fgb(:)
-    real(dp), allocatable :: x(:, :), v(:, :), a(:, :), c(:), s(:), w(:), e(:)
-    real(dp), allocatable :: fl(:, :), ml(:), aa(:, :), ee(:)
+    real(dp), allocatable :: fl(:, :), ml(:)
     integer, allocatable :: gslot(:)
     integer :: i, i0, j, m, k, jf, jt, js, fg, g, p, l, lev, st
     real(dp) :: wi, ei, w2, px, py
@@ -103,8 +102,7 @@ contains
     end do
     vb = 0.0_dp; ab = 0.0_dp
     cb = 1.0_dp; sb = 0.0_dp; wb = 0.0_dp; eb = 0.0_dp
-    allocate(x(2, np), v(2, np), a(2, np), c(0:nl), s(0:nl), w(0:nl), e(0:nl))
-    allocate(fl(2, 0:nl), ml(0:nl), aa(2, np), ee(0:nl))
+    allocate(fl(2, 0:nl), ml(0:nl))
     ! the reaction slots of the groups: 1 the crank's O, then three per group in order
     allocate(gslot(ns))
     g = 0
@@ -201,33 +199,13 @@ contains
             ep(k, i) = eb(l, j)*w2 + wb(l, j)*ei
           end do
         end if
-        if (need >= 4) then
-          ! the force step works on one position: its kinematics, and every point's and
-          ! link's acceleration for the inertia loads (explicit loops: the whole-array
-          ! form cost gfortran a temporary)
-          do p = 1, np
-            x(1, p) = xb(1, p, j)
-            x(2, p) = xb(2, p, j)
-            v(1, p) = vb(1, p, j)
-            v(2, p) = vb(2, p, j)
-            a(1, p) = ab(1, p, j)
-            a(2, p) = ab(2, p, j)
-            aa(1, p) = a(1, p)*w2 + v(1, p)*ei
-            aa(2, p) = a(2, p)*w2 + v(2, p)*ei
-          end do
-          do l = 0, nl
-            c(l) = cb(l, j)
-            s(l) = sb(l, j)
-            w(l) = wb(l, j)
-            e(l) = eb(l, j)
-            ee(l) = e(l)*w2 + w(l)*ei
-          end do
-          call forces(i)
-        end if
+        ! the force step, on position j of the block's kinematics as they are (the
+        ! inertia loads' accelerations formed where a mass needs them)
+        if (need >= 4) call forces(i, j, w2, ei)
       end do
     end do
     deallocate(xb, vb, ab, cb, sb, wb, eb, maxest, worst, fgb)
-    deallocate(x, v, a, c, s, w, e, fl, ml, aa, ee, gslot)
+    deallocate(fl, ml, gslot)
 
   contains
 
@@ -235,23 +213,42 @@ contains
 
     ! Whether the velocities x' omega and accelerations x'' omega**2 + x' epsilon of
     ! every point and link of position j of the block stay below huge/16 (room for the
-    ! sums of the force step)
+    ! sums of the force step).  The largest moduli by explicit loops (maxval's NaN-aware
+    ! loop cost ~200 instructions a position each): a NaN is passed over as maxval passes
+    ! it over, and the frame (a fixed point, link 0) is always at rest, so that a maximum
+    ! of only NaNs never arises: the same verdicts, cheaper
     logical function in_range(j, wi, ei)
       integer, intent(in) :: j
       real(dp), intent(in) :: wi, ei
       real(dp) :: vm, am, lim
+      integer :: p, l
       lim = huge(1.0_dp)/16.0_dp
-      vm = max(maxval(abs(vb(:, :, j))), maxval(abs(wb(:, j))))
+      vm = 0.0_dp
+      do p = 1, np
+        if (abs(vb(1, p, j)) > vm) vm = abs(vb(1, p, j))
+        if (abs(vb(2, p, j)) > vm) vm = abs(vb(2, p, j))
+      end do
+      do l = 0, nl
+        if (abs(wb(l, j)) > vm) vm = abs(wb(l, j))
+      end do
       in_range = abs(wi)*vm <= lim
       if (need < 3 .or. .not. in_range) return
-      am = max(maxval(abs(ab(:, :, j))), maxval(abs(eb(:, j))))
+      am = 0.0_dp
+      do p = 1, np
+        if (abs(ab(1, p, j)) > am) am = abs(ab(1, p, j))
+        if (abs(ab(2, p, j)) > am) am = abs(ab(2, p, j))
+      end do
+      do l = 0, nl
+        if (abs(eb(l, j)) > am) am = abs(eb(l, j))
+      end do
       in_range = wi*wi <= lim .and. (wi*wi)*am <= lim .and. abs(ei)*vm <= lim .and. &
                  (wi*wi)*am + abs(ei)*vm <= lim
     end function in_range
 
     ! The outcome of step k's kernel at position j of the block: a failure ends the
     ! position's kinematics (its later steps are not run), else the largest estimate and
-    ! the step that made it are kept
+    ! the step that made it are kept.  worst(j) holds st_ok or a failure, nothing else
+    ! (the steps test it so)
     subroutine account(j, k, st, est)
       integer, intent(in) :: j, k
       integer, intent(inout) :: st
@@ -288,7 +285,7 @@ contains
       select case (kind)
       case (0)                              ! crank A (p1) about O (p2), link 1
         do j = 1, m
-          if (failed(worst(j))) cycle
+          if (worst(j) /= st_ok) cycle
           call crank_kernel(xb(:, p2, j), r1, phi(i0 + j), xb(:, p1, j), vb(:, p1, j), &
                             ab(:, p1, j), u2)
           cb(1, j) = u2(1)
@@ -298,7 +295,7 @@ contains
         end do
       case (1)                              ! RRR: B (p1) from A (p2), C (p3)
         do j = 1, m
-          if (failed(worst(j))) cycle
+          if (worst(j) /= st_ok) cycle
           call rrr_kernel(lev, xb(:, p2, j), vb(:, p2, j), ab(:, p2, j), xb(:, p3, j), &
                           vb(:, p3, j), ab(:, p3, j), r1, r2, r3, r4, r5, &
                           xb(:, p1, j), vb(:, p1, j), ab(:, p1, j), u2, u3, &
@@ -310,7 +307,7 @@ contains
         end do
       case (2)                              ! RRP: B (p1) from A (p2), guide through K (p3)
         do j = 1, m
-          if (failed(worst(j))) cycle
+          if (worst(j) /= st_ok) cycle
           um = guide(lm, j, r3, r4)
           call rrp_kernel(lev, xb(:, p2, j), vb(:, p2, j), ab(:, p2, j), xb(:, p3, j), &
                           vb(:, p3, j), ab(:, p3, j), um, wb(lm, j), eb(lm, j), r1, r7, &
@@ -324,7 +321,7 @@ contains
         end do
       case (3)                              ! RPR: B (p1) from A (p2), link 3 about C (p3)
         do j = 1, m
-          if (failed(worst(j))) cycle
+          if (worst(j) /= st_ok) cycle
           call rpr_kernel(lev, xb(:, p2, j), vb(:, p2, j), ab(:, p2, j), xb(:, p3, j), &
                           vb(:, p3, j), ab(:, p3, j), r1, r2, xb(:, p1, j), vb(:, p1, j), &
                           ab(:, p1, j), u3, wb(l3, j), eb(l3, j), q1, q2, st, est)
@@ -336,7 +333,7 @@ contains
         end do
       case (4)                              ! PRP: B (p1) on guides through A (p2), C (p3)
         do j = 1, m
-          if (failed(worst(j))) cycle
+          if (worst(j) /= st_ok) cycle
           um = guide(lm, j, r1, r2)
           un = guide(ln, j, r3, r4)
           call prp_kernel(lev, xb(:, p2, j), vb(:, p2, j), ab(:, p2, j), um, wb(lm, j), &
@@ -352,7 +349,7 @@ contains
         end do
       case (5)                              ! RPP: K (p1) on the guide through A (p2), C (p3)
         do j = 1, m
-          if (failed(worst(j))) cycle
+          if (worst(j) /= st_ok) cycle
           um = guide(lm, j, r1, r2)
           call rpp_kernel(lev, xb(:, p2, j), vb(:, p2, j), ab(:, p2, j), um, wb(lm, j), &
                           eb(lm, j), r6, r3, r4, xb(:, p3, j), vb(:, p3, j), ab(:, p3, j), &
@@ -367,7 +364,7 @@ contains
         end do
       case (6)                              ! a point D (p1) on link l2 from P (p2), Q (p3)
         do j = 1, m
-          if (failed(worst(j))) cycle
+          if (worst(j) /= st_ok) cycle
           u2 = [cb(l2, j), sb(l2, j)]
           call rigid_kernel(lev, xb(:, p2, j), vb(:, p2, j), ab(:, p2, j), wb(l2, j), &
                             eb(l2, j), u2, xb(:, p3, j), p3 == p2, r1, r2, r3, &
@@ -376,7 +373,7 @@ contains
         end do
       case default
         do j = 1, m
-          if (failed(worst(j))) cycle
+          if (worst(j) /= st_ok) cycle
           st = st_missing                   ! an unknown kind: an error, never skipped
           call account(j, k, st, 0.0_dp)
         end do
@@ -414,79 +411,87 @@ contains
       end do
     end function reduced_inertia
 
-    ! load f at point p on link l: into the link's resultant and moment about its first point
-    subroutine load(l, p, fx, fy)
-      integer, intent(in) :: l, p
+    ! load f at point p on link l: into the link's resultant and moment about its first
+    ! point (position j of the block)
+    subroutine load(j, l, p, fx, fy)
+      integer, intent(in) :: j, l, p
       real(dp), intent(in) :: fx, fy
       integer :: b
       b = base(l)
       fl(1, l) = fl(1, l) + fx
       fl(2, l) = fl(2, l) + fy
-      ml(l) = ml(l) + (x(1, p) - x(1, b))*fy - (x(2, p) - x(2, b))*fx
+      ml(l) = ml(l) + (xb(1, p, j) - xb(1, b, j))*fy - (xb(2, p, j) - xb(2, b, j))*fx
     end subroutine load
 
-    subroutine forces(i)
-      integer, intent(in) :: i
-      integer :: j, p, l, q, k
-      real(dp) :: fx, fy, mr, dl(2), dn, ff
+    ! The force step of position i, the block's position j (w2 = omega**2, ei = epsilon)
+    subroutine forces(i, j, w2, ei)
+      integer, intent(in) :: i, j
+      real(dp), intent(in) :: w2, ei
+      integer :: q, p, l, r, k
+      real(dp) :: fx, fy, mr, dl(2), dn, ff, ax, ay
       logical :: ok
       fl = 0.0_dp
       ml = 0.0_dp
       mr = 0.0_dp
-      do j = 1, nm
-        p = mpoint(j); l = mlink(j)
-        fx = -mval(1, j)*aa(1, p)
-        fy = -mval(1, j)*(aa(2, p) + gravity)
-        call load(l, p, fx, fy)
-        ml(l) = ml(l) - mval(2, j)*ee(l)
-        mr = mr - mval(1, j)*gravity*v(2, p)
+      do q = 1, nm
+        p = mpoint(q); l = mlink(q)
+        ! the inertia loads: -m a_S, -J_S eps
+        ax = ab(1, p, j)*w2 + vb(1, p, j)*ei
+        ay = ab(2, p, j)*w2 + vb(2, p, j)*ei
+        fx = -mval(1, q)*ax
+        fy = -mval(1, q)*(ay + gravity)
+        call load(j, l, p, fx, fy)
+        ml(l) = ml(l) - mval(2, q)*(eb(l, j)*w2 + wb(l, j)*ei)
+        mr = mr - mval(1, q)*gravity*vb(2, p, j)
       end do
       jf = 1 + (i - 1)*min(nfv - 1, 1)
-      do j = 1, nf
-        p = fpoint(j); l = flink(j)
-        call load(l, p, fval(1, j, jf), fval(2, j, jf))
-        mr = mr + fval(1, j, jf)*v(1, p) + fval(2, j, jf)*v(2, p)
+      do q = 1, nf
+        p = fpoint(q); l = flink(q)
+        call load(j, l, p, fval(1, q, jf), fval(2, q, jf))
+        mr = mr + fval(1, q, jf)*vb(1, p, j) + fval(2, q, jf)*vb(2, p, j)
       end do
       jt = 1 + (i - 1)*min(ntv - 1, 1)
-      do j = 1, nt
-        l = tlink(j)
-        ml(l) = ml(l) + tval(j, jt)
-        mr = mr + tval(j, jt)*w(l)
+      do q = 1, nt
+        l = tlink(q)
+        ml(l) = ml(l) + tval(q, jt)
+        mr = mr + tval(q, jt)*wb(l, j)
       end do
       js = 1 + (i - 1)*min(nspv - 1, 1)
-      do j = 1, nsp
-        p = spp(1, j); q = spp(2, j)
-        dl = x(:, q) - x(:, p)
+      do q = 1, nsp
+        p = spp(1, q); r = spp(2, q)
+        dl = xb(:, r, j) - xb(:, p, j)
         dn = norm2d(dl(1), dl(2))
         if (dn == 0.0_dp) then
           ! the ends meet: a force k (0 - L0) /= 0 has no direction here, the position
-          ! fails (fgroup = -j names the spring); with k L0 = 0 there is no force to drop
-          if (spv(1, j, js)*spv(2, j, js) /= 0.0_dp) then
+          ! fails (fgroup = -q names the spring); with k L0 = 0 there is no force to drop
+          if (spv(1, q, js)*spv(2, q, js) /= 0.0_dp) then
             status(i) = st_singular
-            fgroup(i) = -j
+            fgroup(i) = -q
           end if
           cycle
         end if
-        ff = spv(1, j, js)*(dn - spv(2, j, js))   ! tension > 0 pulls P towards Q
+        ff = spv(1, q, js)*(dn - spv(2, q, js))   ! tension > 0 pulls P towards Q
         dl = dl/dn
-        call load(spl(1, j), p, ff*dl(1), ff*dl(2))
-        call load(spl(2, j), q, -ff*dl(1), -ff*dl(2))
-        mr = mr + ff*(dl(1)*(v(1, p) - v(1, q)) + dl(2)*(v(2, p) - v(2, q)))
+        call load(j, spl(1, q), p, ff*dl(1), ff*dl(2))
+        call load(j, spl(2, q), r, -ff*dl(1), -ff*dl(2))
+        mr = mr + ff*(dl(1)*(vb(1, p, j) - vb(1, r, j)) + dl(2)*(vb(2, p, j) - vb(2, r, j)))
       end do
       mred(i) = mr
       ! the groups in reverse order (chapter 7)
       do k = ns, 1, -1
-        if (gslot(k) > 0) call group_forces(k, gi(1, k), gslot(k), i)
+        if (gslot(k) > 0) call group_forces(k, gi(1, k), gslot(k), i, j)
       end do
       ! the crank (link 1), its loads gathered about O: M_b + M_1 = 0, the frame's
       ! reaction on it -F_1
-      react(:, 1, i) = [-fl(1, 1), -fl(2, 1), 0.0_dp]
+      react(1, 1, i) = -fl(1, 1)
+      react(2, 1, i) = -fl(2, 1)
+      react(3, 1, i) = 0.0_dp
       mbal(i) = -ml(1)
       ! every force and moment a finite double, else the position is st_range
       ok = abs(mbal(i)) <= huge(1.0_dp) .and. abs(mred(i)) <= huge(1.0_dp)
       do k = 1, npair
-        do j = 1, 3
-          ok = ok .and. abs(react(j, k, i)) <= huge(1.0_dp)
+        do q = 1, 3
+          ok = ok .and. abs(react(q, k, i)) <= huge(1.0_dp)
         end do
       end do
       if (.not. ok) then
@@ -509,26 +514,27 @@ contains
     ! links' loads (gathered about their first points) gathered for groups'
     ! group_reactions (the chapter 7 kernel of every kind); the reactions scattered into
     ! react and, opposite, onto the outside links.
-    subroutine group_forces(k, kind, slot, i)
-      integer, intent(in) :: k, kind, slot, i
-      integer :: pt(3), ty(3), frl(3), l2, l3, j, st
+    subroutine group_forces(k, kind, slot, i, j)
+      integer, intent(in) :: k, kind, slot, i, j
+      integer :: pt(3), ty(3), frl(3), l2, l3, q, st
       real(dp) :: dir(2, 3), pp(2, 3), out(3, 3)
       l2 = gi(5, k); l3 = gi(6, k)
-      call pairs(k, kind, pt, ty, dir, frl)
-      do j = 1, 3
-        pp(:, j) = x(:, pt(j))
+      call pairs(k, kind, j, pt, ty, dir, frl)
+      do q = 1, 3
+        pp(1, q) = xb(1, pt(q), j)
+        pp(2, q) = xb(2, pt(q), j)
       end do
-      call group_reactions(pp, ty, dir, fl(:, l2), ml(l2), x(:, base(l2)), fl(:, l3), &
-                           ml(l3), x(:, base(l3)), out, st)
+      call group_reactions(pp, ty, dir, fl(:, l2), ml(l2), xb(:, base(l2), j), fl(:, l3), &
+                           ml(l3), xb(:, base(l3), j), out, st)
       if (st /= st_ok) then
         status(i) = st
         fgroup(i) = k
       end if
-      do j = 1, 3
-        react(:, slot + j - 1, i) = out(:, j)
-        if (j /= 2 .and. frl(j) > 0) then
-          call load(frl(j), pt(j), -out(1, j), -out(2, j))   ! the outside bears the opposite
-          ml(frl(j)) = ml(frl(j)) - out(3, j)
+      do q = 1, 3
+        react(:, slot + q - 1, i) = out(:, q)
+        if (q /= 2 .and. frl(q) > 0) then
+          call load(j, frl(q), pt(q), -out(1, q), -out(2, q))   ! the outside bears the opposite
+          ml(frl(q)) = ml(frl(q)) - out(3, q)
         end if
       end do
     end subroutine group_forces
@@ -536,8 +542,8 @@ contains
     ! The pairs of a group, in group_reactions' order: their points, types (the kind's
     ! declaration, groups' kind_pairs) and sliding directions, and the outside links of
     ! pairs 1 and 3 (0: the frame)
-    subroutine pairs(k, kind, pt, ty, dir, frl)
-      integer, intent(in) :: k, kind
+    subroutine pairs(k, kind, j, pt, ty, dir, frl)
+      integer, intent(in) :: k, kind, j
       integer, intent(out) :: pt(3), ty(3), frl(3)
       real(dp), intent(out) :: dir(2, 3)
       integer :: pb, pa, pc, l2, l3
@@ -552,21 +558,21 @@ contains
         frl(1) = owner(pa); frl(3) = owner(pc)
       case (2)
         pt = [pa, pb, pb]
-        dir(:, 3) = [c(l3), s(l3)]
+        dir(:, 3) = [cb(l3, j), sb(l3, j)]
         frl(1) = owner(pa); frl(3) = gi(7, k)
       case (3)
         pt = [pa, pb, pc]
-        dir(:, 2) = [c(l3), s(l3)]
+        dir(:, 2) = [cb(l3, j), sb(l3, j)]
         frl(1) = owner(pa); frl(3) = owner(pc)
       case (4)
         pt = [pb, pb, pb]
-        dir(:, 1) = [c(l2), s(l2)]
-        dir(:, 3) = [c(l3), s(l3)]
+        dir(:, 1) = [cb(l2, j), sb(l2, j)]
+        dir(:, 3) = [cb(l3, j), sb(l3, j)]
         frl(1) = gi(7, k); frl(3) = gi(8, k)
       case (5)
         pt = [pb, pc, pc]
-        dir(:, 1) = [c(l2), s(l2)]
-        dir(:, 2) = [c(l3), s(l3)]
+        dir(:, 1) = [cb(l2, j), sb(l2, j)]
+        dir(:, 2) = [cb(l3, j), sb(l3, j)]
         frl(1) = gi(7, k); frl(3) = owner(pc)
       end select
     end subroutine pairs
