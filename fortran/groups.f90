@@ -35,7 +35,7 @@ module groups
   ! scales s1, s2 of its columns (the lengths the columns are unit vectors times), so that
   ! the estimate is that of the unit-free system and the same in any length unit.
   type :: cram
-    real(dp) :: a11, a12, a21, a22, rdet, na, nadet, s1, s2
+    real(dp) :: a11, a12, a21, a22, rdet, na, rna, nadet, s1, s2
     integer :: st, e
   end type cram
   public :: cram, cramer_set, cramer, abs_err, carried
@@ -60,7 +60,7 @@ contains
   pure subroutine cramer_set(a11, a12, a21, a22, f, s1, s2)
     real(dp), intent(in) :: a11, a12, a21, a22, s1, s2
     type(cram), intent(out) :: f
-    real(dp) :: det, amax
+    real(dp) :: det, amax, r1, r2
     f%e = 0
     amax = max(abs(a11), abs(a12), abs(a21), abs(a22))
     if (amax > 2.0_dp**200 .or. (amax < 2.0_dp**(-200) .and. amax > 0.0_dp)) then
@@ -81,13 +81,20 @@ contains
       f%s1 = scale(s1, -f%e)                ! only nadet below uses them so
       f%s2 = scale(s2, -f%e)
     end if
-    f%na = sqrt((f%a11/f%s1)**2 + (f%a21/f%s1)**2 + (f%a12/f%s2)**2 + (f%a22/f%s2)**2)
+    ! the columns' scales by their reciprocals (two divisions, not four: the estimate
+    ! moves by a rounding, exact for the scales 1 and powers of 2), and 1/|A|_F for the
+    ! bounds' denominators (cramer, abs_err: a product instead of a division each)
+    r1 = 1.0_dp/f%s1
+    r2 = 1.0_dp/f%s2
+    f%na = sqrt((f%a11*r1)**2 + (f%a21*r1)**2 + (f%a12*r2)**2 + (f%a22*r2)**2)
     det = f%a11*f%a22 - f%a12*f%a21
     f%nadet = 0.0_dp
     f%rdet = 0.0_dp
+    f%rna = 0.0_dp
     if (det /= 0.0_dp) then
       f%rdet = 1.0_dp/det
       f%nadet = f%na*abs(f%s1*(f%s2*f%rdet))
+      f%rna = 1.0_dp/f%na
     end if
     f%s1 = s1
     f%s2 = s2
@@ -100,6 +107,7 @@ contains
     real(dp), intent(in) :: b1, b2, da, db, sb
     real(dp), intent(out) :: y1, y2, rel
     integer, intent(out) :: st
+    real(dp) :: ny, den
     y1 = 0.0_dp; y2 = 0.0_dp
     rel = huge(1.0_dp)
     st = f%st
@@ -115,7 +123,15 @@ contains
       st = st_range
       return
     end if
-    rel = bound2(f%na, f%nadet, y1*f%s1, y2*f%s2, da, db, sb)
+    ! numerics' bound2 of the unit-free system, its denominator max(|y|, sb/|A|_F) by
+    ! the reciprocal cramer_set keeps (one division here, not two)
+    ny = norm2d(y1*f%s1, y2*f%s2)
+    den = max(ny, sb*f%rna)
+    if (den == 0.0_dp) then
+      rel = 0.0_dp                          ! no data: y = 0 exactly
+    else
+      rel = f%nadet*((2.0_dp*da + 4.0_dp*uround*f%na)*ny + db)/den
+    end if
   end subroutine cramer
 
   ! The absolute error (in the units of the scaled unknowns y1 s1, y2 s2) that cramer's
@@ -123,7 +139,7 @@ contains
   pure real(dp) function abs_err(f, y1, y2, sb, rel)
     type(cram), intent(in) :: f
     real(dp), intent(in) :: y1, y2, sb, rel
-    abs_err = rel*max(norm2d(y1*f%s1, y2*f%s2), sb/f%na)
+    abs_err = rel*max(norm2d(y1*f%s1, y2*f%s2), sb*f%rna)
   end function abs_err
   !
   ! Conventions of every kernel below (one position, one group):

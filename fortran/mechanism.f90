@@ -92,7 +92,7 @@ contains
     integer, allocatable :: gslot(:)
     integer :: i, i0, j, m, k, jf, jt, js, fg, g, p, l, lev, st
     real(dp) :: wi, ei, w2, px, py
-    logical :: masses
+    logical :: masses, bad
 
     m = min(n, nb)
     allocate(xb(2, np, m), vb(2, np, m), ab(2, np, m), cb(0:nl, m), sb(0:nl, m), &
@@ -117,6 +117,8 @@ contains
     masses = any(mval /= 0.0_dp)
     lev = min(need, 3)
     wi = 0.0_dp
+    ei = 0.0_dp
+    w2 = 0.0_dp
     do i0 = 0, n - 1, nb
       m = min(nb, n - i0)
       ! the kinematics, step by step over the block (each step's slots read once, its
@@ -141,19 +143,76 @@ contains
           cycle
         end if
         ! the outputs: the moving points and links only (the caller knows the frame's),
-        ! one scalar statement a number (cheaper than the little array sections); a
-        ! position found out of range here is overwritten with NaN by the caller
-        do k = 1, nop
-          p = outp(k)
-          px = xb(1, p, j)
-          py = xb(2, p, j)
-          pos(1, k, i) = px
-          pos(2, k, i) = py
-          if (.not. (abs(px) <= huge(px) .and. abs(py) <= huge(py))) then
-            st = st_range
-            fg = 0
-          end if
-        end do
+        ! one scalar statement a number (cheaper than the little array sections), one
+        ! loop over the points and one over the links for the level asked.  A position
+        ! found out of range here (a position not finite, or velocities and
+        ! accelerations beyond the range of doubles: in_range) gets st_range, and its
+        ! outputs are overwritten with NaN by the caller (the order of the two findings
+        ! does not matter: either gives st_range and fgroup 0)
+        bad = .false.
+        if (lev >= 2) then
+          wi = omega(1 + (i - 1)*inc_w)
+          ei = epsil(1 + (i - 1)*inc_e)
+          w2 = wi*wi
+        end if
+        select case (lev)
+        case (1)
+          do k = 1, nop
+            p = outp(k)
+            px = xb(1, p, j)
+            py = xb(2, p, j)
+            pos(1, k, i) = px
+            pos(2, k, i) = py
+            if (.not. (abs(px) <= huge(px) .and. abs(py) <= huge(py))) bad = .true.
+          end do
+          do k = 1, nol
+            l = outl(k)
+            th(1, k, i) = cb(l, j)
+            th(2, k, i) = sb(l, j)
+          end do
+        case (2)
+          do k = 1, nop
+            p = outp(k)
+            px = xb(1, p, j)
+            py = xb(2, p, j)
+            pos(1, k, i) = px
+            pos(2, k, i) = py
+            if (.not. (abs(px) <= huge(px) .and. abs(py) <= huge(py))) bad = .true.
+            vel(1, k, i) = vb(1, p, j)*wi
+            vel(2, k, i) = vb(2, p, j)*wi
+          end do
+          do k = 1, nol
+            l = outl(k)
+            th(1, k, i) = cb(l, j)
+            th(2, k, i) = sb(l, j)
+            om(k, i) = wb(l, j)*wi
+          end do
+        case default
+          do k = 1, nop
+            p = outp(k)
+            px = xb(1, p, j)
+            py = xb(2, p, j)
+            pos(1, k, i) = px
+            pos(2, k, i) = py
+            if (.not. (abs(px) <= huge(px) .and. abs(py) <= huge(py))) bad = .true.
+            vel(1, k, i) = vb(1, p, j)*wi
+            vel(2, k, i) = vb(2, p, j)*wi
+            acc(1, k, i) = ab(1, p, j)*w2 + vb(1, p, j)*ei
+            acc(2, k, i) = ab(2, p, j)*w2 + vb(2, p, j)*ei
+          end do
+          do k = 1, nol
+            l = outl(k)
+            th(1, k, i) = cb(l, j)
+            th(2, k, i) = sb(l, j)
+            om(k, i) = wb(l, j)*wi
+            ep(k, i) = eb(l, j)*w2 + wb(l, j)*ei
+          end do
+        end select
+        if (.not. bad .and. lev >= 2) bad = .not. in_range(j, wi, ei)
+        if (bad) then
+          st = st_range
+          fg = 0
+        end if
         ! status and fgroup come in zeroed (solve): a position that is fine is not
         ! written, which spares the kernel clearing their pages
         if (st /= st_ok .or. fg /= 0) then
@@ -161,43 +220,9 @@ contains
           fgroup(i) = fg
           if (st == st_range) cycle
         end if
-        do k = 1, nol
-          l = outl(k)
-          th(1, k, i) = cb(l, j)
-          th(2, k, i) = sb(l, j)
-        end do
-        if (need >= 2) then
-          wi = omega(1 + (i - 1)*inc_w)
-          ! velocities and accelerations (and the loads they make) within the range of
-          ! doubles: else the position is st_range (the caller raises RangeError)
-          if (.not. in_range(j, wi, epsil(1 + (i - 1)*inc_e))) then
-            status(i) = st_range
-            fgroup(i) = 0
-            cycle
-          end if
-          do k = 1, nop
-            p = outp(k)
-            vel(1, k, i) = vb(1, p, j)*wi
-            vel(2, k, i) = vb(2, p, j)*wi
-          end do
-          do k = 1, nol
-            om(k, i) = wb(outl(k), j)*wi
-          end do
+        if (lev >= 2) then
           jred(i) = 0.0_dp
           if (masses) jred(i) = reduced_inertia(j)
-        end if
-        if (need >= 3) then
-          ei = epsil(1 + (i - 1)*inc_e)
-          w2 = wi*wi
-          do k = 1, nop
-            p = outp(k)
-            acc(1, k, i) = ab(1, p, j)*w2 + vb(1, p, j)*ei
-            acc(2, k, i) = ab(2, p, j)*w2 + vb(2, p, j)*ei
-          end do
-          do k = 1, nol
-            l = outl(k)
-            ep(k, i) = eb(l, j)*w2 + wb(l, j)*ei
-          end do
         end if
         ! the force step, on position j of the block's kinematics as they are (the
         ! inertia loads' accelerations formed where a mass needs them)
