@@ -89,8 +89,8 @@ contains
     real(dp), allocatable :: cb(:, :), sb(:, :), wb(:, :), eb(:, :), maxest(:)
     integer, allocatable :: worst(:), fgb(:)
     real(dp), allocatable :: fl(:, :), ml(:)
-    integer, allocatable :: gslot(:)
-    integer :: i, i0, j, m, k, jf, jt, js, fg, g, p, l, lev, st
+    integer, allocatable :: gslot(:), mov(:)
+    integer :: i, i0, j, m, k, jf, jt, js, fg, g, p, l, lev, st, nmov
     real(dp) :: wi, ei, w2, px, py
     logical :: masses, bad
 
@@ -111,6 +111,16 @@ contains
       if (gi(1, k) >= 1 .and. gi(1, k) <= 5) then
         gslot(k) = 2 + 3*g
         g = g + 1
+      end if
+    end do
+    ! the moving points: the ones a step places (its first point); the others (the
+    ! frame's) stay at rest in vb, ab, as link 0 in wb, eb
+    allocate(mov(ns))
+    nmov = 0
+    do k = 1, ns
+      if (gi(1, k) >= 0 .and. gi(1, k) <= 6) then
+        nmov = nmov + 1
+        mov(nmov) = gi(2, k)
       end if
     end do
     ! no masses (the caller's one neutral entry of zero mass and inertia): J_red = 0
@@ -230,7 +240,7 @@ contains
       end do
     end do
     deallocate(xb, vb, ab, cb, sb, wb, eb, maxest, worst, fgb)
-    deallocate(fl, ml, gslot)
+    deallocate(fl, ml, gslot, mov)
 
   contains
 
@@ -238,32 +248,34 @@ contains
 
     ! Whether the velocities x' omega and accelerations x'' omega**2 + x' epsilon of
     ! every point and link of position j of the block stay below huge/16 (room for the
-    ! sums of the force step).  The largest moduli by explicit loops (maxval's NaN-aware
-    ! loop cost ~200 instructions a position each): a NaN is passed over as maxval passes
-    ! it over, and the frame (a fixed point, link 0) is always at rest, so that a maximum
-    ! of only NaNs never arises: the same verdicts, cheaper
+    ! sums of the force step).  The largest moduli by explicit loops over the moving
+    ! points and links (maxval's NaN-aware loop over all of them cost ~200 instructions
+    ! a position each): a NaN is passed over as maxval passes it over, and the frame's
+    ! points and link 0, at rest, are the maxima's start 0: the same verdicts, cheaper
     logical function in_range(j, wi, ei)
       integer, intent(in) :: j
       real(dp), intent(in) :: wi, ei
       real(dp) :: vm, am, lim
-      integer :: p, l
+      integer :: p, l, q
       lim = huge(1.0_dp)/16.0_dp
       vm = 0.0_dp
-      do p = 1, np
+      do q = 1, nmov
+        p = mov(q)
         if (abs(vb(1, p, j)) > vm) vm = abs(vb(1, p, j))
         if (abs(vb(2, p, j)) > vm) vm = abs(vb(2, p, j))
       end do
-      do l = 0, nl
+      do l = 1, nl
         if (abs(wb(l, j)) > vm) vm = abs(wb(l, j))
       end do
       in_range = abs(wi)*vm <= lim
       if (need < 3 .or. .not. in_range) return
       am = 0.0_dp
-      do p = 1, np
+      do q = 1, nmov
+        p = mov(q)
         if (abs(ab(1, p, j)) > am) am = abs(ab(1, p, j))
         if (abs(ab(2, p, j)) > am) am = abs(ab(2, p, j))
       end do
-      do l = 0, nl
+      do l = 1, nl
         if (abs(eb(l, j)) > am) am = abs(eb(l, j))
       end do
       in_range = wi*wi <= lim .and. (wi*wi)*am <= lim .and. abs(ei)*vm <= lim .and. &

@@ -74,13 +74,17 @@ contains
 
   ! |(x, y)| as the book writes it, SQRT(X**2 + Y**2), where neither square can overflow or
   ! underflow; the libm hypot (about three times the cost, issue 9's profile) only outside
-  ! that range.  Within it the two differ by at most an ulp or so.
+  ! that range, but for (0, 0), whose hypot is 0 (the Mechanism's neutral spring of a
+  ! mechanism without springs is one, at every position).  Within it the two differ by at
+  ! most an ulp or so.
   pure real(dp) function norm2d(x, y)
     real(dp), intent(in) :: x, y
     real(dp) :: m
     m = max(abs(x), abs(y))
     if (m > 1.0e-150_dp .and. m < 1.0e150_dp) then
       norm2d = sqrt(x*x + y*y)
+    else if (m == 0.0_dp) then
+      norm2d = 0.0_dp
     else
       norm2d = hypot(x, y)
     end if
