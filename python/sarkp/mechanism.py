@@ -25,6 +25,7 @@ from __future__ import annotations
 import inspect
 import math
 import numbers
+import operator
 import warnings
 
 import numpy as np
@@ -732,7 +733,7 @@ class Mechanism:
         if out is None and t is None and type(phi) is float:
             # one position, the fast way: a plan an earlier solve of this need and
             # selection left (so they are known good); any other input goes the general
-            # way below, which raises what it raises
+            # way (_solve), which raises what it raises
             tab = self._cache
             fast = None
             if tab is not None:
@@ -741,24 +742,43 @@ class Mechanism:
                 except TypeError:           # a list of names is not a key: the general way
                     pass
             if (fast is not None and type(omega) is float and type(epsilon) is float
-                    and type(gravity) is float and math.isfinite(phi)
-                    and math.isfinite(omega) and math.isfinite(epsilon)
-                    and math.isfinite(gravity) and (on_error == "raise" or on_error == "nan")
+                    and type(gravity) is float
+                    # one test for the four (an overflow of the sum: the general way)
+                    and math.isfinite(phi + omega + epsilon + gravity)
+                    and (on_error == "raise" or on_error == "nan")
                     and MODE_CODE.get() == 0):
-                level, ipk, rpk, nro, dt, names, columns, plan, sel = fast
+                level, ipk, rpk, nro, dt, pick, columns, plan, sel = fast
                 rout = np.empty(nro)
                 st = _SOLVE_ONE(level, ipk, rpk, phi, omega, epsilon, gravity, rout)
                 rec = np.ndarray((), dt, rout)
                 if not st:
-                    return MechanismResult._make((
-                        self, columns, need, np.array(phi),
-                        *[None if k is None else rec[k] for k in names], rec["status"]))
+                    # the fields computed and the status: views of rout (pick), in
+                    # FIELDS' order with None for those not computed
+                    f = pick(rec)
+                    ph = np.array(phi)
+                    if level == 3:
+                        r = (self, columns, need, ph, f[0], f[1], f[2], f[3], f[4], f[5],
+                             None, None, f[6], None, f[7])
+                    elif level == 4:
+                        r = (self, columns, need, ph, *f)
+                    elif level == 2:
+                        r = (self, columns, need, ph, f[0], f[1], None, f[2], f[3], None,
+                             None, None, f[4], None, f[5])
+                    else:
+                        r = (self, columns, need, ph, f[0], None, None, f[1], None, None,
+                             None, None, None, None, f[2])
+                    return tuple.__new__(MechanismResult, r)
                 if st == -1:
                     raise RuntimeError("solve: the packed tables do not add up (a bug of "
                                        "sarkp)")
                 return self._result({k: rec[k] for k in plan["computed"]}, rec["status"],
                                     rec["fgroup"].reshape(1), plan, sel, need,
                                     np.array((phi,)), (), (), on_error, 4)
+        return self._solve(phi, omega, epsilon, need, gravity, on_error, points, links, out,
+                           t)
+
+    def _solve(self, phi, omega, epsilon, need, gravity, on_error, points, links, out, t):
+        """solve's general way (every input checked)."""
         if self._crank is None:
             raise ValueError("solve: the mechanism has no crank (m.crank)")
         level = NEEDS.get(need) if isinstance(need, str) else None
@@ -769,7 +789,7 @@ class Mechanism:
         if MODE_CODE.get() != 0:
             warnings.warn("Mechanism.solve has no as-printed mode: it computes the "
                           "corrected results (pi to double precision); the book's routines "
-                          "reproduce the printed tables", UserWarning, stacklevel=2)
+                          "reproduce the printed tables", UserWarning, stacklevel=3)
         if type(phi) is float:              # one position, quickly
             if not math.isfinite(phi):
                 raise ValueError("solve: phi must be finite")
@@ -823,7 +843,7 @@ class Mechanism:
                     if len(tab["fast"]) > 32:
                         tab["fast"].clear()
                     tab["fast"][key] = (level, ipk, rpk, plan["nro"] + 1, plan["dt1"],
-                                        plan["names"], sel["columns"], plan, sel)
+                                        plan["pick"], sel["columns"], plan, sel)
             return self._finish(np.ndarray((), plan["dt"], rout), iout, plan, sel, need,
                                 phiv, shape, lead, on_error)
         shapes, computed, finals = plan["shapes"], plan["computed"], plan["finals"]
@@ -843,7 +863,7 @@ class Mechanism:
         else:
             _sarkp.mechanism.mech_solve_many(level, *args)
         return self._result(res, status.T.reshape(lead + shape), fgroup.T, plan, sel, need,
-                            phiv, shape, lead, on_error, 4)
+                            phiv, shape, lead, on_error, 5)
 
     def _finish(self, rec, iout, plan, sel, need, phiv, shape, lead, on_error):
         """The result of the packed entry: the fields are views of its output buffer
@@ -854,7 +874,7 @@ class Mechanism:
         return self._result({k: rec[k] for k in plan["computed"]},
                             iout[:m].reshape(lead + shape),
                             iout[m:].reshape(lead + (phiv.size,)), plan, sel, need, phiv,
-                            shape, lead, on_error, 5)
+                            shape, lead, on_error, 6)
 
     def _result(self, res, status, fgroup, plan, sel, need, phiv, shape, lead, on_error,
                 stacklevel):
@@ -973,8 +993,9 @@ class Mechanism:
         plan = {"shapes": shapes, "computed": computed, "views": tuple(views),
                 "finals": finals, "nro": offset // 8, "nio": 2 * n * width, "dt": dt,
                 "dt1": dt1,
-                # the fast way's fields (None: not computed)
-                "names": tuple(None if e is False else k for k, e in views)}
+                # the fast way's result: the computed fields and the status of dt1's
+                # record (solve places them)
+                "pick": operator.itemgetter(*computed, "status")}
         if len(plans) > 32:                 # many shapes of phi: keep the cache small
             plans.clear()
         plans[key] = plan
