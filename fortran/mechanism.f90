@@ -47,7 +47,7 @@ module mechanism
   implicit none
   private
   public :: mech_solve, mech_solve_many
-  public :: mech_solve_packed, mech_solve_one
+  public :: mech_solve_packed, mech_solve_one, mech_solve_few
 
 
 contains
@@ -736,5 +736,34 @@ contains
     rout(nro) = transfer(io, rout(nro))
     st = io(1)
   end subroutine mech_solve_one
+
+  ! A 1-d phi (the fast way of Mechanism.solve for an array): the packed entry for one
+  ! description with omega, epsilon and gravity as numbers; nz the number of positions
+  ! whose status is not OK (-2: a phi that is not finite, -1: sizes that do not add up;
+  ! nothing computed then).
+  subroutine mech_solve_few(need, n, phi, ni, ipk, nrk, rpk, omega, epsil, gravity, nro, &
+                            rout, nio, iout, nz)
+    !f2py threadsafe
+    integer, intent(in) :: need, n, ni, nrk, nro, nio
+    integer, intent(in) :: ipk(ni)
+    real(dp), intent(in) :: phi(n), rpk(nrk), omega, epsil, gravity
+    real(dp), intent(inout) :: rout(nro)
+    integer, intent(inout) :: iout(nio)
+    integer, intent(out) :: nz
+    real(dp) :: w(1), e(1)
+    integer :: i
+    nz = -2
+    do i = 1, n
+      if (.not. abs(phi(i)) <= huge(phi(i))) return
+    end do
+    nz = -1
+    if (nio < 1) return
+    w(1) = omega
+    e(1) = epsil
+    call mech_solve_packed(need, n, 1, ni, ipk, nrk, rpk, phi, w, e, 0, 0, gravity, nro, &
+                           rout, nio, iout)
+    if (iout(1) == -1) return
+    nz = count(iout(1:n) /= 0)
+  end subroutine mech_solve_few
 
 end module mechanism

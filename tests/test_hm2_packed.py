@@ -1,9 +1,10 @@
 """Mechanism.solve through the packed entries (issue 25, the one-position cost).
 
 solve calls mech_solve_packed (fortran/mechanism.f90: the description's tables in one
-integer and one real array, the outputs in one buffer) and, for a number phi whose need
-and selection an earlier solve has planned, mech_solve_one (the fast way); ``out=`` still
-calls mech_solve with its forty arguments.  The three must give the same numbers bit for
+integer and one real array, the outputs in one buffer) and, once an earlier solve has
+planned the need and selection, mech_solve_one for a number phi and mech_solve_few for a
+1-d array of that size (the fast ways); ``out=`` still calls mech_solve with its forty
+arguments.  The three must give the same numbers bit for
 bit, at one position and at many (a position's arithmetic does not depend on its
 neighbours), for every group kind, need, selection and design; results of two calls never
 share memory; bad input raises what it raised before the fast way existed (checked
@@ -125,10 +126,11 @@ def same(a, b, pick=None):
         assert np.ascontiguousarray(x).tobytes() == np.ascontiguousarray(y).tobytes(), f
 
 
-def planned(m, need, sel):
-    """Whether solve has the fast way's plan for this need and selection."""
+def planned(m, need, sel, *n):
+    """Whether solve has the fast way's plan for this need and selection (and size n of
+    a 1-d phi)."""
     tab = m._cache
-    return tab is not None and (need, sel.get("points"), sel.get("links")) in tab["fast"]
+    return tab is not None and (need, sel.get("points"), sel.get("links"), *n) in tab["fast"]
 
 
 @pytest.mark.parametrize("name,need,k", CASES)
@@ -137,11 +139,13 @@ def test_one_position_fast_way_equals_general_ways(name, need, k):
     sel = sels[k]
     kw = dict(omega=7.5, epsilon=-3.0, need=need, gravity=9.81, **sel)
     m = build()
-    many = m.solve(np.array(PHIS), **kw)
+    many = m.solve(np.array(PHIS), **kw)                # the packed entry; leaves a plan
     assert (many.status == 0).all()
-    assert not planned(m, need, sel)
+    assert not planned(m, need, sel) and planned(m, need, sel, 3)
+    same(m.solve(np.array(PHIS), **kw), many)           # mech_solve_few
     for i, phi in enumerate(PHIS):
         one = m.solve(np.array([phi]), **kw)            # the packed entry, n = 1
+        same(m.solve(np.array([phi]), **kw), one)       # mech_solve_few, n = 1
         first = m.solve(phi, **kw)                      # the packed entry; leaves the plan
         assert planned(m, need, sel)
         fast = m.solve(phi, **kw)                       # mech_solve_one
@@ -252,6 +256,14 @@ BAD = [
     dict(phi=PI - 1e-3, rcb=0.15), dict(phi=PI - 1e-3, rcb=0.15, on_error="nan"),
     dict(phi=1.0, rcb=0.001), dict(phi=1.0, rcb=0.001, on_error="nan"),
     dict(omega=1e155), dict(omega=1e155, on_error="nan"),
+    # a 1-d phi of the planned size
+    dict(phi=np.array([0.3, 1.0])), dict(phi=np.array([0.3, math.nan])),
+    dict(phi=np.array([-math.inf, 1.0])), dict(phi=np.array([0.3, 1.0]), omega=math.inf),
+    dict(phi=np.array([0.3, 1.0])[::-1]), dict(phi=np.array([0.3, 1.0], dtype=np.float32)),
+    dict(phi=np.array([1.0, PI - 1e-5]), rcb=0.15),
+    dict(phi=np.array([1.0, PI - 1e-5]), rcb=0.15, on_error="nan"),
+    dict(phi=np.array([PI - 1e-3, PI - 1e-2]), rcb=0.15),
+    dict(phi=np.array([0.3, 1.0]), omega=1e155, on_error="nan"),
 ]
 
 
@@ -275,11 +287,12 @@ def test_bad_input_raises_as_before(bad):
     warm = m = build()
     for need in NEEDS:                                  # every plan the fast way may use
         for s in ({}, {"points": ("B",)}, {"links": (("A", "B"),)}, {"points": ("Z",)}):
-            try:
-                warm.solve(1.0, omega=1.0, need=need, **s)
-                warm.solve(1.0, omega=1.0, need=need, **s)
-            except (ValueError, sarkp.SarkpError):
-                pass
+            for p in (1.0, np.array([1.0, 2.0])):
+                try:
+                    warm.solve(p, omega=1.0, need=need, **s)
+                    warm.solve(p, omega=1.0, need=need, **s)
+                except (ValueError, sarkp.SarkpError):
+                    pass
     assert m._cache["fast"]
     phi = call.pop("phi")
     planned_way = outcome(lambda: m.solve(phi, **call))

@@ -53,6 +53,7 @@ _FRAME = 0
 _CRANK = 1
 _SOLVE_PACKED = _sarkp.mechanism.mech_solve_packed
 _SOLVE_ONE = _sarkp.mechanism.mech_solve_one
+_SOLVE_FEW = _sarkp.mechanism.mech_solve_few
 
 
 def _real(who, name, value):
@@ -774,6 +775,38 @@ class Mechanism:
                 return self._result({k: rec[k] for k in plan["computed"]}, rec["status"],
                                     rec["fgroup"].reshape(1), plan, sel, need,
                                     np.array((phi,)), (), (), on_error, 4)
+        elif out is None and t is None and type(phi) is np.ndarray:
+            # a 1-d array of doubles, the fast way (its plan left by an earlier solve of
+            # this need, selection and size): mech_solve_few checks phi is finite
+            tab = self._cache
+            fast = None
+            if tab is not None and phi.ndim == 1 and phi.dtype == np.float64 and \
+                    phi.flags.c_contiguous:
+                try:
+                    fast = tab["fast"].get((need, points, links, phi.size))
+                except TypeError:
+                    pass
+            if (fast is not None and type(omega) is float and type(epsilon) is float
+                    and type(gravity) is float
+                    and math.isfinite(omega + epsilon + gravity)
+                    and (on_error == "raise" or on_error == "nan")
+                    and MODE_CODE.get() == 0):
+                level, ipk, rpk, nro, dt, nio, columns, plan, sel = fast
+                n = phi.size
+                rout = np.empty(nro)
+                iout = np.empty(nio, dtype=np.int32)
+                nz = _SOLVE_FEW(level, phi, ipk, rpk, omega, epsilon, gravity, rout, iout)
+                if nz >= 0:
+                    rec = np.ndarray((), dt, rout)
+                    res = {k: rec[k] for k in plan["computed"]}
+                    phiv = phi.reshape(-1)
+                    if nz:
+                        return self._result(res, iout[:n], iout[n:], plan, sel, need, phiv,
+                                            (n,), (), on_error, 4)
+                    return MechanismResult._make((
+                        self, columns, need, phiv,
+                        *[None if e is False else res[k] if e is None else res[k][e]
+                          for k, e in plan["views"]], iout[:n]))
         return self._solve(phi, omega, epsilon, need, gravity, on_error, points, links, out,
                            t)
 
@@ -829,21 +862,29 @@ class Mechanism:
             iout = np.empty(plan["nio"], dtype=np.int32)
             _SOLVE_PACKED(level, 1 if D is None else D, ipk, rpk, phiv, w, e, inc_w, inc_e,
                           g, rout, iout)
-            if (type(phi) is float and D is None and not tab["dynamic"]
+            if (D is None and not tab["dynamic"]
                     and not (level >= 4 and tab["rigid_springs"]
                              and not tab.get("springs_checked"))):
-                # what the fast way above needs to solve this need and selection again
-                # (points and links as given: a list is no key, and goes this way)
-                try:
+                # what the fast way of solve needs to solve this need and selection again
+                # (points and links as given: a list is no key, and goes this way), for
+                # a number phi or a 1-d array of this size
+                key = None
+                if type(phi) is float:
                     key = (need, points, links)
+                    value = (level, ipk, rpk, plan["nro"] + 1, plan["dt1"], plan["pick"],
+                             sel["columns"], plan, sel)
+                elif type(phi) is np.ndarray and phi.ndim == 1 and inc_w == inc_e == 0:
+                    key = (need, points, links, n)
+                    value = (level, ipk, rpk, plan["nro"], plan["dt"], plan["nio"],
+                             sel["columns"], plan, sel)
+                try:
                     hash(key)
                 except TypeError:
                     key = None
                 if key is not None:
                     if len(tab["fast"]) > 32:
                         tab["fast"].clear()
-                    tab["fast"][key] = (level, ipk, rpk, plan["nro"] + 1, plan["dt1"],
-                                        plan["pick"], sel["columns"], plan, sel)
+                    tab["fast"][key] = value
             return self._finish(np.ndarray((), plan["dt"], rout), iout, plan, sel, need,
                                 phiv, shape, lead, on_error)
         shapes, computed, finals = plan["shapes"], plan["computed"], plan["finals"]
@@ -868,7 +909,7 @@ class Mechanism:
     def _finish(self, rec, iout, plan, sel, need, phiv, shape, lead, on_error):
         """The result of the packed entry: the fields are views of its output buffer
         (``rec``, a structured view of it), status and fgroup of ``iout``."""
-        m = int(np.prod(lead + shape, dtype=int))
+        m = math.prod(lead + shape)
         if iout[0] == -1:
             raise RuntimeError("solve: the packed tables do not add up (a bug of sarkp)")
         return self._result({k: rec[k] for k in plan["computed"]},
