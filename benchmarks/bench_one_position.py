@@ -150,7 +150,11 @@ def wall():
 
 
 def run(case, n):
-    f = cases(sarkp)[case]
+    pkg = sarkp
+    if os.environ.get("SARKP_OLD"):
+        sys.path.insert(0, os.environ["SARKP_OLD"])
+        import sarkp_old as pkg
+    f = cases(pkg)[case]
     for _ in range(n):
         f()
 
@@ -169,7 +173,8 @@ def callgrind():
     print("| case | instructions per call | x DVKT |")
     print("|---|---|---|")
     per = {}
-    for case in ("dvkt", "solve", "select", "positions", "forces", "array1"):
+    for case in ("dvkt", "solve", "select", "positions", "forces", "array1", "four360",
+                 "six360"):
         per[case] = (instructions(case, 2200) - instructions(case, 200)) / 2000
         print(f"| {case} | {per[case] / 1e3:.1f}k | {per[case] / per['dvkt']:.1f} |",
               flush=True)

@@ -347,3 +347,20 @@ def test_changes_of_the_description_reach_the_fast_way():
     with sarkp.as_printed():
         with pytest.warns(UserWarning, match="no as-printed mode"):
             m.solve(0.7, need="forces")
+
+
+def test_buffers_beyond_a_structured_type_are_viewed_field_by_field(monkeypatch):
+    """numpy's structured types stop at 2**31 - 1 bytes: a larger output buffer (a long
+    sweep) is cut into the fields by slices; the same numbers (the limit lowered here
+    instead of solving 10**7 positions)."""
+    import sarkp.mechanism as mech
+    phi = np.linspace(0.0, 2 * PI, 11)
+    for need in NEEDS:
+        ref = sixbar().solve(phi, omega=3.0, need=need, points=("E",))
+        monkeypatch.setattr(mech, "_RECORD_LIMIT", 64)
+        m = sixbar()
+        r = m.solve(phi, omega=3.0, need=need, points=("E",))
+        assert r.positions.shape == (11, 1, 2)
+        same(r, ref)
+        same(m.solve(phi, omega=3.0, need=need, points=("E",)), ref)
+        monkeypatch.undo()

@@ -54,6 +54,7 @@ _CRANK = 1
 _SOLVE_PACKED = _sarkp.mechanism.mech_solve_packed
 _SOLVE_ONE = _sarkp.mechanism.mech_solve_one
 _SOLVE_FEW = _sarkp.mechanism.mech_solve_few
+_RECORD_LIMIT = 2 ** 31 - 1     # bytes: the largest structured type numpy makes
 
 
 def _real(who, name, value):
@@ -862,7 +863,7 @@ class Mechanism:
             iout = np.empty(plan["nio"], dtype=np.int32)
             _SOLVE_PACKED(level, 1 if D is None else D, ipk, rpk, phiv, w, e, inc_w, inc_e,
                           g, rout, iout)
-            if (D is None and not tab["dynamic"]
+            if (D is None and not tab["dynamic"] and plan["dt"] is not None
                     and not (level >= 4 and tab["rigid_springs"]
                              and not tab.get("springs_checked"))):
                 # what the fast way of solve needs to solve this need and selection again
@@ -885,7 +886,7 @@ class Mechanism:
                     if len(tab["fast"]) > 32:
                         tab["fast"].clear()
                     tab["fast"][key] = value
-            return self._finish(np.ndarray((), plan["dt"], rout), iout, plan, sel, need,
+            return self._finish(rout, iout, plan, sel, need,
                                 phiv, shape, lead, on_error)
         shapes, computed, finals = plan["shapes"], plan["computed"], plan["finals"]
         bufs, status = self._reuse(out, need, sel, shape, lead, shapes)
@@ -906,13 +907,18 @@ class Mechanism:
         return self._result(res, status.T.reshape(lead + shape), fgroup.T, plan, sel, need,
                             phiv, shape, lead, on_error, 5)
 
-    def _finish(self, rec, iout, plan, sel, need, phiv, shape, lead, on_error):
+    def _finish(self, rout, iout, plan, sel, need, phiv, shape, lead, on_error):
         """The result of the packed entry: the fields are views of its output buffer
-        (``rec``, a structured view of it), status and fgroup of ``iout``."""
+        ``rout`` (the fields of a structured view of it), status and fgroup of ``iout``."""
         m = math.prod(lead + shape)
         if iout[0] == -1:
             raise RuntimeError("solve: the packed tables do not add up (a bug of sarkp)")
-        return self._result({k: rec[k] for k in plan["computed"]},
+        if plan["dt"] is not None:
+            rec = np.ndarray((), plan["dt"], rout)
+            res = {k: rec[k] for k in plan["computed"]}
+        else:
+            res = {k: rout[a:b].reshape(final) for k, (a, b, final) in plan["spans"].items()}
+        return self._result(res,
                             iout[:m].reshape(lead + shape),
                             iout[m:].reshape(lead + (phiv.size,)), plan, sel, need, phiv,
                             shape, lead, on_error, 6)
@@ -1019,7 +1025,12 @@ class Mechanism:
                 fields["formats"].append((np.float64, finals[k]))
                 fields["offsets"].append(offset)
             offset += 8 * width * int(np.prod(v))
-        dt = np.dtype({**fields, "itemsize": offset})
+        # numpy's structured types hold at most 2**31 - 1 bytes: a larger buffer is
+        # viewed field by field (spans)
+        spans = {k: (o // 8, o // 8 + int(np.prod(f[1])), f[1]) for k, f, o in
+                 zip(fields["names"], fields["formats"], fields["offsets"])}
+        small = offset + 8 < _RECORD_LIMIT
+        dt = np.dtype({**fields, "itemsize": offset}) if small else None
         # the one-position entry's buffer has one element more: its status and fgroup,
         # two 32-bit integers (mech_solve_one); there an empty choice's field is empty
         # (its stored column left out)
@@ -1030,10 +1041,10 @@ class Mechanism:
         fields["names"] += ["status", "fgroup"]
         fields["formats"] += [np.int32, np.int32]
         fields["offsets"] += [offset, offset + 4]
-        dt1 = np.dtype({**fields, "itemsize": offset + 8})
+        dt1 = np.dtype({**fields, "itemsize": offset + 8}) if small else None
         plan = {"shapes": shapes, "computed": computed, "views": tuple(views),
                 "finals": finals, "nro": offset // 8, "nio": 2 * n * width, "dt": dt,
-                "dt1": dt1,
+                "dt1": dt1, "spans": spans,
                 # the fast way's result: the computed fields and the status of dt1's
                 # record (solve places them)
                 "pick": operator.itemgetter(*computed, "status")}
