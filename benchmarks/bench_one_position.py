@@ -3,6 +3,7 @@
     python benchmarks/bench_one_position.py            wall time, interleaved
     python benchmarks/bench_one_position.py CASE N     run CASE N times (for callgrind)
     python benchmarks/bench_one_position.py callgrind  instructions per call of each case
+    python benchmarks/bench_one_position.py callgrind-phases [CASE ...]   the same, one run
 
 Cases: the four-bar of bench_mechanism.py (OA 0.1, AB 0.35, CB 0.3, C = (0.4, 0)) solved
 at one position, ``m.solve(0.3, omega=10.0)`` (the issue's call), with ``points=("B",),
@@ -159,6 +160,48 @@ def run(case, n):
         f()
 
 
+def phases(names):
+    """Each case: 200 calls, then 2000; os.getppid() between the phases, where
+    ``valgrind --dump-before=getppid`` writes a dump (callgrind_phases)."""
+    pkg = sarkp
+    if os.environ.get("SARKP_OLD"):
+        sys.path.insert(0, os.environ["SARKP_OLD"])
+        import sarkp_old as pkg
+    fs = cases(pkg)
+    for name in names:
+        f = fs[name]
+        os.getppid()
+        for _ in range(200):
+            f()
+        os.getppid()
+        for _ in range(2000):
+            f()
+    os.getppid()
+
+
+def callgrind_phases(names):
+    """Instructions per call of each case in one valgrind run: the dump after a case's
+    2000 calls (its 200 warm-up calls and the start-up are in other dumps)."""
+    with tempfile.TemporaryDirectory() as tmp:
+        out = os.path.join(tmp, "cg.out")
+        subprocess.run(["valgrind", "--tool=callgrind", f"--callgrind-out-file={out}",
+                        "--dump-before=getppid", sys.executable, os.path.abspath(__file__),
+                        "phases", *names], capture_output=True, text=True, check=True)
+        dumps = sorted((f for f in os.listdir(tmp) if f.startswith("cg.out.")),
+                       key=lambda f: int(f.rsplit(".", 1)[1]))
+        totals = []
+        for f in dumps:
+            text = open(os.path.join(tmp, f)).read()
+            totals.append(int(re.search(r"^(?:summary|totals): (\d+)", text, re.M).group(1)))
+    # dumps: start-up, then per case (warm-up, 2000 calls), then the rest
+    per = {name: totals[2 + 2 * i] / 2000 for i, name in enumerate(names)}
+    print("| case | instructions per call | x DVKT |")
+    print("|---|---|---|")
+    for name, v in per.items():
+        print(f"| {name} | {v / 1e3:.1f}k | {v / per.get('dvkt', v):.1f} |")
+    return per
+
+
 def instructions(case, n):
     with tempfile.TemporaryDirectory() as tmp:
         out = os.path.join(tmp, "cg.out")
@@ -181,7 +224,12 @@ def callgrind():
 
 
 if __name__ == "__main__":
-    if len(sys.argv) == 3:
+    if sys.argv[1:2] == ["phases"]:
+        phases(sys.argv[2:])
+    elif sys.argv[1:2] == ["callgrind-phases"]:
+        callgrind_phases(sys.argv[2:] or ["dvkt", "solve", "select", "positions", "forces",
+                                          "array1", "four360", "six360"])
+    elif len(sys.argv) == 3:
         run(sys.argv[1], int(sys.argv[2]))
     elif sys.argv[1:] == ["callgrind"]:
         callgrind()
