@@ -47,6 +47,7 @@ module mechanism
   implicit none
   private
   public :: mech_solve, mech_solve_many
+  public :: mech_solve_packed, mech_solve_one, mech_solve_few
 
 
 contains
@@ -659,5 +660,153 @@ contains
                       mred(:, d), status(:, d), fgroup(:, d))
     end do
   end subroutine mech_solve_many
+
+  ! The packed entry (issue 25: the cost of a one-position solve is its call): mech_solve
+  ! for nd designs with the description's tables in one integer and one real array (built
+  ! once by mechanism.py and cached with its plan) and the outputs in one real and one
+  ! integer array, so that the wrapper converts a dozen arguments, not forty.  The blocks
+  ! are passed as their first elements (sequence association: no copies).
+  !   ipk = np, nl, ns, nm, nf, nt, nsp, npair, nop, nol, pf, pt, ps  (pf, pt, ps: 1 when
+  !         the forces, torques, springs have a value per position, else 0), then gi(8, ns),
+  !         mlink(nm), mpoint(nm), fpoint(nf), flink(nf), tlink(nt), spp(2, nsp),
+  !         spl(2, nsp), powner(np), lbase(0:nl), outp(nop), outl(nol);
+  !   rpk = gr(8, ns, nd), x0(2, np, nd), mval(2, nm, nd), fval(2, nf, nfv, nd),
+  !         tval(nt, ntv, nd), spv(2, nsp, nspv, nd), each whole before the next;
+  !   rout = pos(2, nop, n, nd), vel(2, nop, nv, nd), acc(2, nop, na, nd),
+  !         th(2, nol, n, nd), om(nol, nv, nd), ep(nol, na, nd), react(3, npair, nr, nd),
+  !         mbal(nr, nd), jred(nv, nd), mred(nr, nd) (nv, na, nr: n when need asks for
+  !         them, else 1);
+  !   iout = status(n, nd), fgroup(n, nd), zeroed here.
+  ! Sizes that do not add up leave iout(1) = -1 and compute nothing.
+  subroutine mech_solve_packed(need, n, nd, ni, ipk, nrk, rpk, phi, omega, epsil, inc_w, &
+                               inc_e, gravity, nro, rout, nio, iout)
+    !f2py threadsafe
+    integer, intent(in) :: need, n, nd, ni, nrk, nro, nio, inc_w, inc_e
+    integer, intent(in) :: ipk(ni)
+    real(dp), intent(in) :: rpk(nrk), phi(n), omega(*), epsil(*), gravity
+    real(dp), intent(inout) :: rout(nro)
+    integer, intent(inout) :: iout(nio)
+    integer, parameter :: nh = 13
+    integer :: np, nl, ns, nm, nf, nt, nsp, npair, nop, nol, nfv, ntv, nspv, nv, na, nr
+    integer :: ogi, oml, omp, ofp, ofl, otl, osp, osl, opw, olb, oop, ool, iend
+    integer :: sgr, sx0, smv, sfv, stv, ssv, spo, sve, sac, sth, som, sep, sre, sr1, sv1
+    integer :: d, o, q
+    if (nio < 1) return
+    if (ni < nh .or. n < 1 .or. nd < 1 .or. need < 1 .or. need > 4) then
+      iout(1) = -1
+      return
+    end if
+    np = ipk(1); nl = ipk(2); ns = ipk(3); nm = ipk(4); nf = ipk(5); nt = ipk(6)
+    nsp = ipk(7); npair = ipk(8); nop = ipk(9); nol = ipk(10)
+    nfv = merge(n, 1, ipk(11) /= 0)
+    ntv = merge(n, 1, ipk(12) /= 0)
+    nspv = merge(n, 1, ipk(13) /= 0)
+    nv = merge(n, 1, need >= 2)
+    na = merge(n, 1, need >= 3)
+    nr = merge(n, 1, need >= 4)
+    ! the integer tables' first elements
+    ogi = nh + 1
+    oml = ogi + 8*ns
+    omp = oml + nm
+    ofp = omp + nm
+    ofl = ofp + nf
+    otl = ofl + nf
+    osp = otl + nt
+    osl = osp + 2*nsp
+    opw = osl + 2*nsp
+    olb = opw + np
+    oop = olb + nl + 1
+    ool = oop + nop
+    iend = ool + nol - 1
+    ! the real tables' and outputs' sizes per design
+    sgr = 8*ns; sx0 = 2*np; smv = 2*nm; sfv = 2*nf*nfv; stv = nt*ntv; ssv = 2*nsp*nspv
+    spo = 2*nop*n; sve = 2*nop*nv; sac = 2*nop*na; sth = 2*nol*n; som = nol*nv
+    sep = nol*na; sre = 3*npair*nr; sr1 = nr; sv1 = nv
+    if (min(np, nl, ns, nm, nf, nt, nsp, npair, nop, nol) < 1 .or. iend /= ni .or. &
+        nd*(sgr + sx0 + smv + sfv + stv + ssv) /= nrk .or. &
+        nd*(spo + sve + sac + sth + som + sep + sre + 2*sr1 + sv1) /= nro .or. &
+        2*n*nd /= nio) then
+      iout(1) = -1
+      return
+    end if
+    iout = 0
+    do d = 1, nd
+      q = d - 1
+      o = 1 + nd*(spo + sve + sac + sth + som + sep + sre)   ! mbal's first element
+      call mech_solve(need, n, np, nl, ns, ipk(ogi), rpk(1 + q*sgr), phi, omega, epsil, &
+                      inc_w, inc_e, nm, ipk(oml), ipk(omp), &
+                      rpk(1 + nd*(sgr + sx0) + q*smv), gravity, nf, ipk(ofp), ipk(ofl), &
+                      nfv, rpk(1 + nd*(sgr + sx0 + smv) + q*sfv), nt, ipk(otl), ntv, &
+                      rpk(1 + nd*(sgr + sx0 + smv + sfv) + q*stv), nsp, ipk(osp), &
+                      ipk(osl), nspv, rpk(1 + nd*(sgr + sx0 + smv + sfv + stv) + q*ssv), &
+                      npair, ipk(opw), ipk(olb), rpk(1 + nd*sgr + q*sx0), nop, ipk(oop), &
+                      nol, ipk(ool), nv, na, nr, &
+                      rout(1 + q*spo), &
+                      rout(1 + nd*spo + q*sve), &
+                      rout(1 + nd*(spo + sve) + q*sac), &
+                      rout(1 + nd*(spo + sve + sac) + q*sth), &
+                      rout(1 + nd*(spo + sve + sac + sth) + q*som), &
+                      rout(1 + nd*(spo + sve + sac + sth + som) + q*sep), &
+                      rout(1 + nd*(spo + sve + sac + sth + som + sep) + q*sre), &
+                      rout(o + q*sr1), rout(o + nd*sr1 + q*sv1), &
+                      rout(o + nd*(sr1 + sv1) + q*sr1), &
+                      iout(1 + q*n), iout(1 + n*nd + q*n))
+    end do
+  end subroutine mech_solve_packed
+
+  ! One position (the fast way of Mechanism.solve(phi) for a number phi): the packed entry
+  ! with phi, omega, epsilon and gravity as numbers, and status and fgroup returned in
+  ! rout's last element (their two 32-bit integers' bits, which mechanism.py reads as
+  ! such) besides st, the status.
+  subroutine mech_solve_one(need, ni, ipk, nrk, rpk, phi, omega, epsil, gravity, nro, &
+                            rout, st)
+    !f2py threadsafe
+    integer, intent(in) :: need, ni, nrk, nro
+    integer, intent(in) :: ipk(ni)
+    real(dp), intent(in) :: rpk(nrk), phi, omega, epsil, gravity
+    real(dp), intent(inout) :: rout(nro)
+    integer, intent(out) :: st
+    integer :: io(2)
+    real(dp) :: ph(1), w(1), e(1)
+    st = -1
+    if (nro < 2) return
+    io = 0
+    ph(1) = phi
+    w(1) = omega
+    e(1) = epsil
+    call mech_solve_packed(need, 1, 1, ni, ipk, nrk, rpk, ph, w, e, 0, 0, gravity, &
+                           nro - 1, rout, 2, io)
+    rout(nro) = transfer(io, rout(nro))
+    st = io(1)
+  end subroutine mech_solve_one
+
+  ! A 1-d phi (the fast way of Mechanism.solve for an array): the packed entry for one
+  ! description with omega, epsilon and gravity as numbers; nz the number of positions
+  ! whose status is not OK (-2: a phi that is not finite, -1: sizes that do not add up;
+  ! nothing computed then).
+  subroutine mech_solve_few(need, n, phi, ni, ipk, nrk, rpk, omega, epsil, gravity, nro, &
+                            rout, nio, iout, nz)
+    !f2py threadsafe
+    integer, intent(in) :: need, n, ni, nrk, nro, nio
+    integer, intent(in) :: ipk(ni)
+    real(dp), intent(in) :: phi(n), rpk(nrk), omega, epsil, gravity
+    real(dp), intent(inout) :: rout(nro)
+    integer, intent(inout) :: iout(nio)
+    integer, intent(out) :: nz
+    real(dp) :: w(1), e(1)
+    integer :: i
+    nz = -2
+    do i = 1, n
+      if (.not. abs(phi(i)) <= huge(phi(i))) return
+    end do
+    nz = -1
+    if (nio < 1) return
+    w(1) = omega
+    e(1) = epsil
+    call mech_solve_packed(need, n, 1, ni, ipk, nrk, rpk, phi, w, e, 0, 0, gravity, nro, &
+                           rout, nio, iout)
+    if (iout(1) == -1) return
+    nz = count(iout(1:n) /= 0)
+  end subroutine mech_solve_few
 
 end module mechanism

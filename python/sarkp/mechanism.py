@@ -25,6 +25,7 @@ from __future__ import annotations
 import inspect
 import math
 import numbers
+import operator
 import warnings
 
 import numpy as np
@@ -50,6 +51,10 @@ NEED_OF = {"positions": 1, "directions": 1, "velocities": 2, "omegas": 2,
 _NEED_NAME = {v: k for k, v in NEEDS.items()}
 _FRAME = 0
 _CRANK = 1
+_SOLVE_PACKED = _sarkp.mechanism.mech_solve_packed
+_SOLVE_ONE = _sarkp.mechanism.mech_solve_one
+_SOLVE_FEW = _sarkp.mechanism.mech_solve_few
+_RECORD_LIMIT = 2 ** 31 - 1     # bytes: the largest structured type numpy makes
 
 
 def _real(who, name, value):
@@ -463,6 +468,8 @@ class Mechanism:
                 tab = getattr(self, "_cache", None)
                 if tab is not None:         # only the group's reals depend on it
                     tab["gr"][slot, k] = q
+                    tab["packed"].clear()   # the packed copies of them go
+                    tab["fast"].clear()
                 return
         raise ValueError(f"{who}: no group places joint {B!r}")
 
@@ -725,6 +732,87 @@ class Mechanism:
         it computes the corrected results (pi to double precision) and warns that it
         does; the book's routines reproduce the printed tables.
         """
+        if out is None and t is None and type(phi) is float:
+            # one position, the fast way: a plan an earlier solve of this need and
+            # selection left (so they are known good); any other input goes the general
+            # way (_solve), which raises what it raises
+            tab = self._cache
+            fast = None
+            if tab is not None:
+                try:
+                    fast = tab["fast"].get((need, points, links))
+                except TypeError:           # a list of names is not a key: the general way
+                    pass
+            if (fast is not None and type(omega) is float and type(epsilon) is float
+                    and type(gravity) is float
+                    # one test for the four (an overflow of the sum: the general way)
+                    and math.isfinite(phi + omega + epsilon + gravity)
+                    and (on_error == "raise" or on_error == "nan")
+                    and MODE_CODE.get() == 0):
+                level, ipk, rpk, nro, dt, pick, columns, plan, sel = fast
+                rout = np.empty(nro)
+                st = _SOLVE_ONE(level, ipk, rpk, phi, omega, epsilon, gravity, rout)
+                rec = np.ndarray((), dt, rout)
+                if not st:
+                    # the fields computed and the status: views of rout (pick), in
+                    # FIELDS' order with None for those not computed
+                    f = pick(rec)
+                    ph = np.array(phi)
+                    if level == 3:
+                        r = (self, columns, need, ph, f[0], f[1], f[2], f[3], f[4], f[5],
+                             None, None, f[6], None, f[7])
+                    elif level == 4:
+                        r = (self, columns, need, ph, *f)
+                    elif level == 2:
+                        r = (self, columns, need, ph, f[0], f[1], None, f[2], f[3], None,
+                             None, None, f[4], None, f[5])
+                    else:
+                        r = (self, columns, need, ph, f[0], None, None, f[1], None, None,
+                             None, None, None, None, f[2])
+                    return tuple.__new__(MechanismResult, r)
+                if st == -1:
+                    raise RuntimeError("solve: the packed tables do not add up (a bug of "
+                                       "sarkp)")
+                return self._result({k: rec[k] for k in plan["computed"]}, rec["status"],
+                                    rec["fgroup"].reshape(1), plan, sel, need,
+                                    np.array((phi,)), (), (), on_error, 4)
+        elif out is None and t is None and type(phi) is np.ndarray:
+            # a 1-d array of doubles, the fast way (its plan left by an earlier solve of
+            # this need, selection and size): mech_solve_few checks phi is finite
+            tab = self._cache
+            fast = None
+            if tab is not None and phi.ndim == 1 and phi.dtype == np.float64 and \
+                    phi.flags.c_contiguous:
+                try:
+                    fast = tab["fast"].get((need, points, links, phi.size))
+                except TypeError:
+                    pass
+            if (fast is not None and type(omega) is float and type(epsilon) is float
+                    and type(gravity) is float
+                    and math.isfinite(omega + epsilon + gravity)
+                    and (on_error == "raise" or on_error == "nan")
+                    and MODE_CODE.get() == 0):
+                level, ipk, rpk, nro, dt, nio, columns, plan, sel = fast
+                n = phi.size
+                rout = np.empty(nro)
+                iout = np.empty(nio, dtype=np.int32)
+                nz = _SOLVE_FEW(level, phi, ipk, rpk, omega, epsilon, gravity, rout, iout)
+                if nz >= 0:
+                    rec = np.ndarray((), dt, rout)
+                    res = {k: rec[k] for k in plan["computed"]}
+                    phiv = phi.reshape(-1)
+                    if nz:
+                        return self._result(res, iout[:n], iout[n:], plan, sel, need, phiv,
+                                            (n,), (), on_error, 4)
+                    return MechanismResult._make((
+                        self, columns, need, phiv,
+                        *[None if e is False else res[k] if e is None else res[k][e]
+                          for k, e in plan["views"]], iout[:n]))
+        return self._solve(phi, omega, epsilon, need, gravity, on_error, points, links, out,
+                           t)
+
+    def _solve(self, phi, omega, epsilon, need, gravity, on_error, points, links, out, t):
+        """solve's general way (every input checked)."""
         if self._crank is None:
             raise ValueError("solve: the mechanism has no crank (m.crank)")
         level = NEEDS.get(need) if isinstance(need, str) else None
@@ -735,7 +823,7 @@ class Mechanism:
         if MODE_CODE.get() != 0:
             warnings.warn("Mechanism.solve has no as-printed mode: it computes the "
                           "corrected results (pi to double precision); the book's routines "
-                          "reproduce the printed tables", UserWarning, stacklevel=2)
+                          "reproduce the printed tables", UserWarning, stacklevel=3)
         if type(phi) is float:              # one position, quickly
             if not math.isfinite(phi):
                 raise ValueError("solve: phi must be finite")
@@ -767,25 +855,42 @@ class Mechanism:
         D = self.designs
         lead = () if D is None else (D,)
         plan = self._plan(tab, sel, level, shape, n, lead)
+        if out is None:
+            # the packed entry: the description's tables in two arrays, the outputs in
+            # one fresh buffer each call (the result's arrays are views of it)
+            ipk, rpk = self._packed(tab, sel, n, fval, tval, spv)
+            rout = np.empty(plan["nro"])
+            iout = np.empty(plan["nio"], dtype=np.int32)
+            _SOLVE_PACKED(level, 1 if D is None else D, ipk, rpk, phiv, w, e, inc_w, inc_e,
+                          g, rout, iout)
+            if (D is None and not tab["dynamic"] and plan["dt"] is not None
+                    and not (level >= 4 and tab["rigid_springs"]
+                             and not tab.get("springs_checked"))):
+                # what the fast way of solve needs to solve this need and selection again
+                # (points and links as given: a list is no key, and goes this way), for
+                # a number phi or a 1-d array of this size
+                key = None
+                if type(phi) is float:
+                    key = (need, points, links)
+                    value = (level, ipk, rpk, plan["nro"] + 1, plan["dt1"], plan["pick"],
+                             sel["columns"], plan, sel)
+                elif type(phi) is np.ndarray and phi.ndim == 1 and inc_w == inc_e == 0:
+                    key = (need, points, links, n)
+                    value = (level, ipk, rpk, plan["nro"], plan["dt"], plan["nio"],
+                             sel["columns"], plan, sel)
+                try:
+                    hash(key)
+                except TypeError:
+                    key = None
+                if key is not None:
+                    if len(tab["fast"]) > 32:
+                        tab["fast"].clear()
+                    tab["fast"][key] = value
+            return self._finish(rout, iout, plan, sel, need,
+                                phiv, shape, lead, on_error)
         shapes, computed, finals = plan["shapes"], plan["computed"], plan["finals"]
-        if out is not None:
-            bufs, status = self._reuse(out, need, sel, shape, lead, shapes)
-            res = {k: bufs[k].T.reshape(finals[k]) for k in computed}
-        else:
-            # the results in their final shape (C order); the kernel writes them through
-            # their transposes (Fortran order), the outputs it does not touch (their
-            # level not asked for) are the plan's shared 1-long arrays
-            res = {k: np.empty(finals[k]) for k in computed}
-            bufs = dict(plan["untouched"])
-            st_c = np.zeros(lead + shape, dtype=np.int32)
-            if len(shape) == 1 or not (shape or lead):    # the transposes as they are
-                for k in computed:
-                    bufs[k] = res[k].T
-                status = st_c.T
-            else:
-                for k in computed:
-                    bufs[k] = res[k].reshape(lead + shapes[k][::-1]).T
-                status = st_c.reshape(lead + (n,)).T
+        bufs, status = self._reuse(out, need, sel, shape, lead, shapes)
+        res = {k: bufs[k].T.reshape(finals[k]) for k in computed}
         fgroup = np.zeros(lead + (n,), dtype=np.int32).T
         b = bufs
         args = (tab["gi"], tab["gr"], phiv, w, e, inc_w, inc_e, tab["mlink"], tab["mpoint"],
@@ -799,18 +904,38 @@ class Mechanism:
             _sarkp.mechanism.mech_solve(level, *args)
         else:
             _sarkp.mechanism.mech_solve_many(level, *args)
+        return self._result(res, status.T.reshape(lead + shape), fgroup.T, plan, sel, need,
+                            phiv, shape, lead, on_error, 5)
+
+    def _finish(self, rout, iout, plan, sel, need, phiv, shape, lead, on_error):
+        """The result of the packed entry: the fields are views of its output buffer
+        ``rout`` (the fields of a structured view of it), status and fgroup of ``iout``."""
+        m = math.prod(lead + shape)
+        if iout[0] == -1:
+            raise RuntimeError("solve: the packed tables do not add up (a bug of sarkp)")
+        if plan["dt"] is not None:
+            rec = np.ndarray((), plan["dt"], rout)
+            res = {k: rec[k] for k in plan["computed"]}
+        else:
+            res = {k: rout[a:b].reshape(final) for k, (a, b, final) in plan["spans"].items()}
+        return self._result(res,
+                            iout[:m].reshape(lead + shape),
+                            iout[m:].reshape(lead + (phiv.size,)), plan, sel, need, phiv,
+                            shape, lead, on_error, 6)
+
+    def _result(self, res, status, fgroup, plan, sel, need, phiv, shape, lead, on_error,
+                stacklevel):
+        """The result of a solve: ``res`` the computed fields in their final shape,
+        ``status`` (lead + shape) and ``fgroup`` (lead + (n,)) as the kernel left them.
+        Raises or warns for the positions that failed or lost digits (on_error; the
+        warning points ``stacklevel`` frames up, at solve's caller)."""
         if np.count_nonzero(status):
-            self._settle(status, fgroup, phiv, shape, lead, on_error)
+            self._settle(status.T, fgroup.T, phiv, shape, lead, on_error, stacklevel)
             bad = ~((status == 0) | (status > _ST_DIGITS))
             if bad.any():
-                for k in computed:
-                    arr = bufs[k]
-                    if arr.ndim > bad.ndim:
-                        arr[..., bad] = math.nan
-                    else:
-                        arr[bad] = math.nan
+                for k in plan["computed"]:
+                    res[k][bad] = math.nan
             status[status > _ST_DIGITS] = np.int32(Status.SIGNIFICANCE)
-
         views = []
         for key, empty in plan["views"]:
             if empty is False:
@@ -819,16 +944,40 @@ class Mechanism:
                 views.append(res[key])
             else:                           # an empty choice: the stored column left out
                 views.append(res[key][empty])
-        flat = len(shape) == 1
-        st = status.T
         return MechanismResult._make((
-            self, sel["columns"], need, phiv if flat else phiv.reshape(shape), *views,
-            st if flat else st.reshape(lead + shape)))
+            self, sel["columns"], need, phiv if len(shape) == 1 else phiv.reshape(shape),
+            *views, status))
+
+    def _packed(self, tab, sel, n, fval, tval, spv):
+        """The description as the packed entry takes it (fortran/mechanism.f90,
+        mech_solve_packed): one integer array (per selection and whether the loads have
+        a value per position) and one real array (per load tables), cached."""
+        flags = (int(fval.shape[2] > 1), int(tval.shape[1] > 1), int(spv.shape[2] > 1))
+        ipk = sel["ipk"].get(flags)
+        if ipk is None:
+            head = [tab["npt"], tab["nl"], tab["gi"].shape[1], tab["mlink"].size,
+                    tab["fpoint"].size, tab["tlink"].size, tab["spp"].shape[1], tab["npair"],
+                    sel["outp"].size, sel["outl"].size, *flags]
+            ipk = np.concatenate([np.array(head), *(tab[k].ravel("F") for k in (
+                "gi", "mlink", "mpoint", "fpoint", "flink", "tlink", "spp", "spl", "powner",
+                "lbase")), sel["outp"], sel["outl"]]).astype(np.int32)
+            sel["ipk"][flags] = ipk
+        loads = tab["packed"]
+        key = (n, id(fval), id(tval), id(spv))
+        hit = loads.get(key)
+        if hit is not None and hit[0] is fval and hit[1] is tval and hit[2] is spv:
+            return ipk, hit[3]
+        rpk = np.concatenate([a.ravel("F") for a in (tab["gr"], tab["x0"], tab["mval"], fval,
+                                                     tval, spv)])
+        loads.clear()
+        loads[key] = (fval, tval, spv, rpk)
+        return ipk, rpk
 
     def _plan(self, tab, sel, level, shape, n, lead):
         """What a solve of this need, selection and phi's shape allocates and returns:
-        the outputs' shapes, the ones computed, shared 1-long arrays for the ones the
-        kernel does not touch, and how each is viewed (cached with the selection)."""
+        the outputs' shapes, the ones computed, how each is viewed, and the packed
+        entry's output buffers: their sizes and the structured type whose fields are the
+        results' arrays (cached with the selection)."""
         plans = sel["plans"]
         key = (level, shape)
         plan = plans.get(key)
@@ -864,10 +1013,41 @@ class Mechanism:
                 empty = (Ellipsis, slice(0, 0), slice(None)) if len(tail) == 2 else \
                     (Ellipsis, slice(0, 0))
             views.append((k, empty))
+        # the packed entry's buffer: each output whole (every design) before the next, in
+        # the order of shapes; a computed one's C-ordered final shape is its Fortran
+        # shape reversed, so its field of the structured type is the result's array
+        width = 1 if not lead else lead[0]
+        offset = 0
+        fields = {"names": [], "formats": [], "offsets": []}
+        for k, v in shapes.items():
+            if k in computed:
+                fields["names"].append(k)
+                fields["formats"].append((np.float64, finals[k]))
+                fields["offsets"].append(offset)
+            offset += 8 * width * int(np.prod(v))
+        # numpy's structured types hold at most 2**31 - 1 bytes: a larger buffer is
+        # viewed field by field (spans)
+        spans = {k: (o // 8, o // 8 + int(np.prod(f[1])), f[1]) for k, f, o in
+                 zip(fields["names"], fields["formats"], fields["offsets"])}
+        small = offset + 8 < _RECORD_LIMIT
+        dt = np.dtype({**fields, "itemsize": offset}) if small else None
+        # the one-position entry's buffer has one element more: its status and fgroup,
+        # two 32-bit integers (mech_solve_one); there an empty choice's field is empty
+        # (its stored column left out)
+        for j, (k, e) in enumerate(v for v in views if v[1] is not False):
+            if e is not None:
+                tail = finals[k][len(lead + shape):]
+                fields["formats"][j] = (np.float64, lead + shape + (0,) + tail[1:])
+        fields["names"] += ["status", "fgroup"]
+        fields["formats"] += [np.int32, np.int32]
+        fields["offsets"] += [offset, offset + 4]
+        dt1 = np.dtype({**fields, "itemsize": offset + 8}) if small else None
         plan = {"shapes": shapes, "computed": computed, "views": tuple(views),
-                "finals": finals,
-                "untouched": {k: np.empty(v + lead, order="F") for k, v in shapes.items()
-                              if k not in computed}}
+                "finals": finals, "nro": offset // 8, "nio": 2 * n * width, "dt": dt,
+                "dt1": dt1, "spans": spans,
+                # the fast way's result: the computed fields and the status of dt1's
+                # record (solve places them)
+                "pick": operator.itemgetter(*computed, "status")}
         if len(plans) > 32:                 # many shapes of phi: keep the cache small
             plans.clear()
         plans[key] = plan
@@ -943,7 +1123,7 @@ class Mechanism:
         sel = {"outp": np.array([self._points[nm] + 1 for nm in chosen] or [pin],
                                 dtype=np.int32),
                "outl": np.array(lidx or [_CRANK], dtype=np.int32), "columns": columns,
-               "nop": len(chosen), "nol": len(lidx), "plans": {}}
+               "nop": len(chosen), "nol": len(lidx), "plans": {}, "ipk": {}}
         tab["sel"][key] = sel
         return sel
 
@@ -994,7 +1174,7 @@ class Mechanism:
         values = [v for f in forces for v in f[2:]] + [tq[1] for tq in torques] + \
             [v for sp in springs for v in sp[4:]]
         t = {"npt": npt, "nl": nl, "npair": len(self._pairs), "gi": gi, "gr": gr, "x0": x0,
-             "powner": powner, "lbase": lbase, "sel": {},
+             "powner": powner, "lbase": lbase, "sel": {}, "packed": {}, "fast": {},
              "mlink": np.array([m[0] for m in masses], dtype=np.int32),
              "mpoint": np.array([m[1] + 1 for m in masses], dtype=np.int32),
              "mval": mval,
@@ -1124,7 +1304,7 @@ class Mechanism:
         what = KIND_NAMES.get(kind, f"of unknown kind {kind}")
         return f"group {what} {name!r} (step {k})"
 
-    def _settle(self, status, fgroup, phiv, shape, lead, on_error):
+    def _settle(self, status, fgroup, phiv, shape, lead, on_error, stacklevel=3):
         """Raise for the first failed position (on_error="raise"); warn of the position
         with the fewest digits left."""
         st = status.T.reshape(-1)           # design by design, positions in C order
@@ -1172,7 +1352,7 @@ class Mechanism:
             warnings.warn(SignificanceWarning(
                 f"{self._step_text(int(fg[i]))} is near a dead centre {text}: about "
                 f"{digits} significant digits left", digits=digits, index=index),
-                stacklevel=3)
+                stacklevel=stacklevel)
 
     # -- chapter 8 at the mechanism level --------------------------------------------------
     def _loads(self, phi, gravity):
