@@ -601,19 +601,19 @@ contains
     real(dp), intent(in) :: xc(2), vc(2), ac(2)
     real(dp), intent(out) :: xk(2), vk(2), ak(2), us(2), sk, sc, svk, svc, sak, sac, est
     integer, intent(out) :: st
-    real(dp) :: sp, sx, estp, vr(2), sbv, relv, estv
+    real(dp) :: sp, sx, estp, vr(2), rc(2), rk(2), sbv, relv, estv
     call rpp_position(xa, um, t2, ct2, st2, xc, xk, us, sk, sc, sp, sx, st, est)
     if (failed(st)) return
     if (level < 2) return
     estp = est
-    call rpp_velocity(xa, va, um, wm, t2, xc, vc, xk, sx, estp, vk, svk, svc, vr, sbv, relv, &
-                      st, est)
+    call rpp_velocity(xa, va, um, wm, t2, xc, vc, xk, sx, estp, vk, svk, svc, vr, rc, rk, &
+                      sbv, relv, st, est)
     if (failed(st)) return
     if (level < 3) return
     estv = est
     ! the Coriolis term 2 w (s2' nm + s3' ns) is 2 w k x vr: computed so, it is known to
     ! rounding, where s2', s3' each grow as 1/t2 and cancel
-    call rpp_acceleration(xa, aa, um, wm, em, t2, xc, ac, xk, svk, &
+    call rpp_acceleration(aa, um, wm, em, t2, ac, rc, rk, svk, &
                           2.0_dp*wm*[-vr(2), vr(1)], 2.0_dp*abs(wm)*(abs(vr(1)) + abs(vr(2))), &
                           sk, sc, sp, sx, estp, svk, svc, sbv, relv, estv, ak, sak, sac, st, est)
   end subroutine rpp_kernel
@@ -644,17 +644,18 @@ contains
   ! svk um + svc us.
   ! In:  xa, va, um, wm (guide M); t2; xc, vc; xk, sx, estp from rpp_position (given
   !      positions: xk anything, sx = estp = 0).
-  ! Out: vk = K's velocity (a point of link 2); svk, svc; vr; for rpp_acceleration sbv
-  !      (the size of vr's terms) and relv (svk's, svc's relative error, the position's
-  !      added); st, est.
+  ! Out: vk = K's velocity (a point of link 2); svk, svc; vr; for rpp_acceleration rc =
+  !      C - A, rk = K - A, sbv (the size of vr's terms) and relv (svk's, svc's relative
+  !      error, the position's added); st, est.
   pure subroutine rpp_velocity(xa, va, um, wm, t2, xc, vc, xk, sx, estp, vk, svk, svc, vr, &
-                               sbv, relv, st, est)
+                               rc, rk, sbv, relv, st, est)
     real(dp), intent(in) :: xa(2), va(2), um(2), wm, t2, xc(2), vc(2), xk(2), sx, estp
-    real(dp), intent(out) :: vk(2), svk, svc, vr(2), sbv, relv, est
+    real(dp), intent(out) :: vk(2), svk, svc, vr(2), rc(2), rk(2), sbv, relv, est
     integer, intent(out) :: st
-    real(dp) :: r(2), vgc(2)
-    r = xc - xa                                   ! (carried's velocities)
-    vgc = va + wm*[-r(2), r(1)]
+    real(dp) :: vgc(2)
+    rc = xc - xa                                  ! (carried's velocities)
+    rk = xk - xa
+    vgc = va + wm*[-rc(2), rc(1)]
     vr = vc - vgc
     sbv = abs(vc(1)) + abs(vc(2)) + abs(vgc(1)) + abs(vgc(2))
     call kind5(t2, um, vr, 4.0_dp*uround*sbv + 2.0_dp*uround*abs(wm)*sx, sbv, svk, svc, &
@@ -663,31 +664,29 @@ contains
     if (failed(st)) return
     relv = relv + estp                    ! the position's error moves K's velocity
     est = max(estp, relv)
-    r = xk - xa
-    vk = (va + wm*[-r(2), r(1)]) + svk*um
+    vk = (va + wm*[-rk(2), rk(1)]) + svk*um
   end subroutine rpp_velocity
 
   ! Kind 5, stage 3: C's acceleration relative to guide M's link, ac - a_GM(C) - kd =
   ! sak um + sac us, kd the Coriolis term 2 w k x vr.
-  ! In:  xa, aa, um, wm, em (guide M); t2; xc, ac; xk, dk (K's rate svk, for K's
-  !      acceleration); kd and ks (the size of its terms); for the error estimate sk, sc,
-  !      sp, sx, estp from rpp_position and svk, svc, sbv, relv from rpp_velocity (given
-  !      positions and velocities: all 0); estv.
+  ! In:  aa, um, wm, em (guide M: A's acceleration); t2; ac; rc = C - A, rk = K - A (from
+  !      rpp_velocity), dk (K's rate svk, for K's acceleration); kd and ks (the size of
+  !      its terms); for the error estimate sk, sc, sp, sx, estp from rpp_position and
+  !      svk, svc, sbv, relv from rpp_velocity (given positions and velocities: all 0);
+  !      estv.
   ! Out: ak = K's acceleration; sak, sac; st, est.
-  pure subroutine rpp_acceleration(xa, aa, um, wm, em, t2, xc, ac, xk, dk, kd, ks, &
+  pure subroutine rpp_acceleration(aa, um, wm, em, t2, ac, rc, rk, dk, kd, ks, &
                                    sk, sc, sp, sx, estp, svk, svc, sbv, relv, estv, &
                                    ak, sak, sac, st, est)
-    real(dp), intent(in) :: xa(2), aa(2), um(2), wm, em, t2, xc(2), ac(2), xk(2), dk
+    real(dp), intent(in) :: aa(2), um(2), wm, em, t2, ac(2), rc(2), rk(2), dk
     real(dp), intent(in) :: kd(2), ks, sk, sc, sp, sx, estp, svk, svc, sbv, relv, estv
     real(dp), intent(out) :: ak(2), sak, sac, est
     integer, intent(out) :: st
-    real(dp) :: r(2), agc(2), agk(2), ar(2), sb, rel, ex, ev
+    real(dp) :: agc(2), agk(2), ar(2), sb, rel, ex, ev, eg
     ex = estp*max(norm2d(sk, sc), sp)      ! K's absolute error along the guide
     ev = relv*max(norm2d(svk, svc), sbv)
-    r = xc - xa                            ! (carried's accelerations)
-    agc = aa + em*[-r(2), r(1)] - wm**2*r
-    r = xk - xa
-    agk = aa + em*[-r(2), r(1)] - wm**2*r
+    agc = aa + em*[-rc(2), rc(1)] - wm**2*rc     ! (carried's accelerations)
+    agk = aa + em*[-rk(2), rk(1)] - wm**2*rk
     ar = ac - agc - kd
     sb = abs(ac(1)) + abs(ac(2)) + abs(agc(1)) + abs(agc(2)) + ks
     call kind5(t2, um, ar, 4.0_dp*uround*sb + 2.0_dp*uround*(abs(em) + wm**2)*sx, sb, &
@@ -697,9 +696,9 @@ contains
     ! K's acceleration agk + s2'' um + 2 w s2' nm: the errors of s2' and of K, relative
     ! to the size of its terms
     ! (none when they are 0: the group may be at rest, every term 0)
-    r(1) = 2.0_dp*abs(wm)*ev + (abs(em) + wm**2)*ex
-    if (r(1) > 0.0_dp) rel = rel + r(1)/max(norm2d(sak, sac), sb, &
-                                            abs(agk(1)) + abs(agk(2)) + 2.0_dp*abs(wm*dk))
+    eg = 2.0_dp*abs(wm)*ev + (abs(em) + wm**2)*ex
+    if (eg > 0.0_dp) rel = rel + eg/max(norm2d(sak, sac), sb, &
+                                        abs(agk(1)) + abs(agk(2)) + 2.0_dp*abs(wm*dk))
     est = max(estv, rel)
     ak = agk + sak*um + 2.0_dp*wm*dk*[-um(2), um(1)]
   end subroutine rpp_acceleration

@@ -614,7 +614,7 @@ contains
     real(dp), intent(out) :: vc2c3, alc2c3, vc2cm, alc2cm, vc2, alc2
     integer, intent(out) :: ier
     real(dp) :: vcm, alcm, y1, y2, sb, rel
-    real(dp) :: z(2), um(2), v_c(2), v_k(2), vr(2), v2(2), relv
+    real(dp) :: z(2), um(2), v_c(2), v_k(2), vr(2), v2(2), relv, r_c(2), r_k(2)
     vc2c3 = 0.0_dp; alc2c3 = 0.0_dp; vc2cm = 0.0_dp; alc2cm = 0.0_dp; vc2 = 0.0_dp; alc2 = 0.0_dp
     if (printed_mode == 0) then                   ! corrected: the kind-5 velocity stage
       ! link M turns about VM (at rest); v_C3 - v_CM = vr = y2 e(FIM) - y1 e(FIM + T2)
@@ -622,7 +622,7 @@ contains
       um = [cos(fim), sin(fim)]
       call components(vc3, alc3, v_c(1), v_c(2))
       call rpp_velocity([xvm, yvm], z, um, wm, t2, [xc3, yc3], v_c, [xc3, yc3], 0.0_dp, &
-                        0.0_dp, v_k, y2, y1, vr, sb, relv, ier, rel)
+                        0.0_dp, v_k, y2, y1, vr, r_c, r_k, sb, relv, ier, rel)
       if (failed(ier)) return
       y1 = -y1
       alc2c3 = dugl4(fim + t2, pi, y1)
@@ -924,7 +924,7 @@ contains
     real(dp), intent(out) :: ac2c3r, bc2c3r, ac2cmr, bc2cmr, ac2, bc2
     integer, intent(out) :: ier
     real(dp) :: acm, dlt, bcm, y1, y2, a, b, sb, rel
-    real(dp) :: z(2), um(2), us(2), a_c(2), k_2m(2), k_23(2), a_k(2), a2(2)
+    real(dp) :: z(2), um(2), us(2), a_c(2), k_2m(2), k_23(2), a_k(2), a2(2), r_c(2)
     ac2c3r = 0.0_dp; bc2c3r = 0.0_dp; ac2cmr = 0.0_dp; bc2cmr = 0.0_dp; ac2 = 0.0_dp
     bc2 = 0.0_dp
     if (printed_mode == 0) then                   ! corrected: the kind-5 acceleration stage
@@ -935,10 +935,11 @@ contains
       call components(ac3, bc3, a_c(1), a_c(2))
       call components(ac2mk, bc2mk, k_2m(1), k_2m(2))
       call components(ac23k, bc23k, k_23(1), k_23(2))
-      call rpp_acceleration([xvm, yvm], z, um, wm, em, t2, [xc3, yc3], a_c, [xc3, yc3], &
-                            0.0_dp, k_2m - k_23, abs(ac2mk) + abs(ac23k), 0.0_dp, 0.0_dp, &
-                            0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
-                            a_k, y2, y1, ier, rel)
+      r_c = [xc3 - xvm, yc3 - yvm]                ! C - VM (K not needed: r_k = r_c)
+      call rpp_acceleration(z, um, wm, em, t2, a_c, r_c, r_c, 0.0_dp, k_2m - k_23, &
+                            abs(ac2mk) + abs(ac23k), 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+                            0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, a_k, y2, y1, &
+                            ier, rel)
       if (failed(ier)) return
       y1 = -y1
       bc2c3r = dugl4(fim + t2, pi, y1)
