@@ -69,8 +69,10 @@
 ! the status is the dead-centre policy's for the kernel's estimate.  As-printed mode
 ! keeps each routine's own code, the book's sequence, which the printed figures depend
 ! on.  The other kinds' routines keep their own code until their kernels hold what the
-! book routines promise (kinds 2, 4: digits at 2**+-990 and far from the origin, the
-! estimate near parallel guides).
+! book routines promise (kind 2: digits at 2**+-990 and far from the origin).  Kinds 4
+! and 5 are adapters too (corrected mode): DPRM4, DKNMA4, DPRM5, DKNMA5 over prp_kernel,
+! rpp_kernel, DSKOR4/5 and DUSKR4/5 over their velocity and acceleration stages (see
+! DPRM4).
 !
 ! Corrected mode, for speed (issue 9; the same mathematics, no ERRATA entry): DKNMA2,
 ! DSKOR1 and DUSKR1 take each direction's cosine and sine once and get e(FI + PI/2),
@@ -304,11 +306,13 @@ contains
   ! Parallel guides: st_singular.
   ! Corrected mode (issue 25): an adapter over the kind-4 kernel of groups.f90 (the
   ! Mechanism's prp): its position stage prp_position (prp_kernel at level 1) solves B - A
-  ! from the guides' unit vectors; the radius vectors of B from VM, VN as before.  As
-  ! printed: the code below, unchanged.  The same holds for DSKOR4, DUSKR4 (over the
-  ! stages prp_velocity, prp_acceleration, B put at the origin), DKNMA4 (over prp_kernel),
-  ! and for kind 5: DPRM5, DKNMA5 over rpp_kernel, DSKOR5, DUSKR5 over rpp_velocity,
-  ! rpp_acceleration.
+  ! from the guides' unit vectors, A put at the origin (the kernel is the same in any
+  ! frame; the given coordinates are exact, so only C - A is rounded, and a group far
+  ! from the origin keeps its digits, as the book's code here does: E-DKNMA4-5); the
+  ! radius vectors of B from VM, VN as before.  As printed: the code below, unchanged.
+  ! The same holds for DSKOR4, DUSKR4 (over the stages prp_velocity, prp_acceleration, B
+  ! put at the origin), DKNMA4 (over prp_kernel), and for kind 5: DPRM5, DKNMA5 over
+  ! rpp_kernel, DSKOR5, DUSKR5 over rpp_velocity, rpp_acceleration.
   subroutine dprm4(xvm, yvm, xa, ya, fim, xvn, yvn, xc, yc, fin, rz2, t2, rz3, t3, aaa, &
                    xb, yb, rvbm, fivbm, rvbn, fivbn, ier)
     !: XVM, YVM : real -- Instantaneous centre of rotation of link M (carrying guide M), m.
@@ -326,11 +330,12 @@ contains
     real(dp) :: x_b(2), r_b(2), sx
     xb = 0.0_dp; yb = 0.0_dp; rvbm = 0.0_dp; fivbm = 0.0_dp; rvbn = 0.0_dp; fivbn = 0.0_dp
     if (printed_mode == 0) then                   ! corrected: the kind-4 kernel's position
-      call prp_position([xa, ya], [cos(fim), sin(fim)], rz2*sin(t2), [xc, yc], &
-                        [cos(fin), sin(fin)], rz3*sin(t3), x_b, r_b, sb, sx, ier, rel)
+      call prp_position([0.0_dp, 0.0_dp], [cos(fim), sin(fim)], rz2*sin(t2), &
+                        [xc - xa, yc - ya], [cos(fin), sin(fin)], rz3*sin(t3), x_b, r_b, &
+                        sb, sx, ier, rel)
       if (failed(ier)) return
-      xb = x_b(1)
-      yb = x_b(2)
+      xb = xa + r_b(1)
+      yb = ya + r_b(2)
       mx = r_b(1) + (xa - xvm); my = r_b(2) + (ya - yvm)
       nx = r_b(1) - (xc - xa) + (xc - xvn); ny = r_b(2) - (yc - ya) + (yc - yvn)
       rvbm = norm2d(mx, my)
@@ -388,12 +393,12 @@ contains
     xk = 0.0_dp; yk = 0.0_dp; s2 = 0.0_dp; s3 = 0.0_dp
     if (printed_mode == 0) then                   ! corrected: the kind-5 kernel (DPRM4)
       z = 0.0_dp
-      call rpp_kernel(1, [xa, ya], z, z, [cos(fim), sin(fim)], 0.0_dp, 0.0_dp, t2, cos(t2), &
-                      sin(t2), [xc, yc], z, z, x_k, v_k, a_k, us, d1, d2, q1, q2, q3, q4, &
-                      ier, rel)
+      call rpp_kernel(1, z, z, z, [cos(fim), sin(fim)], 0.0_dp, 0.0_dp, t2, cos(t2), &
+                      sin(t2), [xc - xa, yc - ya], z, z, x_k, v_k, a_k, us, d1, d2, q1, q2, &
+                      q3, q4, ier, rel)                ! A at the origin (DPRM4)
       if (failed(ier)) return
-      xk = x_k(1)
-      yk = x_k(2)
+      xk = xa + x_k(1)
+      yk = ya + x_k(2)
       s2 = d1
       s3 = d2
       ier = settle(ier, rel, [xk, yk, s2, s3])
@@ -1490,18 +1495,19 @@ contains
     vb = 0.0_dp; alb = 0.0_dp; ab2k = 0.0_dp; bb2k = 0.0_dp; ab3k = 0.0_dp; bb3k = 0.0_dp
     ab2r = 0.0_dp; bb2r = 0.0_dp; ab3r = 0.0_dp; bb3r = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp
     if (printed_mode == 0) then                   ! corrected: the kind-4 kernel
-      ! the guides turn about A and C (at rest); the kernel's relative velocities s2, s3
+      ! the guides turn about A and C (at rest), A put at the origin (DPRM4); the
+      ! kernel's relative velocities s2, s3
       ! and accelerations y1, y2 are along e(FIM), e(FIN), the book's accelerations along
       ! ALB2R, ALB3R (e(FIM) or e(FIM - pi) by the sign of s2, DUGL4)
       level = 3
       if (analog == 1.0_dp) level = 2
       z = 0.0_dp
-      call prp_kernel(level, [xa, ya], z, z, [cos(fim), sin(fim)], wm, em, rz2*sin(eta2), &
-                      [xc, yc], z, z, [cos(fin), sin(fin)], wn, en, rz3*sin(eta3), &
+      call prp_kernel(level, z, z, z, [cos(fim), sin(fim)], wm, em, rz2*sin(eta2), &
+                      [xc - xa, yc - ya], z, z, [cos(fin), sin(fin)], wn, en, rz3*sin(eta3), &
                       x_b, v_b, a_b, s2, s3, y1, y2, ier, est)
       if (failed(ier)) return
-      xb = x_b(1)
-      yb = x_b(2)
+      xb = xa + x_b(1)
+      yb = ya + x_b(2)
       vb2r = abs(s2)
       alb2r = dugl4(fim, pi, s2)
       vb3r = abs(s3)
@@ -1644,8 +1650,9 @@ contains
     ac2c3k = 0.0_dp; bc2c3k = 0.0_dp; ac2cmk = 0.0_dp; bc2cmk = 0.0_dp; ac2c3r = 0.0_dp
     bc2c3r = 0.0_dp; ac2cmr = 0.0_dp; bc2cmr = 0.0_dp; ac = 0.0_dp; bc = 0.0_dp
     if (printed_mode == 0) then                   ! corrected: the kind-5 kernel
-      ! link M turns about R (at rest), its guide taken through R (the relative motion is
-      ! the same for every line of link M along FIM: XA, YA unused, as printed); the
+      ! link M turns about R (at rest, put at the origin: DPRM4), its guide taken through
+      ! R (the relative motion is the same for every line of link M along FIM: XA, YA
+      ! unused, as printed); the
       ! kernel's rates along e(FIM), e(FIM + ETA2) are y2 and -y1 of the book's
       ! y1 e(FIM + ETA2) - y2 e(FIM) = v_CM - v_C3, its accelerations the same, the book's
       ! accelerations along ALC2C3, ALC2CM (DUGL4 of the velocities' signs)
@@ -1656,8 +1663,8 @@ contains
       call components(vc3, alc3, v_c(1), v_c(2))
       a_c = 0.0_dp
       if (level == 3) call components(ac3, bc3, a_c(1), a_c(2))
-      call rpp_kernel(level, [xr, yr], z, z, um, wm, em, eta2, cos(eta2), sin(eta2), &
-                      [xc, yc], v_c, a_c, x_k, v_k, a_k, us, sk, sc, svk, svc, sak, sac, &
+      call rpp_kernel(level, z, z, z, um, wm, em, eta2, cos(eta2), sin(eta2), &
+                      [xc - xr, yc - yr], v_c, a_c, x_k, v_k, a_k, us, sk, sc, svk, svc, sak, sac, &
                       ier, est)
       if (failed(ier)) return
       y1 = -svc
