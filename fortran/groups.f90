@@ -41,6 +41,8 @@ module groups
   public :: cram, cramer_set, cramer, abs_err, carried
   public :: crank_kernel, rigid_kernel, rrr_kernel, rrp_kernel, rpr_kernel, prp_kernel, &
             rpp_kernel
+  public :: prp_position, prp_matrix, prp_velocity, prp_acceleration, rpp_position, &
+            rpp_velocity, rpp_acceleration
 
 contains
 
@@ -457,6 +459,9 @@ contains
   !      svm, svn = B's velocities along um, un relative to the guides, sam, san its
   !      accelerations (along um and un: the solve's unknowns); st (st_singular: parallel
   !      guides), est.
+  ! The kernel calls its three stages in order (prp_position, prp_velocity,
+  ! prp_acceleration); DPRM4 is an adapter over the kernel's position, DSKOR4 and DUSKR4
+  ! over the velocity and acceleration stages, DKNMA4 over the kernel.
   subroutine prp_kernel(level, xa, va, aa, um, wm, em, offm, xc, vc, ac, un, wn, en, offn, &
                         xb, vb, ab, svm, svn, sam, san, st, est)
     integer, intent(in) :: level
@@ -464,61 +469,132 @@ contains
     real(dp), intent(in) :: xc(2), vc(2), ac(2), un(2), wn, en, offn
     real(dp), intent(out) :: xb(2), vb(2), ab(2), svm, svn, sam, san, est
     integer, intent(out) :: st
-    real(dp) :: nm_(2), nn(2), dca(2), bx, by, sb, rel, sx, exb
-    real(dp) :: vgm(2), agm(2), vgn(2), agn(2), y1, y2, s2, s3, ev
+    real(dp) :: rb(2), sp, sx, sbv, relv, exb, kcm(2), kcn(2), est1
     type(cram) :: f
+    call prp_position(xa, um, offm, xc, un, offn, xb, rb, sp, sx, st, est)
+    if (failed(st)) return
+    if (level < 2) return
+    est1 = est
+    call prp_velocity(xa, va, um, wm, xc, vc, un, wn, xb, rb, sp, sx, est1, &
+                      vb, svm, svn, f, sbv, relv, exb, st, est)
+    if (failed(st)) return
+    if (level < 3) return
+    est1 = est
+    ! the Coriolis accelerations 2 w k x (s' u) of B relative to the guides
+    kcm = 2.0_dp*wm*svm*[-um(2), um(1)]
+    kcn = 2.0_dp*wn*svn*[-un(2), un(1)]
+    call prp_acceleration(xa, aa, um, wm, em, xc, ac, un, wn, en, xb, svm, svn, kcm, kcn, &
+                          2.0_dp*(abs(wn*svn) + abs(wm*svm)), f, sbv, relv, exb, sx, est1, &
+                          ab, sam, san, st, est)
+  end subroutine prp_kernel
+
+  ! Kind 4, stage 1: B on both guides' offset lines.
+  ! In:  xa, um, offm (guide M); xc, un, offn (guide N).
+  ! Out: xb; rb = B - A as solved (B's offset from A, before A is added); sp = the
+  !      group's size (the offsets and |C - A|), sx = the coordinates' size beyond it (for
+  !      the rounding of points far from the origin); st (st_singular: parallel guides),
+  !      est (relative to max(|B - A|, sp/sqrt(2))).
+  subroutine prp_position(xa, um, offm, xc, un, offn, xb, rb, sp, sx, st, est)
+    real(dp), intent(in) :: xa(2), um(2), offm, xc(2), un(2), offn
+    real(dp), intent(out) :: xb(2), rb(2), sp, sx, est
+    integer, intent(out) :: st
+    real(dp) :: nm_(2), nn(2), dca(2)
     nm_ = [-um(2), um(1)]
     nn = [-un(2), un(1)]
     dca = xc - xa
     ! nM . (B - A) = offM,  nN . (B - A) = offN + nN . (C - A)
-    sb = abs(offm) + abs(offn) + abs(dca(1)) + abs(dca(2))
+    sp = abs(offm) + abs(offn) + abs(dca(1)) + abs(dca(2))
     ! C - A carries the rounding of the coordinates it is the difference of (far from the
     ! origin more than its own), and so do B - A, B - C in the velocities below: u sx,
     ! sx = the coordinates' size beyond the group's (as rrr_kernel widens its estimate)
-    sx = max(0.0_dp, abs(xa(1)) + abs(xa(2)) + abs(xc(1)) + abs(xc(2)) - sb)
+    sx = max(0.0_dp, abs(xa(1)) + abs(xa(2)) + abs(xc(1)) + abs(xc(2)) - sp)
     call solve2e(nm_(1), nm_(2), nn(1), nn(2), offm, offn + nn(1)*dca(1) + nn(2)*dca(2), &
-                 4.0_dp*uround, 4.0_dp*uround*sb + 2.0_dp*uround*sx, sb, bx, by, st, est)
+                 4.0_dp*uround, 4.0_dp*uround*sp + 2.0_dp*uround*sx, sp, rb(1), rb(2), st, est)
     if (failed(st)) return
-    xb = xa + [bx, by]
-    if (level < 2) return
-    ! B's absolute error (solve2e's est is relative to max(|B - A|, sb/|A|_F), |A|_F =
+    xb = xa + rb
+  end subroutine prp_position
+
+  ! Kind 4's velocity (and acceleration) system: B's motion along the guides, columns um
+  ! and -un (unit vectors, exact to rounding whatever B's error).
+  pure subroutine prp_matrix(um, un, f)
+    real(dp), intent(in) :: um(2), un(2)
+    type(cram), intent(out) :: f
+    call cramer_set(um(1), -un(1), um(2), -un(2), f, 1.0_dp, 1.0_dp)
+  end subroutine prp_matrix
+
+  ! Kind 4, stage 2: v_GM(B) + svm um = v_GN(B) + svn un, v_G the guide links' points
+  ! under B.
+  ! In:  xa, va, um, wm (guide M); xc, vc, un, wn (guide N); xb and rb, sp, sx, estp from
+  !      prp_position (given positions: rb anything, sp = sx = estp = 0).
+  ! Out: vb = B's velocity (vb = v_GM(B) + svm um); svm, svn; for prp_acceleration: f
+  !      (the system), sbv (the size of its right-hand side's terms), relv (its relative
+  !      error), exb (B's absolute error); st, est (the largest of estp and relv).
+  pure subroutine prp_velocity(xa, va, um, wm, xc, vc, un, wn, xb, rb, sp, sx, estp, &
+                               vb, svm, svn, f, sbv, relv, exb, st, est)
+    real(dp), intent(in) :: xa(2), va(2), um(2), wm, xc(2), vc(2), un(2), wn, xb(2), rb(2)
+    real(dp), intent(in) :: sp, sx, estp
+    real(dp), intent(out) :: vb(2), svm, svn, sbv, relv, exb, est
+    type(cram), intent(out) :: f
+    integer, intent(out) :: st
+    real(dp) :: r(2), vgm(2), vgn(2)
+    ! B's absolute error (solve2e's est is relative to max(|B - A|, sp/|A|_F), |A|_F =
     ! sqrt(2) for unit vectors)
-    exb = est*max(norm2d(bx, by), sb/sqrt(2.0_dp))
-    call carried(xa, va, aa, wm, em, xb, vgm, agm)
-    call carried(xc, vc, ac, wn, en, xb, vgn, agn)
+    exb = estp*max(norm2d(rb(1), rb(2)), sp/sqrt(2.0_dp))
+    r = xb - xa                                   ! (carried's velocities)
+    vgm = va + wm*[-r(2), r(1)]
+    r = xb - xc
+    vgn = vc + wn*[-r(2), r(1)]
     ! the matrix is the guides' directions, exact to rounding whatever B's error (4u);
     ! B's error enters the right-hand side as (wN - wM) k x dB, the coordinates' rounding
     ! through B - A and B - C
-    call cramer_set(um(1), -un(1), um(2), -un(2), f, 1.0_dp, 1.0_dp)
+    call prp_matrix(um, un, f)
     ! the size of the terms vG = v + w k x (B - P) (their sum may cancel: B at rest)
-    sb = abs(va(1)) + abs(va(2)) + abs(vc(1)) + abs(vc(2)) &
-         + abs(wm)*(abs(xb(1) - xa(1)) + abs(xb(2) - xa(2))) &
-         + abs(wn)*(abs(xb(1) - xc(1)) + abs(xb(2) - xc(2)))
+    sbv = abs(va(1)) + abs(va(2)) + abs(vc(1)) + abs(vc(2)) &
+          + abs(wm)*(abs(xb(1) - xa(1)) + abs(xb(2) - xa(2))) &
+          + abs(wn)*(abs(xb(1) - xc(1)) + abs(xb(2) - xc(2)))
     call cramer(f, vgn(1) - vgm(1), vgn(2) - vgm(2), 4.0_dp*uround, &
-                4.0_dp*uround*sb + abs(wn - wm)*exb + 2.0_dp*uround*(abs(wm) + abs(wn))*sx, &
-                sb, s2, s3, st, rel)
+                4.0_dp*uround*sbv + abs(wn - wm)*exb + 2.0_dp*uround*(abs(wm) + abs(wn))*sx, &
+                sbv, svm, svn, st, relv)
+    est = estp
     if (failed(st)) return
-    est = max(est, rel)
-    svm = s2
-    svn = s3
-    vb = vgm + s2*um
-    if (level < 3) return
-    ev = abs_err(f, s2, s3, sb, rel)
+    est = max(estp, relv)
+    vb = vgm + svm*um
+  end subroutine prp_velocity
+
+  ! Kind 4, stage 3: a_GM(B) + kcm + sam um = a_GN(B) + kcn + san un, kcm, kcn the
+  ! Coriolis accelerations 2 w k x (s' u) of B relative to the guides.
+  ! In:  xa, aa, um, wm, em (guide M); xc, ac, un, wn, en (guide N); xb; svm, svn (for
+  !      the error estimate), kcm, kcn and sk (the size of the Coriolis terms); f, sbv,
+  !      relv, exb from prp_velocity and sx from prp_position (given velocities: relv =
+  !      exb = sx = 0), estv.
+  ! Out: ab = a_GM(B) + kcm + sam um; sam, san; st, est (the largest of estv and this
+  !      system's).
+  pure subroutine prp_acceleration(xa, aa, um, wm, em, xc, ac, un, wn, en, xb, svm, svn, &
+                                   kcm, kcn, sk, f, sbv, relv, exb, sx, estv, &
+                                   ab, sam, san, st, est)
+    real(dp), intent(in) :: xa(2), aa(2), um(2), wm, em, xc(2), ac(2), un(2), wn, en, xb(2)
+    real(dp), intent(in) :: svm, svn, kcm(2), kcn(2), sk, sbv, relv, exb, sx, estv
+    type(cram), intent(in) :: f
+    real(dp), intent(out) :: ab(2), sam, san, est
+    integer, intent(out) :: st
+    real(dp) :: r(2), agm(2), agn(2), ev, sb, rel
+    ev = abs_err(f, svm, svn, sbv, relv)
+    r = xb - xa                                   ! (carried's accelerations)
+    agm = aa + em*[-r(2), r(1)] - wm**2*r
+    r = xb - xc
+    agn = ac + en*[-r(2), r(1)] - wn**2*r
     sb = abs(aa(1)) + abs(aa(2)) + abs(ac(1)) + abs(ac(2)) &
          + (abs(em) + wm**2)*(abs(xb(1) - xa(1)) + abs(xb(2) - xa(2))) &
-         + (abs(en) + wn**2)*(abs(xb(1) - xc(1)) + abs(xb(2) - xc(2))) &
-         + 2.0_dp*(abs(wn*s3) + abs(wm*s2))
-    call cramer(f, agn(1) + 2.0_dp*wn*s3*nn(1) - agm(1) - 2.0_dp*wm*s2*nm_(1), &
-                agn(2) + 2.0_dp*wn*s3*nn(2) - agm(2) - 2.0_dp*wm*s2*nm_(2), &
+         + (abs(en) + wn**2)*(abs(xb(1) - xc(1)) + abs(xb(2) - xc(2))) + sk
+    call cramer(f, agn(1) + kcn(1) - agm(1) - kcm(1), agn(2) + kcn(2) - agm(2) - kcm(2), &
                 4.0_dp*uround, 4.0_dp*uround*sb + 2.0_dp*(abs(wn) + abs(wm))*ev &
                 + (abs(en - em) + abs(wn**2 - wm**2))*exb &
-                + 2.0_dp*uround*(abs(em) + abs(en) + wm**2 + wn**2)*sx, sb, y1, y2, st, rel)
+                + 2.0_dp*uround*(abs(em) + abs(en) + wm**2 + wn**2)*sx, sb, sam, san, st, rel)
+    est = estv
     if (failed(st)) return
-    est = max(est, rel)
-    sam = y1
-    san = y2
-    ab = agm + y1*um + 2.0_dp*wm*s2*nm_
-  end subroutine prp_kernel
+    est = max(estv, rel)
+    ab = agm + sam*um + kcm
+  end subroutine prp_acceleration
 
   ! Kind 5, RPP (DPRM5/DKNMA5): link 2 slides on guide M through A; a block (link 3)
   ! pivoted at C slides in link 2's slot, whose direction is um turned by t2.  K = where
@@ -531,6 +607,9 @@ contains
   !      svc their rates, sak, sac their second rates (relative to the guide);
   !      st (st_singular: the slot parallel to the guide), est.  A small t2 keeps its
   !      digits (numerics' solve_kind5, in the guide's frame).
+  ! The kernel calls its three stages in order (rpp_position, rpp_velocity,
+  ! rpp_acceleration); DPRM5 is an adapter over the kernel's position, DSKOR5 and DUSKR5
+  ! over the velocity and acceleration stages, DKNMA5 over the kernel.
   pure subroutine rpp_kernel(level, xa, va, aa, um, wm, em, t2, ct2, st2, xc, vc, ac, &
                         xk, vk, ak, us, sk, sc, svk, svc, sak, sac, st, est)
     integer, intent(in) :: level
@@ -538,68 +617,120 @@ contains
     real(dp), intent(in) :: xc(2), vc(2), ac(2)
     real(dp), intent(out) :: xk(2), vk(2), ak(2), us(2), sk, sc, svk, svc, sak, sac, est
     integer, intent(out) :: st
-    real(dp) :: nm_(2), dca(2), s2, s3, sb, rel, vr(2), ar(2), ex, sx
-    real(dp) :: vgc(2), agc(2), vgk(2), agk(2), y1, y2, d2, d3, ev
-    us = [um(1)*ct2 - um(2)*st2, um(2)*ct2 + um(1)*st2]
-    nm_ = [-um(2), um(1)]
-    dca = xc - xa
-    sb = abs(dca(1)) + abs(dca(2))
-    ! C - A carries the rounding of the coordinates far from the origin (as prp_kernel):
-    ! u sx, sx = their size beyond the group's; C - A again in the velocities below
-    sx = max(0.0_dp, abs(xa(1)) + abs(xa(2)) + abs(xc(1)) + abs(xc(2)) - sb)
-    ! s2 um + s3 us = C - A, solved in the frame of the guide (DPRM5's solve_kind5: a
-    ! small T2 keeps its digits)
-    call kind5(t2, um, nm_, dca, 4.0_dp*uround*sb + 2.0_dp*uround*sx, sb, s2, s3, st, est)
+    real(dp) :: sp, sx, estp, vr(2), rc(2), rk(2), sbv, relv, estv
+    call rpp_position(xa, um, t2, ct2, st2, xc, xk, us, sk, sc, sp, sx, st, est)
     if (failed(st)) return
-    sk = s2
-    sc = s3
-    xk = xa + s2*um
     if (level < 2) return
-    ex = est*max(norm2d(s2, s3), sb)       ! K's absolute error along the guide
-    call carried(xa, va, aa, wm, em, xc, vgc, agc)
-    call carried(xa, va, aa, wm, em, xk, vgk, agk)
-    ! C's velocity relative to the guide's link: vr = s2' um + s3' us
-    vr = vc - vgc
-    sb = abs(vc(1)) + abs(vc(2)) + abs(vgc(1)) + abs(vgc(2))
-    call kind5(t2, um, nm_, vr, 4.0_dp*uround*sb + 2.0_dp*uround*abs(wm)*sx, sb, d2, d3, &
-               st, rel)
+    estp = est
+    call rpp_velocity(xa, va, um, wm, t2, xc, vc, xk, sx, estp, vk, svk, svc, vr, rc, rk, &
+                      sbv, relv, st, est)
     if (failed(st)) return
-    rel = rel + est                       ! the position's error moves K's velocity
-    est = max(est, rel)
-    svk = d2
-    svc = d3
-    vk = vgk + d2*um
     if (level < 3) return
-    ev = rel*max(norm2d(d2, d3), sb)
+    estv = est
     ! the Coriolis term 2 w (s2' nm + s3' ns) is 2 w k x vr: computed so, it is known to
     ! rounding, where s2', s3' each grow as 1/t2 and cancel
-    ar = ac - agc - 2.0_dp*wm*[-vr(2), vr(1)]
-    sb = abs(ac(1)) + abs(ac(2)) + abs(agc(1)) + abs(agc(2)) &
-         + 2.0_dp*abs(wm)*(abs(vr(1)) + abs(vr(2)))
-    call kind5(t2, um, nm_, ar, 4.0_dp*uround*sb + 2.0_dp*uround*(abs(em) + wm**2)*sx, sb, &
-               y1, y2, st, rel)
+    call rpp_acceleration(aa, um, wm, em, t2, ac, rc, rk, svk, &
+                          2.0_dp*wm*[-vr(2), vr(1)], 2.0_dp*abs(wm)*(abs(vr(1)) + abs(vr(2))), &
+                          sk, sc, sp, sx, estp, svk, svc, sbv, relv, estv, ak, sak, sac, st, est)
+  end subroutine rpp_kernel
+
+  ! Kind 5, stage 1: C - A = sk um + sc us.
+  ! In:  xa, um (guide M); t2, ct2, st2 (the slot); xc.
+  ! Out: xk = A + sk um; us; sk, sc; sp = |C - A| (1-norm), sx = the coordinates' size
+  !      beyond it; st (st_singular: the slot parallel to the guide), est.
+  pure subroutine rpp_position(xa, um, t2, ct2, st2, xc, xk, us, sk, sc, sp, sx, st, est)
+    real(dp), intent(in) :: xa(2), um(2), t2, ct2, st2, xc(2)
+    real(dp), intent(out) :: xk(2), us(2), sk, sc, sp, sx, est
+    integer, intent(out) :: st
+    real(dp) :: dca(2)
+    us = [um(1)*ct2 - um(2)*st2, um(2)*ct2 + um(1)*st2]
+    dca = xc - xa
+    sp = abs(dca(1)) + abs(dca(2))
+    ! C - A carries the rounding of the coordinates far from the origin (as prp_kernel):
+    ! u sx, sx = their size beyond the group's; C - A again in the velocities below
+    sx = max(0.0_dp, abs(xa(1)) + abs(xa(2)) + abs(xc(1)) + abs(xc(2)) - sp)
+    ! sk um + sc us = C - A, solved in the frame of the guide (DPRM5's solve_kind5: a
+    ! small T2 keeps its digits)
+    call kind5(t2, um, dca, 4.0_dp*uround*sp + 2.0_dp*uround*sx, sp, sk, sc, st, est)
+    if (failed(st)) return
+    xk = xa + sk*um
+  end subroutine rpp_position
+
+  ! Kind 5, stage 2: C's velocity relative to guide M's link, vr = vc - v_GM(C) =
+  ! svk um + svc us.
+  ! In:  xa, va, um, wm (guide M); t2; xc, vc; xk, sx, estp from rpp_position (given
+  !      positions: xk anything, sx = estp = 0).
+  ! Out: vk = K's velocity (a point of link 2); svk, svc; vr; for rpp_acceleration rc =
+  !      C - A, rk = K - A, sbv (the size of vr's terms) and relv (svk's, svc's relative
+  !      error, the position's added); st, est.
+  pure subroutine rpp_velocity(xa, va, um, wm, t2, xc, vc, xk, sx, estp, vk, svk, svc, vr, &
+                               rc, rk, sbv, relv, st, est)
+    real(dp), intent(in) :: xa(2), va(2), um(2), wm, t2, xc(2), vc(2), xk(2), sx, estp
+    real(dp), intent(out) :: vk(2), svk, svc, vr(2), rc(2), rk(2), sbv, relv, est
+    integer, intent(out) :: st
+    real(dp) :: vgc(2)
+    rc = xc - xa                                  ! (carried's velocities)
+    rk = xk - xa
+    vgc = va + wm*[-rc(2), rc(1)]
+    vr = vc - vgc
+    sbv = abs(vc(1)) + abs(vc(2)) + abs(vgc(1)) + abs(vgc(2))
+    call kind5(t2, um, vr, 4.0_dp*uround*sbv + 2.0_dp*uround*abs(wm)*sx, sbv, svk, svc, &
+               st, relv)
+    est = estp
+    if (failed(st)) return
+    relv = relv + estp                    ! the position's error moves K's velocity
+    est = max(estp, relv)
+    vk = (va + wm*[-rk(2), rk(1)]) + svk*um
+  end subroutine rpp_velocity
+
+  ! Kind 5, stage 3: C's acceleration relative to guide M's link, ac - a_GM(C) - kd =
+  ! sak um + sac us, kd the Coriolis term 2 w k x vr.
+  ! In:  aa, um, wm, em (guide M: A's acceleration); t2; ac; rc = C - A, rk = K - A (from
+  !      rpp_velocity), dk (K's rate svk, for K's acceleration); kd and ks (the size of
+  !      its terms); for the error estimate sk, sc, sp, sx, estp from rpp_position and
+  !      svk, svc, sbv, relv from rpp_velocity (given positions and velocities: all 0);
+  !      estv.
+  ! Out: ak = K's acceleration; sak, sac; st, est.
+  pure subroutine rpp_acceleration(aa, um, wm, em, t2, ac, rc, rk, dk, kd, ks, &
+                                   sk, sc, sp, sx, estp, svk, svc, sbv, relv, estv, &
+                                   ak, sak, sac, st, est)
+    real(dp), intent(in) :: aa(2), um(2), wm, em, t2, ac(2), rc(2), rk(2), dk
+    real(dp), intent(in) :: kd(2), ks, sk, sc, sp, sx, estp, svk, svc, sbv, relv, estv
+    real(dp), intent(out) :: ak(2), sak, sac, est
+    integer, intent(out) :: st
+    real(dp) :: agc(2), agk(2), ar(2), sb, rel, ex, ev, eg
+    ex = estp*max(norm2d(sk, sc), sp)      ! K's absolute error along the guide
+    ev = relv*max(norm2d(svk, svc), sbv)
+    agc = aa + em*[-rc(2), rc(1)] - wm**2*rc     ! (carried's accelerations)
+    agk = aa + em*[-rk(2), rk(1)] - wm**2*rk
+    ar = ac - agc - kd
+    sb = abs(ac(1)) + abs(ac(2)) + abs(agc(1)) + abs(agc(2)) + ks
+    call kind5(t2, um, ar, 4.0_dp*uround*sb + 2.0_dp*uround*(abs(em) + wm**2)*sx, sb, &
+               sak, sac, st, rel)
+    est = estv
     if (failed(st)) return
     ! K's acceleration agk + s2'' um + 2 w s2' nm: the errors of s2' and of K, relative
     ! to the size of its terms
-    rel = rel + (2.0_dp*abs(wm)*ev + (abs(em) + wm**2)*ex)/max(norm2d(y1, y2), sb, &
-                 abs(agk(1)) + abs(agk(2)) + 2.0_dp*abs(wm*d2))
-    est = max(est, rel)
-    sak = y1
-    sac = y2
-    ak = agk + y1*um + 2.0_dp*wm*d2*nm_
-  end subroutine rpp_kernel
+    ! (none when they are 0: the group may be at rest, every term 0)
+    eg = 2.0_dp*abs(wm)*ev + (abs(em) + wm**2)*ex
+    if (eg > 0.0_dp) rel = rel + eg/max(norm2d(sak, sac), sb, &
+                                        abs(agk(1)) + abs(agk(2)) + 2.0_dp*abs(wm*dk))
+    est = max(estv, rel)
+    ak = agk + sak*um + 2.0_dp*wm*dk*[-um(2), um(1)]
+  end subroutine rpp_acceleration
 
   ! ym um + ys us = bb (us = um turned by t2) through numerics' solve_kind5, which solves
   ! y1 e(FIM+T2) - y2 e(FIM) = b in the guide's frame: ys = y1, ym = -y2.  A slot near
   ! +-pi is the same slot reversed: solved at t2 -+ pi (pi to twice double precision;
   ! t2 -+ pi_hi exact for pi/2 < |t2| <= 2 pi), ys negated: it keeps its digits as a
   ! small t2 does (solve_kind5 takes t2 as known to an ulp, 2u pi near pi)
-  pure subroutine kind5(t2, um, nm_, bb, db, sbb, ym, ys, st5, rel5)
-    real(dp), intent(in) :: t2, um(2), nm_(2), bb(2), db, sbb
+  pure subroutine kind5(t2, um, bb, db, sbb, ym, ys, st5, rel5)
+    real(dp), intent(in) :: t2, um(2), bb(2), db, sbb
     real(dp), intent(out) :: ym, ys, rel5
     integer, intent(out) :: st5
     real(dp), parameter :: pi_hi = 3.141592653589793_dp, pi_lo = 1.2246467991473532e-16_dp
-    real(dp) :: z1, z2, tr, sgn
+    real(dp) :: z1, z2, tr, sgn, nm_(2)
+    nm_ = [-um(2), um(1)]
     tr = t2
     sgn = 1.0_dp
     if (abs(t2) > 0.5_dp*pi_hi) then

@@ -69,8 +69,10 @@
 ! the status is the dead-centre policy's for the kernel's estimate.  As-printed mode
 ! keeps each routine's own code, the book's sequence, which the printed figures depend
 ! on.  The other kinds' routines keep their own code until their kernels hold what the
-! book routines promise (kinds 2, 4: digits at 2**+-990 and far from the origin, the
-! estimate near parallel guides).
+! book routines promise (kind 2: digits at 2**+-990 and far from the origin).  Kinds 4
+! and 5 are adapters too (corrected mode): DPRM4, DKNMA4, DPRM5, DKNMA5 over prp_kernel,
+! rpp_kernel, DSKOR4/5 and DUSKR4/5 over their velocity and acceleration stages (see
+! DPRM4).
 !
 ! Corrected mode, for speed (issue 9; the same mathematics, no ERRATA entry): DKNMA2,
 ! DSKOR1 and DUSKR1 take each direction's cosine and sine once and get e(FI + PI/2),
@@ -83,6 +85,8 @@ module kinematics
                    st_singular, st_range, st_digits, norm2d
   use operators, only: dugl1, dugl2, dugl3, dugl4, dugl5, dugol, domega, dvkt, dsmvkt
   use groups, only: rrr_kernel
+  use groups, only: cram, prp_kernel, prp_position, prp_matrix, prp_velocity, &
+                    prp_acceleration, rpp_kernel, rpp_velocity, rpp_acceleration
   use numerics, only: uround, system2, solve2e, factor2, solve2f, solve_kind5, policy, &
                       settle, failed, wrap_pi, angle_sensitivity, tri_angles, tri_apex, &
                       apex_vectors, unscale, acc_dir, turn, components, quarter
@@ -300,6 +304,15 @@ contains
   ! X(2,2) = -TAN(FIN) missing), E-DPRM4-3 (OCR 1, 0 for 1.0).  Rows of the printed system
   ! multiplied by COS(FIM), COS(FIN) (same lines; vertical guides allowed).
   ! Parallel guides: st_singular.
+  ! Corrected mode (issue 25): an adapter over the kind-4 kernel of groups.f90 (the
+  ! Mechanism's prp): its position stage prp_position (prp_kernel at level 1) solves B - A
+  ! from the guides' unit vectors, A put at the origin (the kernel is the same in any
+  ! frame; the given coordinates are exact, so only C - A is rounded, and a group far
+  ! from the origin keeps its digits, as the book's code here does: E-DKNMA4-5); the
+  ! radius vectors of B from VM, VN as before.  As printed: the code below, unchanged.
+  ! The same holds for DSKOR4, DUSKR4 (over the stages prp_velocity, prp_acceleration, B
+  ! put at the origin), DKNMA4 (over prp_kernel), and for kind 5: DPRM5, DKNMA5 over
+  ! rpp_kernel, DSKOR5, DUSKR5 over rpp_velocity, rpp_acceleration.
   subroutine dprm4(xvm, yvm, xa, ya, fim, xvn, yvn, xc, yc, fin, rz2, t2, rz3, t3, aaa, &
                    xb, yb, rvbm, fivbm, rvbn, fivbn, ier)
     !: XVM, YVM : real -- Instantaneous centre of rotation of link M (carrying guide M), m.
@@ -314,7 +327,24 @@ contains
     real(dp), intent(out) :: xb, yb, rvbm, fivbm, rvbn, fivbn
     integer, intent(out) :: ier
     real(dp) :: sm, cm, sn, cn, dxc, dyc, bx, by, d2, d3, sb, da, rel, mx, my, nx, ny
+    real(dp) :: x_b(2), r_b(2), sx
     xb = 0.0_dp; yb = 0.0_dp; rvbm = 0.0_dp; fivbm = 0.0_dp; rvbn = 0.0_dp; fivbn = 0.0_dp
+    if (printed_mode == 0) then                   ! corrected: the kind-4 kernel's position
+      call prp_position([0.0_dp, 0.0_dp], [cos(fim), sin(fim)], rz2*sin(t2), &
+                        [xc - xa, yc - ya], [cos(fin), sin(fin)], rz3*sin(t3), x_b, r_b, &
+                        sb, sx, ier, rel)
+      if (failed(ier)) return
+      xb = xa + r_b(1)
+      yb = ya + r_b(2)
+      mx = r_b(1) + (xa - xvm); my = r_b(2) + (ya - yvm)
+      nx = r_b(1) - (xc - xa) + (xc - xvn); ny = r_b(2) - (yc - ya) + (yc - yvn)
+      rvbm = norm2d(mx, my)
+      fivbm = dugol(dugl2(0.0_dp, 0.0_dp, mx, my))
+      rvbn = norm2d(nx, ny)
+      fivbn = dugol(dugl2(0.0_dp, 0.0_dp, nx, ny))
+      ier = settle(ier, rel, [xb, yb, rvbm, rvbn])
+      return
+    end if
     sm = sin(fim); cm = cos(fim)
     sn = sin(fin); cn = cos(fin)
     ! unknowns (YB - YA, XB - XA), the printed rows relative to A:
@@ -359,7 +389,21 @@ contains
     real(dp), intent(out) :: xk, yk, s2, s3
     integer, intent(out) :: ier
     real(dp) :: cm, sm, dx, dy, d1, d2, sb, rel
+    real(dp) :: z(2), x_k(2), v_k(2), a_k(2), us(2), q1, q2, q3, q4
     xk = 0.0_dp; yk = 0.0_dp; s2 = 0.0_dp; s3 = 0.0_dp
+    if (printed_mode == 0) then                   ! corrected: the kind-5 kernel (DPRM4)
+      z = 0.0_dp
+      call rpp_kernel(1, z, z, z, [cos(fim), sin(fim)], 0.0_dp, 0.0_dp, t2, cos(t2), &
+                      sin(t2), [xc - xa, yc - ya], z, z, x_k, v_k, a_k, us, d1, d2, q1, q2, &
+                      q3, q4, ier, rel)                ! A at the origin (DPRM4)
+      if (failed(ier)) return
+      xk = xa + x_k(1)
+      yk = ya + x_k(2)
+      s2 = d1
+      s3 = d2
+      ier = settle(ier, rel, [xk, yk, s2, s3])
+      return
+    end if
     cm = cos(fim)
     sm = sin(fim)
     dx = xc - xa
@@ -519,7 +563,26 @@ contains
     real(dp), intent(out) :: vbbm, albbm, vbbn, albbn, vb, alb
     integer, intent(out) :: ier
     real(dp) :: vbm, vbn, albm, albn, y1, y2, sb, rel
+    real(dp) :: z(2), r_m(2), r_n(2), v_b(2), relv, exb
+    type(cram) :: f
     vbbm = 0.0_dp; albbm = 0.0_dp; vbbn = 0.0_dp; albbn = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp
+    if (printed_mode == 0) then                   ! corrected: the kind-4 velocity stage
+      ! B at the origin, VM at -r_m, VN at -r_n (points of the guide links at rest)
+      z = 0.0_dp
+      call components(rvbm, fivbm, r_m(1), r_m(2))
+      call components(rvbn, fivbn, r_n(1), r_n(2))
+      call prp_velocity(-r_m, z, [cos(fim), sin(fim)], wm, -r_n, z, [cos(fin), sin(fin)], wn, &
+                        z, z, 0.0_dp, 0.0_dp, 0.0_dp, v_b, y1, y2, f, sb, relv, exb, ier, rel)
+      if (failed(ier)) return
+      albbm = dugl4(fim, pi, y1)
+      vbbm = abs(y1)
+      albbn = dugl4(fin, pi, y2)
+      vbbn = abs(y2)
+      vb = norm2d(v_b(1), v_b(2))                 ! v_BM + v_BBM (DSMVKT)
+      alb = dugl5(v_b(1), v_b(2))
+      ier = settle(ier, rel, [vbbm, vbbn, vb])
+      return
+    end if
     vbm = abs(wm)*rvbm
     vbn = abs(wn)*rvbn
     albm = dugl3(fivbm, pid2, wm)
@@ -556,7 +619,27 @@ contains
     real(dp), intent(out) :: vc2c3, alc2c3, vc2cm, alc2cm, vc2, alc2
     integer, intent(out) :: ier
     real(dp) :: vcm, alcm, y1, y2, sb, rel
+    real(dp) :: z(2), um(2), v_c(2), v_k(2), vr(2), v2(2), relv, r_c(2), r_k(2)
     vc2c3 = 0.0_dp; alc2c3 = 0.0_dp; vc2cm = 0.0_dp; alc2cm = 0.0_dp; vc2 = 0.0_dp; alc2 = 0.0_dp
+    if (printed_mode == 0) then                   ! corrected: the kind-5 velocity stage
+      ! link M turns about VM (at rest); v_C3 - v_CM = vr = y2 e(FIM) - y1 e(FIM + T2)
+      z = 0.0_dp
+      um = [cos(fim), sin(fim)]
+      call components(vc3, alc3, v_c(1), v_c(2))
+      call rpp_velocity([xvm, yvm], z, um, wm, t2, [xc3, yc3], v_c, [xc3, yc3], 0.0_dp, &
+                        0.0_dp, v_k, y2, y1, vr, r_c, r_k, sb, relv, ier, rel)
+      if (failed(ier)) return
+      y1 = -y1
+      alc2c3 = dugl4(fim + t2, pi, y1)
+      vc2c3 = abs(y1)
+      alc2cm = dugl4(fim, pi, y2)
+      vc2cm = abs(y2)
+      v2 = (v_c - vr) + y2*um                     ! v_C2 = v_CM + v_C2CM
+      vc2 = norm2d(v2(1), v2(2))
+      alc2 = dugl5(v2(1), v2(2))
+      ier = settle(ier, rel, [vc2c3, vc2cm, vc2])
+      return
+    end if
     vcm = abs(wm)*norm2d(xc3 - xvm, yc3 - yvm)
     alcm = dugl3(dugl2(xvm, yvm, xc3, yc3), pid2, wm)
     sb = vcm + abs(vc3)
@@ -764,7 +847,33 @@ contains
     real(dp), intent(out) :: abbmr, bbbmr, abbnr, bbbnr, ab, bb
     integer, intent(out) :: ier
     real(dp) :: abn, abm, dlt, dlta, bbm, bbn, y1, y2, a, b, sb, rel
+    real(dp) :: z(2), r_m(2), r_n(2), um(2), un(2), k_m(2), k_n(2), a_b(2)
+    type(cram) :: f
     abbmr = 0.0_dp; bbbmr = 0.0_dp; abbnr = 0.0_dp; bbbnr = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp
+    if (printed_mode == 0) then                   ! corrected: the kind-4 acceleration stage
+      ! B at the origin, VM at -r_m, VN at -r_n (points of the guide links at rest); the
+      ! Coriolis accelerations as given
+      z = 0.0_dp
+      um = [cos(fim), sin(fim)]
+      un = [cos(fin), sin(fin)]
+      call components(rvbm, fivbm, r_m(1), r_m(2))
+      call components(rvbn, fivbn, r_n(1), r_n(2))
+      call components(abbmk, bbbmk, k_m(1), k_m(2))
+      call components(abbnk, bbbnk, k_n(1), k_n(2))
+      call prp_matrix(um, un, f)
+      call prp_acceleration(-r_m, z, um, wm, em, -r_n, z, un, wn, en, z, 0.0_dp, 0.0_dp, &
+                            k_m, k_n, abs(abbmk) + abs(abbnk), f, 0.0_dp, 0.0_dp, 0.0_dp, &
+                            0.0_dp, 0.0_dp, a_b, y1, y2, ier, rel)
+      if (failed(ier)) return
+      bbbmr = dugl4(fim, pi, y1)
+      abbmr = abs(y1)
+      bbbnr = dugl4(fin, pi, y2)
+      abbnr = abs(y2)
+      ab = norm2d(a_b(1), a_b(2))                 ! a_BM + a^k_M + a^r_M
+      bb = dugl5(a_b(1), a_b(2))
+      ier = settle(ier, rel, [abbmr, abbnr, ab])
+      return
+    end if
     abn = rvbn*norm2d(wn*wn, en)                   ! = RVBN*SQRT(WN**4 + EN**2), no overflow
     abm = rvbm*norm2d(wm*wm, em)
     if (em == 0.0_dp) then
@@ -820,8 +929,35 @@ contains
     real(dp), intent(out) :: ac2c3r, bc2c3r, ac2cmr, bc2cmr, ac2, bc2
     integer, intent(out) :: ier
     real(dp) :: acm, dlt, bcm, y1, y2, a, b, sb, rel
+    real(dp) :: z(2), um(2), us(2), a_c(2), k_2m(2), k_23(2), a_k(2), a2(2), r_c(2)
     ac2c3r = 0.0_dp; bc2c3r = 0.0_dp; ac2cmr = 0.0_dp; bc2cmr = 0.0_dp; ac2 = 0.0_dp
     bc2 = 0.0_dp
+    if (printed_mode == 0) then                   ! corrected: the kind-5 acceleration stage
+      ! link M turns about VM (at rest); a_C3 - a_CM - (a^k_2M - a^k_23) =
+      ! y2 e(FIM) - y1 e(FIM + T2), the Coriolis accelerations as given
+      z = 0.0_dp
+      um = [cos(fim), sin(fim)]
+      call components(ac3, bc3, a_c(1), a_c(2))
+      call components(ac2mk, bc2mk, k_2m(1), k_2m(2))
+      call components(ac23k, bc23k, k_23(1), k_23(2))
+      r_c = [xc3 - xvm, yc3 - yvm]                ! C - VM (K not needed: r_k = r_c)
+      call rpp_acceleration(z, um, wm, em, t2, a_c, r_c, r_c, 0.0_dp, k_2m - k_23, &
+                            abs(ac2mk) + abs(ac23k), 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, &
+                            0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, 0.0_dp, a_k, y2, y1, &
+                            ier, rel)
+      if (failed(ier)) return
+      y1 = -y1
+      bc2c3r = dugl4(fim + t2, pi, y1)
+      ac2c3r = abs(y1)
+      bc2cmr = dugl4(fim, pi, y2)
+      ac2cmr = abs(y2)
+      us = [um(1)*cos(t2) - um(2)*sin(t2), um(2)*cos(t2) + um(1)*sin(t2)]
+      a2 = (a_c + k_23) + y1*us                   ! a_C2 = a_C3 + a^k_23 + a^r_23
+      ac2 = norm2d(a2(1), a2(2))
+      bc2 = dugl5(a2(1), a2(2))
+      ier = settle(ier, rel, [ac2c3r, ac2cmr, ac2])
+      return
+    end if
     acm = norm2d(xc3 - xvm, yc3 - yvm)*norm2d(wm*wm, em)   ! = |C - VM| SQRT(WM**4 + EM**2)
     if (em == 0.0_dp) then
       dlt = pid2
@@ -1353,10 +1489,46 @@ contains
     real(dp) :: sm, cm, sn, cn, rab, cb, fi2, fi3, vbm, albm, vbn, albn, y1, y2, vbx, vby
     real(dp) :: abm, abn, bbm, bbn, abx, aby, dxc, dyc, bxa, bya, d2, d3, sb, da, relp, relv
     real(dp) :: rela, eb, ev, est, hm, hn
-    integer :: st2
+    real(dp) :: z(2), x_b(2), v_b(2), a_b(2), s2, s3
+    integer :: st2, level
     xb = 0.0_dp; yb = 0.0_dp; vb2r = 0.0_dp; alb2r = 0.0_dp; vb3r = 0.0_dp; alb3r = 0.0_dp
     vb = 0.0_dp; alb = 0.0_dp; ab2k = 0.0_dp; bb2k = 0.0_dp; ab3k = 0.0_dp; bb3k = 0.0_dp
     ab2r = 0.0_dp; bb2r = 0.0_dp; ab3r = 0.0_dp; bb3r = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp
+    if (printed_mode == 0) then                   ! corrected: the kind-4 kernel
+      ! the guides turn about A and C (at rest), A put at the origin (DPRM4); the
+      ! kernel's relative velocities s2, s3
+      ! and accelerations y1, y2 are along e(FIM), e(FIN), the book's accelerations along
+      ! ALB2R, ALB3R (e(FIM) or e(FIM - pi) by the sign of s2, DUGL4)
+      level = 3
+      if (analog == 1.0_dp) level = 2
+      z = 0.0_dp
+      call prp_kernel(level, z, z, z, [cos(fim), sin(fim)], wm, em, rz2*sin(eta2), &
+                      [xc - xa, yc - ya], z, z, [cos(fin), sin(fin)], wn, en, rz3*sin(eta3), &
+                      x_b, v_b, a_b, s2, s3, y1, y2, ier, est)
+      if (failed(ier)) return
+      xb = xa + x_b(1)
+      yb = ya + x_b(2)
+      vb2r = abs(s2)
+      alb2r = dugl4(fim, pi, s2)
+      vb3r = abs(s3)
+      alb3r = dugl4(fin, pi, s3)
+      vb = norm2d(v_b(1), v_b(2))
+      alb = dugl5(v_b(1), v_b(2))
+      if (level == 3) then
+        ab2k = 2.0_dp*vb2r*abs(wm)
+        ab3k = 2.0_dp*vb3r*abs(wn)
+        bb2k = dugl3(alb2r, pid2, wm)
+        bb3k = dugl3(alb3r, pid2, wn)
+        ab2r = abs(y1)
+        bb2r = dugl4(alb2r, pi, book_sign(1.0_dp, s2)*y1)
+        ab3r = abs(y2)
+        bb3r = dugl4(alb3r, pi, book_sign(1.0_dp, s3)*y2)
+        ab = norm2d(a_b(1), a_b(2))
+        bb = dugl5(a_b(1), a_b(2))
+      end if
+      ier = settle(ier, est, [xb, yb, vb2r, vb3r, vb, ab2k, ab3k, ab2r, ab3r, ab])
+      return
+    end if
     sm = sin(fim); cm = cos(fim)
     sn = sin(fin); cn = cos(fin)
     ! the printed rows relative to A (unknowns YB - YA, XB - XA), as in DPRM4
@@ -1471,10 +1643,56 @@ contains
     integer, intent(out) :: ier
     real(dp) :: rc, vcm, firc, alcm, y1, y2, acm, bcm, a, b, sb, relv, rela, est, sv1, sv2
     real(dp) :: sbv, bv1, bv2
-    integer :: st2
+    real(dp) :: z(2), um(2), v_c(2), a_c(2), x_k(2), v_k(2), a_k(2), us(2), sk, sc, svk, svc
+    real(dp) :: sak, sac, w(2)
+    integer :: st2, level
     vc2c3 = 0.0_dp; alc2c3 = 0.0_dp; vc2cm = 0.0_dp; alc2cm = 0.0_dp; vc = 0.0_dp; alc = 0.0_dp
     ac2c3k = 0.0_dp; bc2c3k = 0.0_dp; ac2cmk = 0.0_dp; bc2cmk = 0.0_dp; ac2c3r = 0.0_dp
     bc2c3r = 0.0_dp; ac2cmr = 0.0_dp; bc2cmr = 0.0_dp; ac = 0.0_dp; bc = 0.0_dp
+    if (printed_mode == 0) then                   ! corrected: the kind-5 kernel
+      ! link M turns about R (at rest, put at the origin: DPRM4), its guide taken through
+      ! R (the relative motion is the same for every line of link M along FIM: XA, YA
+      ! unused, as printed); the
+      ! kernel's rates along e(FIM), e(FIM + ETA2) are y2 and -y1 of the book's
+      ! y1 e(FIM + ETA2) - y2 e(FIM) = v_CM - v_C3, its accelerations the same, the book's
+      ! accelerations along ALC2C3, ALC2CM (DUGL4 of the velocities' signs)
+      level = 3
+      if (analog == 1.0_dp) level = 2
+      z = 0.0_dp
+      um = [cos(fim), sin(fim)]
+      call components(vc3, alc3, v_c(1), v_c(2))
+      a_c = 0.0_dp
+      if (level == 3) call components(ac3, bc3, a_c(1), a_c(2))
+      call rpp_kernel(level, z, z, z, um, wm, em, eta2, cos(eta2), sin(eta2), &
+                      [xc - xr, yc - yr], v_c, a_c, x_k, v_k, a_k, us, sk, sc, svk, svc, sak, sac, &
+                      ier, est)
+      if (failed(ier)) return
+      y1 = -svc
+      y2 = svk
+      vc2c3 = abs(y1)
+      alc2c3 = dugl4(fim + eta2, pi, y1)
+      vc2cm = abs(y2)
+      alc2cm = dugl4(fim, pi, y2)
+      w = v_c + y1*us                             ! v_C2 = v_C3 + v_C2C3
+      vc = norm2d(w(1), w(2))
+      alc = dugl5(w(1), w(2))
+      if (level == 3) then
+        ac2c3k = 2.0_dp*vc2c3*abs(wm)
+        bc2c3k = dugl3(alc2c3, pid2, wm)
+        ac2cmk = 2.0_dp*vc2cm*abs(wm)
+        bc2cmk = dugl3(alc2cm, pid2, wm)
+        ac2c3r = abs(sac)
+        bc2c3r = dugl4(alc2c3, pi, -book_sign(1.0_dp, y1)*sac)
+        ac2cmr = abs(sak)
+        bc2cmr = dugl4(alc2cm, pi, book_sign(1.0_dp, y2)*sak)
+        ! a_C2 = a_C3 + a^k_23 + a^r_23, a^k_23 = 2 WM k x v_C2C3
+        w = a_c + 2.0_dp*wm*y1*[-us(2), us(1)] - sac*us
+        ac = norm2d(w(1), w(2))
+        bc = dugl5(w(1), w(2))
+      end if
+      ier = settle(ier, est, [vc2c3, vc2cm, vc, ac2c3k, ac2cmk, ac2c3r, ac2cmr, ac])
+      return
+    end if
     rc = norm2d(xc - xr, yc - yr)
     vcm = abs(wm)*rc
     firc = dugl2(xr, yr, xc, yc)                  ! E-DKNMA5-2: book DUGL2(RC, PID2, WM)
