@@ -252,7 +252,7 @@ contains
     real(dp), intent(out) :: xb(2), r2(2), r3(2), u2(2), u3(2), dang
     integer, intent(out) :: st
     integer :: ex
-    real(dp) :: dx, dy, d, pr, h, pq, sx
+    real(dp) :: dx, dy, d, pr, h, pq, sx, q2, q3
     dx = xc(1) - xa(1)
     dy = xc(2) - xa(2)
     d = norm2d(dx, dy)
@@ -272,10 +272,20 @@ contains
     u3 = [r3(1)*rl3, r3(2)*rl3]
     ! d carries the rounding of the coordinates it is the difference of (far from the
     ! origin more than that of d itself, which dang allows for): the angles move by
-    ! 2u (sx d + l2**2 + l3**2)/(d h) instead of 2u (d**2 + l2**2 + l3**2)/(d h)
+    ! 2u (sx d + l2**2 + l3**2)/(d h) instead of 2u (d**2 + l2**2 + l3**2)/(d h), i.e.
+    ! 1 + (sx - d) d/(d**2 + l2**2 + l3**2) times as far: one division, where no square
+    ! overflows or underflows (a huge l2 = l3 over a small d: the sum is inf, the factor
+    ! 1, its limit); beyond, the same in ratios of d
     sx = abs(xa(1)) + abs(xa(2)) + abs(xc(1)) + abs(xc(2))
-    if (sx > d) dang = dang*((sx/d)*(d/l2)*(d/l3) + l2/l3 + l3/l2)/ &
-                           ((d/l2)*(d/l3) + l2/l3 + l3/l2)
+    if (sx > d) then
+      if (sx < 2.0_dp**500 .and. d > 2.0_dp**(-500)) then
+        dang = dang*(1.0_dp + (sx - d)*d/(d*d + l2*l2 + l3*l3))
+      else
+        q2 = l2/d
+        q3 = l3/d
+        dang = dang*(1.0_dp + (sx/d - 1.0_dp)/(1.0_dp + q2*q2 + q3*q3))
+      end if
+    end if
   end subroutine rrr_position
 
   ! Kind 1's velocity and acceleration systems share one matrix: the columns k x r2 and

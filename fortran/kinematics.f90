@@ -448,7 +448,7 @@ contains
     real(dp), intent(out) :: vba, alba, vbc, albc, vb, alb, w2, w3
     integer, intent(out) :: ier
     real(dp), parameter :: half_pi = pi_exact/2.0_dp     ! corrected mode's PID2
-    real(dp) :: r2(2), r3(2), v_a(2), v_c(2), v_b(2), om2, om3, ev, rel
+    real(dp) :: r2(2), r3(2), v_a(2), v_c(2), v_b(2), om2, om3, ev, rel, dang
     type(cram) :: f
     vba = 0.0_dp; alba = 0.0_dp; vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp
     w2 = 0.0_dp; w3 = 0.0_dp
@@ -456,10 +456,14 @@ contains
     r3 = rz3*[cos(fi3), sin(fi3)]
     call components(va, ala, v_a(1), v_a(2))
     call components(vc, alc, v_c(1), v_c(2))
+    dang = 4.0_dp*uround*(2.0_dp + max(abs(fi2), abs(fi3)))
     call rrr_system(r2, r3, rz2, rz3, f)
-    call rrr_velocity(f, r2, v_a, v_c, 4.0_dp*uround*(2.0_dp + max(abs(fi2), abs(fi3))), &
-                      4.0_dp*uround*(1.0_dp + max(abs(ala), abs(alc))), v_b, om2, om3, ev, &
-                      ier, rel)
+    call rrr_velocity(f, r2, v_a, v_c, dang, 4.0_dp*uround*(1.0_dp + max(abs(ala), abs(alc))), &
+                      v_b, om2, om3, ev, ier, rel)
+    ! links that are not parallel make no dead centre: a singular system then comes of
+    ! their lengths (one of 5e-324 beside one of 1: W2 = 2e323 is no double), a range
+    ! problem
+    if (ier == st_singular .and. abs(sin(fi2 - fi3)) > 4.0_dp*dang) ier = st_range
     if (failed(ier)) return
     w2 = om2 + 0.0_dp                             ! (-0 is +0, as DOMEGA gives it)
     w3 = om3 + 0.0_dp
