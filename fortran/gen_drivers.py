@@ -418,15 +418,20 @@ def finite_test(items):
 def sum_test(names):
     """The test that every real ``names`` is a finite number, in one comparison: x - x is
     +0 for a finite x and NaN for an infinite or NaN one, and a sum of terms one of which
-    is NaN is NaN (no reassociation: the build has no -ffast-math)."""
+    is NaN is NaN (no reassociation: the build has no -ffast-math).  Summed pairwise, so
+    that the additions do not wait on one another in a chain."""
     terms = [f"({e} - {e})" for e in names]
+    while len(terms) > 1:
+        terms = [f"({terms[i]} + {terms[i + 1]})" if i + 1 < len(terms) else terms[i]
+                 for i in range(0, len(terms), 2)]
+    text = terms[0] + " == 0.0_dp"
     lines, line = [], "          "
-    for t in terms:
-        if len(line) + len(t) > 86:
+    for piece in re.split(r"(?<= \+) ", text):
+        if len(line) + len(piece) > 86 and line.strip():
             lines.append(line.rstrip())
             line = "          "
-        line += t + " + "
-    lines.append(line[:-3] + " == 0.0_dp")
+        line += piece + " "
+    lines.append(line.rstrip())
     return " &\n".join(lines).lstrip()
 
 
