@@ -44,13 +44,17 @@ From these lines and the Fortran declarations this writes
   ``sarkp_nan`` allows it, and the position is skipped); any other value outside its
   rule stops the call before any work and is reported as ``sarkp_bad`` = the input's
   number (its element in ``sarkp_at``, or position in ``sarkp_bad(2)`` of a sweep).
+  A sweep first tests each input's elements against its rule in one pass
+  (``sarkp_valid``); when all keep it (the common case) its loop screens nothing, else
+  it screens every position as described, which finds and words the first bad input.
   Integer inputs are passed as reals and converted only after the screen, so that a NaN,
   an inf or a huge value can never reach an integer conversion.  Shapes and counts of
   tables are the Python layer's (library.py), which also words every message.
 
   THE OUTPUTS OF A FAILED POSITION ARE SET HERE, ONCE: NaN in every real result (the
   routines leave them as they are).  A result that is not a finite number while the
-  routine reported success gives st_range.
+  routine reported success gives st_range (a sweep tests the sum of the differences
+  x - x of its results: +0 when all are finite, NaN otherwise).
 
   Every driver sets the mode (prmtr's ``set_mode``) inside the same call and releases
   the GIL (f2py ``threadsafe``), except those of routines with COMMON results.
@@ -411,6 +415,41 @@ def finite_test(items):
     return " .and. &\n          ".join(tests)
 
 
+def sum_test(names):
+    """The test that every real ``names`` is a finite number, in one comparison: x - x is
+    +0 for a finite x and NaN for an infinite or NaN one, and a sum of terms one of which
+    is NaN is NaN (no reassociation: the build has no -ffast-math).  Summed pairwise, so
+    that the additions do not wait on one another in a chain."""
+    terms = [f"({e} - {e})" for e in names]
+    while len(terms) > 1:
+        terms = [f"({terms[i]} + {terms[i + 1]})" if i + 1 < len(terms) else terms[i]
+                 for i in range(0, len(terms), 2)]
+    text = terms[0] + " == 0.0_dp"
+    lines, line = [], "          "
+    for piece in re.split(r"(?<= \+) ", text):
+        if len(line) + len(piece) > 86 and line.strip():
+            lines.append(line.rstrip())
+            line = "          "
+        line += piece + " "
+    lines.append(line.rstrip())
+    return " &\n".join(lines).lstrip()
+
+
+def _fast_screen(p, ins):
+    """The sweep's fast path: each input's elements tested against its rule in one pass
+    (sarkp_valid); all valid -- the common case -- and the loop screens nothing
+    (sarkp_screen = 0).  Else, or with a table input, the loop screens every position as
+    before, which finds the first bad input and words it (a NaN fails the pass too)."""
+    if any(p.args[a].dims for a in ins):
+        return ["    sarkp_screen = 1"]
+    w = ["    sarkp_screen = 0"]
+    for k, a in enumerate(ins, 1):
+        rule = p.rules[a]
+        w.append(f"    if (.not. sarkp_valid({a}, sarkp_inc({k}), sarkp_n, {rule.kind}, "
+                 f"{_real(rule.lo)}, {_real(rule.hi)})) sarkp_screen = 1")
+    return w
+
+
 def wrap_list(names, indent="      "):
     """Names separated by commas, in lines of at most about 90 characters."""
     lines, cur = [], ""
@@ -623,19 +662,22 @@ def sweep_driver(mod, p, variables):
     w += [f"    real(dp), intent(inout) :: sarkp_out(sarkp_n, {len(results)})",
           "    integer, intent(inout) :: sarkp_status(sarkp_n)",
           "    integer, intent(out) :: sarkp_bad(3)",
-          "    integer :: sarkp_i, sarkp_state, sarkp_once, sarkp_t, sarkp_j"
+          "    integer :: sarkp_i, sarkp_state, sarkp_once, sarkp_t, sarkp_j, sarkp_screen"
           + (", sarkp_l" if any(p.args[a].dims for a in ins) else "")]
     if ints_out:
         w.append(f"    integer :: {', '.join('sarkp_' + n for n in ints_out)}")
     w += ["    sarkp_bad = 0",
           "    call set_mode(sarkp_mode)",
-          "    sarkp_once = 0",
-          "    do sarkp_i = 1, sarkp_n",
+          "    sarkp_once = 0"]
+    w += _fast_screen(p, ins)
+    w += ["    do sarkp_i = 1, sarkp_n",
           "      ! the inputs of position i: a NaN is a missing input (status 5) when allowed;",
           "      ! anything else out of its rule stops the loop and is reported.  An input",
           "      ! passed once (inc 0) is screened at position 1 only, in its turn;",
           "      ! sarkp_once keeps what it found (0, or 1 for a missing input).",
-          "      sarkp_state = sarkp_once"]
+          "      sarkp_state = sarkp_once",
+          "      if (sarkp_screen /= 0) then"]
+    first = len(w)
     for k, a in enumerate(ins, 1):
         arg, rule = p.args[a], p.rules[a]
         w.append(f"      if (sarkp_inc({k}) /= 0 .or. sarkp_i == 1) then")
@@ -655,7 +697,9 @@ def sweep_driver(mod, p, variables):
         w.append("        sarkp_state = max(sarkp_state, sarkp_t)")
         w.append(f"        if (sarkp_inc({k}) == 0) sarkp_once = max(sarkp_once, sarkp_t)")
         w.append("      end if")
-    w += ["      if (sarkp_state == 2) return",
+    w[first:] = ["  " + line for line in w[first:]]
+    w += ["      end if",
+          "      if (sarkp_state == 2) return",
           "      if (sarkp_state == 1) sarkp_status(sarkp_i) = st_missing",
           "      if (sarkp_status(sarkp_i) /= st_ok) then       ! missing, or ruled out",
           "        sarkp_out(sarkp_i, :) = sarkp_nan_value()",
@@ -683,11 +727,11 @@ def sweep_driver(mod, p, variables):
         w.append(f"      {ref(c.name)} = {mod}_{var}")
     for n in ints_out:                              # an integer result is stored as a real
         w.append(f"      sarkp_out(sarkp_i, {column[n]}) = real(sarkp_{n}, dp)")
-    real_out = [(f"sarkp_out(sarkp_i, {column[r.name]})", False) for r in results
+    real_out = [f"sarkp_out(sarkp_i, {column[r.name]})" for r in results
                 if r.type == "real(dp)"]
     if real_out:
         w.append("      if (succeeded(sarkp_status(sarkp_i))) then")
-        w.append(f"        if (.not. ({finite_test(real_out)})) sarkp_status(sarkp_i) = st_range")
+        w.append(f"        if (.not. ({sum_test(real_out)})) sarkp_status(sarkp_i) = st_range")
         w.append("      end if")
     if p.kept:
         w.append("      if (.not. succeeded(sarkp_status(sarkp_i))) then")
@@ -745,6 +789,45 @@ SCREEN = f"""
       bad(2) = j
     end if
   end function screen
+
+  ! Whether the elements 1, 1 + inc, ..., 1 + (n - 1) inc of x (inc 0: x(1) alone) all
+  ! keep the rule of kind (screen's kinds; a NaN keeps none): the sweeps' fast path.
+  logical function sarkp_valid(x, inc, n, kind, lo, hi)
+    real(dp), intent(in) :: x(*), lo, hi
+    integer, intent(in) :: inc, n, kind
+    integer :: i, m
+    logical :: ok
+    m = 1 + (n - 1)*inc
+    if (n < 1) m = 0
+    ok = .true.
+    select case (kind)
+    case ({K_REAL})
+      do i = 1, m, max(inc, 1)
+        ok = ok .and. abs(x(i)) <= huge(1.0_dp)
+      end do
+    case ({K_POSITIVE})
+      do i = 1, m, max(inc, 1)
+        ok = ok .and. x(i) > 0.0_dp .and. x(i) <= huge(1.0_dp)
+      end do
+    case ({K_NONNEGATIVE})
+      do i = 1, m, max(inc, 1)
+        ok = ok .and. x(i) >= 0.0_dp .and. x(i) <= huge(1.0_dp)
+      end do
+    case ({K_NONZERO})
+      do i = 1, m, max(inc, 1)
+        ok = ok .and. x(i) /= 0.0_dp .and. abs(x(i)) <= huge(1.0_dp)
+      end do
+    case ({K_BRANCH})
+      do i = 1, m, max(inc, 1)
+        ok = ok .and. (x(i) == 1.0_dp .or. x(i) == -1.0_dp)
+      end do
+    case default
+      do i = 1, m, max(inc, 1)
+        ok = ok .and. x(i) >= lo .and. x(i) <= hi .and. x(i) == aint(x(i))
+      end do
+    end select
+    sarkp_valid = ok
+  end function sarkp_valid
 """
 
 

@@ -43,6 +43,7 @@ module groups
             rpp_kernel
   public :: prp_position, prp_matrix, prp_velocity, prp_acceleration, rpp_position, &
             rpp_velocity, rpp_acceleration
+  public :: rrr_position, rrr_system, rrr_velocity, rrr_acceleration
 
 contains
 
@@ -221,8 +222,11 @@ contains
     call carried(xp, vp, ap, wl, el, xd, vd, ad)
   end subroutine rigid_kernel
 
-  ! Kind 1, RRR (DPRM1/DKNMA1): the joint B at l2 from A (link 2 = A-B) and l3 from C
-  ! (link 3 = C-B).
+  ! Kind 1, RRR (DPRM1/DSKOR1/DUSKR1/DKNMA1): the joint B at l2 from A (link 2 = A-B) and
+  ! l3 from C (link 3 = C-B), in three stages -- rrr_position, rrr_velocity,
+  ! rrr_acceleration, each taking the estimate of the stage before -- which rrr_kernel
+  ! runs in order (sarkp.Mechanism, DPRM1, DKNMA1); DSKOR1 and DUSKR1, given the links'
+  ! directions, call the velocity and acceleration stages alone.
   ! In:  level; xa, va, aa = A; xc, vc, ac = C; l2, l3 > 0 and rl2 = 1/l2, rl3 = 1/l3
   !      (the caller's, computed once); branch = +1: B on the left of the line A->C,
   !      -1 on its right.
@@ -240,13 +244,37 @@ contains
     real(dp), intent(in) :: rl2, rl3
     real(dp), intent(out) :: xb(2), vb(2), ab(2), u2(2), u3(2), w2, w3, e2, e3, est
     integer, intent(out) :: st
-    integer :: ex
-    real(dp) :: dx, dy, d, pr, h, pq, dang, r2(2), r3(2), y1, y2, rel, sb, sx, ev
+    real(dp) :: r2(2), r3(2), dang, ev, rel
     type(cram) :: f
+    call rrr_position(xa, xc, l2, l3, branch, rl2, rl3, xb, r2, r3, u2, u3, dang, st)
+    est = dang
+    if (failed(st) .or. level < 2) return
+    call rrr_system(r2, r3, l2, l3, f)
+    call rrr_velocity(f, r2, va, vc, dang, 4.0_dp*uround, vb, w2, w3, ev, st, rel)
+    if (failed(st)) return
+    est = max(est, rel)
+    if (level < 3) return
+    call rrr_acceleration(f, r2, r3, l2, l3, aa, ac, w2, w3, dang, ev, 4.0_dp*uround, &
+                          ab, e2, e3, st, rel)
+    if (failed(st)) return
+    est = max(est, rel)
+  end subroutine rrr_kernel
+
+  ! Kind 1's positions: B from the triangle A, C (base d = |AC|) and l2, l3.
+  ! Out: xb; r2 = B - A, r3 = B - C (the velocity stage's inputs); u2, u3 as rrr_kernel;
+  !      dang = the links' directions' error (radians: the estimate of the position, 0 on
+  !      a failure); st as rrr_kernel.
+  pure subroutine rrr_position(xa, xc, l2, l3, branch, rl2, rl3, xb, r2, r3, u2, u3, &
+                               dang, st)
+    real(dp), intent(in) :: xa(2), xc(2), l2, l3, branch, rl2, rl3
+    real(dp), intent(out) :: xb(2), r2(2), r3(2), u2(2), u3(2), dang
+    integer, intent(out) :: st
+    integer :: ex
+    real(dp) :: dx, dy, d, pr, h, pq, sx, q2, q3
     dx = xc(1) - xa(1)
     dy = xc(2) - xa(2)
     d = norm2d(dx, dy)
-    est = 0.0_dp
+    dang = 0.0_dp
     if (d == 0.0_dp) then
       st = st_singular
       if (l2 /= l3) st = st_assembly
@@ -262,36 +290,74 @@ contains
     u3 = [r3(1)*rl3, r3(2)*rl3]
     ! d carries the rounding of the coordinates it is the difference of (far from the
     ! origin more than that of d itself, which dang allows for): the angles move by
-    ! 2u (sx d + l2**2 + l3**2)/(d h) instead of 2u (d**2 + l2**2 + l3**2)/(d h)
+    ! 2u (sx d + l2**2 + l3**2)/(d h) instead of 2u (d**2 + l2**2 + l3**2)/(d h), i.e.
+    ! 1 + (sx - d) d/(d**2 + l2**2 + l3**2) times as far: one division, where no square
+    ! overflows or underflows (a huge l2 = l3 over a small d: the sum is inf, the factor
+    ! 1, its limit); beyond, the same in ratios of d
     sx = abs(xa(1)) + abs(xa(2)) + abs(xc(1)) + abs(xc(2))
-    if (sx > d) dang = dang*((sx/d)*(d/l2)*(d/l3) + l2/l3 + l3/l2)/ &
-                           ((d/l2)*(d/l3) + l2/l3 + l3/l2)
-    est = dang
-    if (level < 2) return
-    ! v_A + w2 k x r2 = v_C + w3 k x r3 (columns: unit vectors times l2, l3)
+    if (sx > d) then
+      if (sx < 2.0_dp**500 .and. d > 2.0_dp**(-500)) then
+        dang = dang*(1.0_dp + (sx - d)*d/(d*d + l2*l2 + l3*l3))
+      else
+        q2 = l2/d
+        q3 = l3/d
+        dang = dang*(1.0_dp + (sx/d - 1.0_dp)/(1.0_dp + q2*q2 + q3*q3))
+      end if
+    end if
+  end subroutine rrr_position
+
+  ! Kind 1's velocity and acceleration systems share one matrix: the columns k x r2 and
+  ! -k x r3, unit vectors times l2, l3 (cramer's scales: a unit-free estimate).
+  pure subroutine rrr_system(r2, r3, l2, l3, f)
+    real(dp), intent(in) :: r2(2), r3(2), l2, l3
+    type(cram), intent(out) :: f
     call cramer_set(-r2(2), r3(2), r2(1), -r3(1), f, l2, l3)
+  end subroutine rrr_system
+
+  ! Kind 1's velocities: v_A + w2 k x r2 = v_C + w3 k x r3.
+  ! In:  f = rrr_system's matrix; r2 = B - A; va, vc; dang = the position's estimate
+  !      (the directions' error, radians); rv = the relative error of the components of
+  !      va, vc (of the sum of their moduli; 4u when they are exact to rounding).
+  ! Out: vb, w2, w3; ev = their absolute error (in w l units, the acceleration stage's
+  !      input); st (st_singular: a dead centre; st_range: an overflow), rel = the
+  !      estimated relative error.  On a failure only st, w2, w3 and rel are set.
+  pure subroutine rrr_velocity(f, r2, va, vc, dang, rv, vb, w2, w3, ev, st, rel)
+    type(cram), intent(in) :: f
+    real(dp), intent(in) :: r2(2), va(2), vc(2), dang, rv
+    real(dp), intent(out) :: vb(2), w2, w3, ev, rel
+    integer, intent(out) :: st
+    real(dp) :: sb
     sb = abs(va(1)) + abs(va(2)) + abs(vc(1)) + abs(vc(2))
-    call cramer(f, vc(1) - va(1), vc(2) - va(2), dang, 4.0_dp*uround*sb, sb, &
-                y1, y2, st, rel)
+    call cramer(f, vc(1) - va(1), vc(2) - va(2), dang, rv*sb, sb, w2, w3, st, rel)
     if (failed(st)) return
-    est = max(est, rel)
-    w2 = y1
-    w3 = y2
-    vb = va + y1*[-r2(2), r2(1)]
-    if (level < 3) return
-    ! the velocities' error (absolute, in w' l units) enters through w'**2 l
-    ev = abs_err(f, y1, y2, sb, rel)
-    call cramer(f, ac(1) - aa(1) - y2**2*r3(1) + y1**2*r2(1), &
-                ac(2) - aa(2) - y2**2*r3(2) + y1**2*r2(2), dang, &
-                4.0_dp*uround*(sb + y1**2*l2 + y2**2*l3) &
-                + ev*(2.0_dp*abs(y1) + ev/l2) + ev*(2.0_dp*abs(y2) + ev/l3), &
-                sb, y1, y2, st, rel)
+    vb = va + w2*[-r2(2), r2(1)]
+    ev = abs_err(f, w2, w3, sb, rel)
+  end subroutine rrr_velocity
+
+  ! Kind 1's accelerations: a_A + e2 k x r2 - w2**2 r2 = a_C + e3 k x r3 - w3**2 r3.
+  ! In:  f, r2, r3 as rrr_velocity; l2, l3; aa, ac; w2, w3; dang as rrr_velocity; ev =
+  !      the velocities' absolute error (rrr_velocity's; 0 for given w2, w3); ra = the
+  !      relative error of the components of aa, ac (as rv).
+  ! Out: ab, e2, e3; st, rel as rrr_velocity.  The right-hand side's error: ra times the
+  !      accelerations' size, 4u of the normal terms w**2 l, the position's (dang) of
+  !      them, and the velocities' through w**2 l (as DKNMA1's, L2640).
+  pure subroutine rrr_acceleration(f, r2, r3, l2, l3, aa, ac, w2, w3, dang, ev, ra, &
+                                   ab, e2, e3, st, rel)
+    type(cram), intent(in) :: f
+    real(dp), intent(in) :: r2(2), r3(2), l2, l3, aa(2), ac(2), w2, w3, dang, ev, ra
+    real(dp), intent(out) :: ab(2), e2, e3, rel
+    integer, intent(out) :: st
+    real(dp) :: sa, sn
+    sa = abs(aa(1)) + abs(aa(2)) + abs(ac(1)) + abs(ac(2))
+    sn = w2**2*l2 + w3**2*l3
+    call cramer(f, ac(1) - aa(1) - w3**2*r3(1) + w2**2*r2(1), &
+                ac(2) - aa(2) - w3**2*r3(2) + w2**2*r2(2), dang, &
+                ra*sa + (4.0_dp*uround + dang)*sn &
+                + ev*(2.0_dp*abs(w2) + ev/l2) + ev*(2.0_dp*abs(w3) + ev/l3), &
+                sa + sn, e2, e3, st, rel)
     if (failed(st)) return
-    est = max(est, rel)
-    e2 = y1
-    e3 = y2
-    ab = aa + y1*[-r2(2), r2(1)] - w2**2*r2
-  end subroutine rrr_kernel
+    ab = aa + e2*[-r2(2), r2(1)] - w2**2*r2
+  end subroutine rrr_acceleration
 
   ! Kind 2, RRP (DPRM2/DKNMA2): the slider joint B on a guide, at off from its axis
   ! (along the guide's left normal), the rod A-B (link 2) of length l2; the slider block

@@ -87,6 +87,7 @@ module kinematics
   use groups, only: rrr_kernel
   use groups, only: cram, prp_kernel, prp_position, prp_matrix, prp_velocity, &
                     prp_acceleration, rpp_kernel, rpp_velocity, rpp_acceleration
+  use groups, only: rrr_system, rrr_velocity, rrr_acceleration
   use numerics, only: uround, system2, solve2e, factor2, solve2f, solve_kind5, policy, &
                       settle, failed, wrap_pi, angle_sensitivity, tri_angles, tri_apex, &
                       apex_vectors, unscale, acc_dir, turn, components, quarter
@@ -427,6 +428,11 @@ contains
   ! IV.5 DSKOR1, L1692-1719 (Table 11, Fig. 19).  Kind 1 velocities:
   ! v_A + v_BA = v_C + v_BC, v_BA _|_ AB, v_BC _|_ CB.  W2, W3 signed (ccw +).
   ! ERRATA: none in the code.  Dead centre (FI2 = FI3 mod pi): st_singular.
+  ! Corrected mode: an adapter over the kind-1 kernel's velocity stage (groups:
+  ! rrr_velocity, the stage sarkp.Mechanism and DKNMA1 run): the links' vectors
+  ! RZ e(FI) and the velocities' components in, W2, W3 and v_B out, turned into the
+  ! book's (modulus, direction) pairs as DKNMA1's (dknma1_rrr).  As printed: the book's
+  ! sequence (PID2 = 3.14159/2 in the directions).
   subroutine dskor1(rz2, fi2, rz3, fi3, va, ala, vc, alc, aaa, vba, alba, vbc, albc, vb, alb, &
                     w2, w3, ier)
     !: RZ2, FI2 : length; real -- Length AB (m, > 0) and direction A -> B (rad), from
@@ -442,6 +448,11 @@ contains
     real(dp) :: tx, ty, prx, pry
     vba = 0.0_dp; alba = 0.0_dp; vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp
     w2 = 0.0_dp; w3 = 0.0_dp
+    if (printed_mode == 0) then
+      call dskor1_rrr(rz2, fi2, rz3, fi3, va, ala, vc, alc, vba, alba, vbc, albc, vb, alb, &
+                      w2, w3, ier)
+      return
+    end if
     ! each direction's cosine and sine once (turn, components; issue 9)
     c2 = cos(fi2)
     s2 = sin(fi2)
@@ -470,6 +481,48 @@ contains
     w3 = domega(rz3, vbc, albc - fi3)
     ier = settle(ier, rel, [vba, vbc, vb, w2, w3])
   end subroutine dskor1
+
+  ! DSKOR1's corrected mode over rrr_velocity.  The directions FI2, FI3 are data known
+  ! to an ulp (their error 4u (2 + |FI|), as the book's own path estimates it), and so are
+  ! ALA, ALC (the components' error 4u (1 + |AL|) of their size).  W2, W3 are the
+  ! stage's; VBA = |W2| RZ2 along FI2 + pi/2 turned by the sign of W2 (DUGL3, L1712).
+  subroutine dskor1_rrr(rz2, fi2, rz3, fi3, va, ala, vc, alc, vba, alba, vbc, albc, vb, &
+                        alb, w2, w3, ier)
+    real(dp), intent(in) :: rz2, fi2, rz3, fi3, va, ala, vc, alc
+    real(dp), intent(out) :: vba, alba, vbc, albc, vb, alb, w2, w3
+    integer, intent(out) :: ier
+    real(dp), parameter :: half_pi = pi_exact/2.0_dp     ! corrected mode's PID2
+    real(dp) :: r2(2), r3(2), v_a(2), v_c(2), v_b(2), om2, om3, ev, rel, dang
+    type(cram) :: f
+    vba = 0.0_dp; alba = 0.0_dp; vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp
+    w2 = 0.0_dp; w3 = 0.0_dp
+    r2 = rz2*[cos(fi2), sin(fi2)]
+    r3 = rz3*[cos(fi3), sin(fi3)]
+    call components(va, ala, v_a(1), v_a(2))
+    call components(vc, alc, v_c(1), v_c(2))
+    dang = 4.0_dp*uround*(2.0_dp + max(abs(fi2), abs(fi3)))
+    call rrr_system(r2, r3, rz2, rz3, f)
+    call rrr_velocity(f, r2, v_a, v_c, dang, 4.0_dp*uround*(1.0_dp + max(abs(ala), abs(alc))), &
+                      v_b, om2, om3, ev, ier, rel)
+    ! links that are not parallel make no dead centre: a singular system then comes of
+    ! their lengths (one of 5e-324 beside one of 1: W2 = 2e323 is no double), a range
+    ! problem
+    if (ier == st_singular .and. abs(sin(fi2 - fi3)) > 4.0_dp*dang) ier = st_range
+    if (failed(ier)) return
+    w2 = om2 + 0.0_dp                             ! (-0 is +0, as DOMEGA gives it)
+    w3 = om3 + 0.0_dp
+    vba = abs(om2)*rz2
+    vbc = abs(om3)*rz3
+    alba = fi2 + book_sign(half_pi, om2)          ! DUGL3(FI2, PID2, W2)
+    albc = fi3 + book_sign(half_pi, om3)
+    vb = norm2d(v_b(1), v_b(2))
+    alb = dugl5(v_b(1), v_b(2))
+    ier = settle(ier, rel, [vba, vbc, vb, w2, w3])
+    if (failed(ier)) then
+      vba = 0.0_dp; alba = 0.0_dp; vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp
+      w2 = 0.0_dp; w3 = 0.0_dp
+    end if
+  end subroutine dskor1_rrr
 
   ! IV.6 DSKOR2, L1740-1774 (Table 12, Fig. 20).  Kind 2 velocities:
   ! v_A + v_BA = v_BM + v_BBM; VBM, ALBM = velocity of the guide point under B (0, 0 for a
@@ -665,6 +718,9 @@ contains
   ! a_A + a^n_BA + a^t_BA = a_C + a^n_BC + a^t_BC.
   ! ERRATA: E-DUSKR1-1 (author: ABCT = ABS(Y(1)) where Y(2) is meant; as-printed mode keeps
   ! it, Fig. 91 was computed with it), E-DUSKR1-2 (OCR 8.0001), E-DUSKR1-3 (OCR DOMEQA).
+  ! Corrected mode: an adapter over the kind-1 kernel's acceleration stage (groups:
+  ! rrr_acceleration), as DSKOR1's over its velocity stage.  As printed: the book's
+  ! sequence.
   subroutine duskr1(aa, ba, ac, bc, rz2, fi2, rz3, fi3, w2, w3, aaa, abat, bbat, abct, bbct, &
                     ab, bb, e2, e3, ier)
     !: AA, BA : real -- Acceleration of A: modulus (m/s**2), direction (rad).
@@ -679,6 +735,11 @@ contains
     real(dp) :: m2x, m2y, m3x, m3y, aax, aay, acx, acy, tx, ty, prx, pry
     abat = 0.0_dp; bbat = 0.0_dp; abct = 0.0_dp; bbct = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp
     e2 = 0.0_dp; e3 = 0.0_dp
+    if (printed_mode == 0) then
+      call duskr1_rrr(aa, ba, ac, bc, rz2, fi2, rz3, fi3, w2, w3, abat, bbat, abct, bbct, &
+                      ab, bb, e2, e3, ier)
+      return
+    end if
     an2 = w2**2*rz2
     an3 = w3**2*rz3
     sb = abs(aa) + abs(ac) + an2 + an3
@@ -724,6 +785,45 @@ contains
     e3 = domega(rz3, abct, bbct - fi3)
     ier = settle(ier, rel, [abat, abct, ab, e2, e3])
   end subroutine duskr1
+
+  ! DUSKR1's corrected mode over rrr_acceleration: FI2, FI3, BA, BC as DSKOR1's
+  ! adapter takes its directions; W2, W3 are data (exact: no velocity error carried).
+  ! ABAT = |E2| RZ2 along FI2 + pi/2 turned by the sign of E2 (DUGL3, L2041), ABCT =
+  ! |E3| RZ3 (E-DUSKR1-1 corrected).
+  subroutine duskr1_rrr(aa, ba, ac, bc, rz2, fi2, rz3, fi3, w2, w3, abat, bbat, abct, bbct, &
+                        ab, bb, e2, e3, ier)
+    real(dp), intent(in) :: aa, ba, ac, bc, rz2, fi2, rz3, fi3, w2, w3
+    real(dp), intent(out) :: abat, bbat, abct, bbct, ab, bb, e2, e3
+    integer, intent(out) :: ier
+    real(dp), parameter :: half_pi = pi_exact/2.0_dp     ! corrected mode's PID2
+    real(dp) :: r2(2), r3(2), a_a(2), a_c(2), a_b(2), ep2, ep3, rel
+    type(cram) :: f
+    abat = 0.0_dp; bbat = 0.0_dp; abct = 0.0_dp; bbct = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp
+    e2 = 0.0_dp; e3 = 0.0_dp
+    r2 = rz2*[cos(fi2), sin(fi2)]
+    r3 = rz3*[cos(fi3), sin(fi3)]
+    call components(aa, ba, a_a(1), a_a(2))
+    call components(ac, bc, a_c(1), a_c(2))
+    call rrr_system(r2, r3, rz2, rz3, f)
+    call rrr_acceleration(f, r2, r3, rz2, rz3, a_a, a_c, w2, w3, &
+                          4.0_dp*uround*(2.0_dp + max(abs(fi2), abs(fi3))), 0.0_dp, &
+                          4.0_dp*uround*(1.0_dp + max(abs(ba), abs(bc))), a_b, ep2, ep3, &
+                          ier, rel)
+    if (failed(ier)) return
+    e2 = ep2 + 0.0_dp
+    e3 = ep3 + 0.0_dp
+    abat = abs(ep2)*rz2
+    abct = abs(ep3)*rz3
+    bbat = fi2 + book_sign(half_pi, ep2)          ! DUGL3(FI2, PID2, E2)
+    bbct = fi3 + book_sign(half_pi, ep3)
+    ab = norm2d(a_b(1), a_b(2))
+    bb = dugl5(a_b(1), a_b(2))
+    ier = settle(ier, rel, [abat, abct, ab, e2, e3])
+    if (failed(ier)) then
+      abat = 0.0_dp; bbat = 0.0_dp; abct = 0.0_dp; bbct = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp
+      e2 = 0.0_dp; e3 = 0.0_dp
+    end if
+  end subroutine duskr1_rrr
 
   ! IV.11 DUSKR2, L2077-2119 (Table 17, Fig. 25).  Kind 2 accelerations:
   ! a_A + a^n_BA + a^t_BA = a_BM + a^k + a^r.  ABM, BVM: acceleration of the guide point

@@ -865,11 +865,14 @@ def test_vertical_guides():
 
 
 def test_dskor1_too_fast_is_a_range_error_not_a_dead_centre():
-    """Far from a dead centre (FI2 = 1, FI3 = 2), VA = 1e300 makes W2 = 1.41e300: DGESC2's
-    scaling test refuses the solve, which is a range problem, not a singular position
-    (issue 27).  Just below, the answer is linear in VA: W2 scales exactly with it."""
+    """Far from a dead centre (FI2 = 1, FI3 = 2) the answer is linear in VA: W2 scales
+    exactly with it as long as it is a double (VA = 1e300: W2 = 1.41e300, which GELG's
+    DGESC2 refused before the kind-1 kernel's Cramer solve, issue 27); a W2 beyond the
+    doubles (links 100 times shorter, VA = 1e306: 1.4e310) is a range problem, not a
+    singular position."""
     slow = sarkp.DSKOR1(0.35, 1.0, 0.3, 2.0, 1.0, 0.0, 0.0, 0.0)
-    fast = sarkp.DSKOR1(0.35, 1.0, 0.3, 2.0, 1e250, 0.0, 0.0, 0.0)
-    assert fast.W2 == pytest.approx(slow.W2 * 1e250, rel=1e-14)
+    for va in (1e250, 1e300):
+        fast = sarkp.DSKOR1(0.35, 1.0, 0.3, 2.0, va, 0.0, 0.0, 0.0)
+        assert fast.W2 == pytest.approx(slow.W2 * va, rel=1e-14)
     with pytest.raises(sarkp.RangeError):
-        sarkp.DSKOR1(0.35, 1.0, 0.3, 2.0, 1e300, 0.0, 0.0, 0.0)
+        sarkp.DSKOR1(0.0035, 1.0, 0.003, 2.0, 1e306, 0.0, 0.0, 0.0)
