@@ -83,6 +83,7 @@ module kinematics
                    st_singular, st_range, st_digits, norm2d
   use operators, only: dugl1, dugl2, dugl3, dugl4, dugl5, dugol, domega, dvkt, dsmvkt
   use groups, only: rrr_kernel
+  use groups, only: cram, rrp_position, rrp_system, rrp_velocity, rrp_acceleration
   use numerics, only: uround, system2, solve2e, factor2, solve2f, solve_kind5, policy, &
                       settle, failed, wrap_pi, angle_sensitivity, tri_angles, tri_apex, &
                       apex_vectors, unscale, acc_dir, turn, components, quarter
@@ -204,43 +205,48 @@ contains
     real(dp), intent(out) :: xb, yb, fi2
     integer, intent(out) :: ier
     real(dp) :: cm, sm, dx, dy, so, r, b, x, y, off, c, dc, tow
-    xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp
-    ier = st_ok
-    if (.not. (rz2 > 0.0_dp .and. rz2 <= huge(rz2))) then
-      ier = st_assembly
-      return
-    end if
-    cm = cos(fim)
-    sm = sin(fim)
-    dx = xa - xk
-    dy = ya - yk
-    so = -dx*sm + dy*cm                           ! signed offset of A from the guide axis
-    off = rz3*sin(t)
-    if (so == 0.0_dp .and. off /= 0.0_dp) then
-      ier = st_singular                           ! A on the guide: side of the offset undefined
-      return
-    end if
-    ! A -> O' (foot of the perpendicular) is -sign(so) along the left normal (-sm, cm)
-    tow = -sign(1.0_dp, so)
-    r = abs(so) - off
-    c = r/rz2
-    if (abs(c) > 1.0_dp) then
-      if (abs(c) - 1.0_dp > 8.0_dp*epsilon(1.0_dp)) then
-        ier = st_assembly                         ! B cannot reach the guide
+    if (printed_mode == 0) then
+      call dprm2_rrp(xa, ya, xk, yk, fim, rz2, rz3, t, xb, yb, fi2, ier)   ! the kind-2 stages
+    else
+      xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp
+      ier = st_ok
+      if (.not. (rz2 > 0.0_dp .and. rz2 <= huge(rz2))) then
+        ier = st_assembly
         return
       end if
-      c = sign(1.0_dp, c)
+      cm = cos(fim)
+      sm = sin(fim)
+      dx = xa - xk
+      dy = ya - yk
+      so = -dx*sm + dy*cm                           ! signed offset of A from the guide axis
+      off = rz3*sin(t)
+      if (so == 0.0_dp .and. off /= 0.0_dp) then
+        ier = st_singular                           ! A on the guide: side of the offset undefined
+        return
+      end if
+      ! A -> O' (foot of the perpendicular) is -sign(so) along the left normal (-sm, cm)
+      tow = -sign(1.0_dp, so)
+      r = abs(so) - off
+      c = r/rz2
+      if (abs(c) > 1.0_dp) then
+        if (abs(c) - 1.0_dp > 8.0_dp*epsilon(1.0_dp)) then
+          ier = st_assembly                         ! B cannot reach the guide
+          return
+        end if
+        c = sign(1.0_dp, c)
+      end if
+      b = rz2*sqrt((1.0_dp - c)*(1.0_dp + c))
+      x = tow*rz2*c*(-sm) + b*cm
+      y = tow*rz2*c*cm + b*sm
+      fi2 = dugl5(x, y)
+      xb = xa + rz2*cos(fi2)
+      yb = ya + rz2*sin(fi2)
+      ! sensitivity: c moves with the offsets and, through FIM, with the lever |A - K|
+      dc = 4.0_dp*uround*(abs(so) + abs(off) + abs(rz3) + rz2 &
+                          + (1.0_dp + abs(fim) + abs(t))*(abs(dx) + abs(dy)))/rz2
+      ier = settle(ier, angle_sensitivity(c, dc) + 8.0_dp*uround*(1.0_dp + abs(fim)), [xb, yb])
+
     end if
-    b = rz2*sqrt((1.0_dp - c)*(1.0_dp + c))
-    x = tow*rz2*c*(-sm) + b*cm
-    y = tow*rz2*c*cm + b*sm
-    fi2 = dugl5(x, y)
-    xb = xa + rz2*cos(fi2)
-    yb = ya + rz2*sin(fi2)
-    ! sensitivity: c moves with the offsets and, through FIM, with the lever |A - K|
-    dc = 4.0_dp*uround*(abs(so) + abs(off) + abs(rz3) + rz2 &
-                        + (1.0_dp + abs(fim) + abs(t))*(abs(dx) + abs(dy)))/rz2
-    ier = settle(ier, angle_sensitivity(c, dc) + 8.0_dp*uround*(1.0_dp + abs(fim)), [xb, yb])
   end subroutine dprm2
 
   ! IV.3 DPRM3, L1577-1598 (Table 9, Fig. 16).  Kind 3 (RPR, slotted lever) positions.
@@ -445,21 +451,27 @@ contains
     real(dp), intent(out) :: vba, alba, vbbm, albbm, vb, alb, w2
     integer, intent(out) :: ier
     real(dp) :: y1, y2, sb, rel
-    vba = 0.0_dp; alba = 0.0_dp; vbbm = 0.0_dp; albbm = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp
-    w2 = 0.0_dp
-    sb = abs(va) + abs(vbm)
-    call solve2e(cos(fi2 + pid2), -cos(fim), sin(fi2 + pid2), -sin(fim), &
-                 vbm*cos(albm) - va*cos(ala), vbm*sin(albm) - va*sin(ala), &
-                 4.0_dp*uround*(2.0_dp + max(abs(fi2), abs(fim))), &
-                 4.0_dp*uround*(1.0_dp + max(abs(ala), abs(albm)))*sb, sb, y1, y2, ier, rel)
-    if (failed(ier)) return
-    alba = dugl3(fi2, pid2, y1)
-    vba = abs(y1)
-    albbm = dugl4(fim, pi, y2)
-    vbbm = abs(y2)
-    w2 = domega(rz2, vba, alba - fi2)
-    call dsmvkt(va, ala, vba, alba, vb, alb)
-    ier = settle(ier, rel, [vba, vbbm, vb, w2])
+    if (printed_mode == 0) then
+      call dskor2_rrp(va, ala, vbm, albm, rz2, fi2, fim, vba, alba, vbbm, albbm, vb, alb, &
+                      w2, ier)                           ! the kind-2 velocity stage
+    else
+      vba = 0.0_dp; alba = 0.0_dp; vbbm = 0.0_dp; albbm = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp
+      w2 = 0.0_dp
+      sb = abs(va) + abs(vbm)
+      call solve2e(cos(fi2 + pid2), -cos(fim), sin(fi2 + pid2), -sin(fim), &
+                   vbm*cos(albm) - va*cos(ala), vbm*sin(albm) - va*sin(ala), &
+                   4.0_dp*uround*(2.0_dp + max(abs(fi2), abs(fim))), &
+                   4.0_dp*uround*(1.0_dp + max(abs(ala), abs(albm)))*sb, sb, y1, y2, ier, rel)
+      if (failed(ier)) return
+      alba = dugl3(fi2, pid2, y1)
+      vba = abs(y1)
+      albbm = dugl4(fim, pi, y2)
+      vbbm = abs(y2)
+      w2 = domega(rz2, vba, alba - fi2)
+      call dsmvkt(va, ala, vba, alba, vb, alb)
+      ier = settle(ier, rel, [vba, vbbm, vb, w2])
+
+    end if
   end subroutine dskor2
 
   ! IV.7 DSKOR3, L1805-1854 (Table 13, Fig. 21).  Kind 3 velocities:
@@ -663,9 +675,15 @@ contains
     real(dp), intent(in) :: aa, ba, abm, bvm, abk, bvk, rz2, fi2, w2, fim, aaa
     real(dp), intent(out) :: abat, vbat, abvm, bvbm, e2, ab, bb
     integer, intent(out) :: ier
-    ! the turning side A-B (a_A, link AB), the sliding side the guide (a_BM, Coriolis)
-    call turn_slide(aa, ba, rz2, fi2, w2, abm, bvm, abk, bvk, fim, .true., &
-                    abat, vbat, abvm, bvbm, e2, ab, bb, ier)
+    if (printed_mode == 0) then
+      call duskr2_rrp(aa, ba, abm, bvm, abk, bvk, rz2, fi2, w2, fim, abat, vbat, abvm, &
+                      bvbm, e2, ab, bb, ier)             ! the kind-2 acceleration stage
+    else
+      ! the turning side A-B (a_A, link AB), the sliding side the guide (a_BM, Coriolis)
+      call turn_slide(aa, ba, rz2, fi2, w2, abm, bvm, abk, bvk, fim, .true., &
+                      abat, vbat, abvm, bvbm, e2, ab, bb, ier)
+
+    end if
   end subroutine duskr2
 
   ! IV.12 DUSKR3, L2150-2184 (Table 18, Fig. 26).  Kind 3 accelerations:
@@ -1109,96 +1127,274 @@ contains
     real(dp) :: dc, da, sb, relv, rela, ev, est, c2, s2, n2x, n2y, vax, vay, vmx, vmy, tx, ty
     real(dp) :: ux, uy, kx, ky, wx, wy, m2x, m2y, amx, amy, aax, aay
     integer :: st2, kbm
-    xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp; vbbm = 0.0_dp
-    albbm = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; aban = 0.0_dp; abk = 0.0_dp
-    bbk = 0.0_dp; abat = 0.0_dp; bbat = 0.0_dp; abbm = 0.0_dp; bbbm = 0.0_dp; ab = 0.0_dp
-    bb = 0.0_dp; e2 = 0.0_dp
-    ier = st_ok
+    if (printed_mode == 0) then
+      call dknma2_rrp(xa, ya, xk, yk, fim, rz2, rz3, eta, va, ala, wm, vbm, albm, aa, ba, &
+                      abm, bbm, p, analog, xb, yb, fi2, vba, alba, vbbm, albbm, vb, alb, &
+                      w2, aban, abk, bbk, abat, bbat, abbm, bbbm, ab, bb, e2, ier)
+                                                         ! the kind-2 stages
+    else
+      xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp; vbbm = 0.0_dp
+      albbm = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; aban = 0.0_dp; abk = 0.0_dp
+      bbk = 0.0_dp; abat = 0.0_dp; bbat = 0.0_dp; abbm = 0.0_dp; bbbm = 0.0_dp; ab = 0.0_dp
+      bb = 0.0_dp; e2 = 0.0_dp
+      ier = st_ok
+      if (.not. (rz2 > 0.0_dp .and. rz2 <= huge(rz2))) then
+        ier = st_assembly
+        return
+      end if
+      cm = cos(fim)
+      sm = sin(fim)
+      dx = xa - xk
+      dy = ya - yk
+      so = -dx*sm + dy*cm                              ! E-DKNMA2-3: signed offset of A
+      yb1 = rz3*sin(eta)
+      c = (so - yb1)/rz2
+      if (abs(c) > 1.0_dp) then
+        if (abs(c) - 1.0_dp > 8.0_dp*epsilon(1.0_dp)) then
+          ier = st_assembly
+          return
+        end if
+        c = sign(1.0_dp, c)
+      end if
+      xb1 = book_sign(1.0_dp, p)*rz2*sqrt((1.0_dp - c)*(1.0_dp + c))   ! = P*RZ2*SIN(ARCOS(c))
+      ! B - A = XB1*e(FIM) + (YB1 - SO)*e(FIM + pi/2): the book's B = O' + rotated (XB1, YB1),
+      ! taken relative to A so that no digit is lost far from the origin
+      bxa = xb1*cm - (yb1 - so)*sm
+      bya = xb1*sm + (yb1 - so)*cm
+      xb = xa + bxa
+      yb = ya + bya
+      fi2 = dugl2(0.0_dp, 0.0_dp, bxa, bya)
+      dc = 4.0_dp*uround*(abs(so) + abs(yb1) + abs(rz3) + rz2 &
+                          + (1.0_dp + abs(fim) + abs(eta))*(abs(dx) + abs(dy)))/rz2
+      da = angle_sensitivity(c, dc) + 4.0_dp*uround*(2.0_dp + abs(fim) + abs(fi2))
+      est = da
+      ! e(FI2) = (B - A)/RZ2; each direction's cosine and sine once (turn; issue 9)
+      c2 = bxa/rz2
+      s2 = bya/rz2
+      call turn(fi2 + pi/2.0_dp, c2, s2, 1, n2x, n2y)
+      call components(va, ala, vax, vay)
+      call components(vbm, albm, vmx, vmy)
+      sb = abs(va) + abs(vbm)
+      call solve2e(n2x, -cm, n2y, -sm, vmx - vax, vmy - vay, da, &
+                   4.0_dp*uround*(1.0_dp + max(abs(ala), abs(albm)))*sb, sb, y1, y2, ier, relv)
+      if (failed(ier)) return
+      est = max(est, relv)
+      ev = relv*max(norm2d(y1, y2), sb/sqrt(2.0_dp))
+      vba = abs(y1)
+      alba = dugl3(fi2, pi/2.0_dp, y1)
+      vbbm = abs(y2)
+      albbm = dugl4(fim, pi, y2)
+      kbm = 0                                          ! ALBBM = FIM + KBM*PI/2
+      if (y2 < 0.0_dp) kbm = -2
+      call turn(alba, c2, s2, quarter(y1), tx, ty)     ! e(ALBA)
+      vbx = vax + vba*tx
+      vby = vay + vba*ty
+      vb = norm2d(vbx, vby)
+      alb = dugl5(vbx, vby)
+      w2 = domega(rz2, vba, alba - fi2)
+      if (analog /= 1.0_dp) then
+        aban = w2**2*rz2
+        abk = 2.0_dp*vbbm*abs(wm)
+        bbk = dugl3(albbm, pi/2.0_dp, wm)
+        sb = abs(aa) + abs(abm) + aban + abk
+        call turn(albbm, cm, sm, kbm, ux, uy)            ! e(ALBBM)
+        call turn(bbk, cm, sm, kbm + quarter(wm), kx, ky) ! e(BBK)
+        call turn(fi2 + pi, c2, s2, 2, m2x, m2y)         ! e(FI2 + PI)
+        call components(abm, bbm, amx, amy)
+        call components(aa, ba, aax, aay)
+        call solve2e(tx, -ux, ty, -uy, &
+                     amx + abk*kx - aax - aban*m2x, &
+                     amy + abk*ky - aay - aban*m2y, da, &
+                     4.0_dp*uround*(6.0_dp + max(abs(ba), abs(bbm), abs(fim), abs(fi2)))*sb &
+                     + ev/rz2*(2.0_dp*abs(y1) + ev) + 2.0_dp*abs(wm)*ev, sb, y1, y2, st2, rela)
+        ier = st2
+        if (failed(ier)) return
+        est = max(est, rela)
+        abat = abs(y1)
+        bbat = dugl4(alba, pi, y1)
+        abbm = abs(y2)
+        bbbm = dugl4(albbm, pi, y2)
+        call turn(bbbm, cm, sm, kbm + quarter(y2) - 1, wx, wy)  ! e(BBBM)
+        abx = amx + abk*kx + abbm*wx
+        aby = amy + abk*ky + abbm*wy
+        ab = norm2d(abx, aby)
+        bb = dugl5(abx, aby)
+        e2 = domega(rz2, abat, sin(bbat - fi2))          ! E-DKNMA2-4: book BBAT - FI2
+      end if
+      ier = settle(ier, est, [xb, yb, vba, vbbm, vb, w2, aban, abk, abat, abbm, ab, e2])
+
+    end if
+  end subroutine dknma2
+
+  ! The kind-2 routines' corrected mode: the book's interface over the RRP stages of
+  ! groups.f90 (rrp_position, rrp_system, rrp_velocity, rrp_acceleration), which
+  ! sarkp.Mechanism's rrp_kernel runs too.  The book gives the guide's motion at the point
+  ! under B (VBM, ALBM; ABM, BBM) where the kernel carries it from K: the adapters call the
+  ! stages, the same sequence as the kernel past its carrying.  Polar inputs become
+  ! components, the stages' results the book's (modulus, direction) pairs: a relative
+  ! velocity or acceleration along the direction it is drawn in (DUGL3, DUGL4), turned
+  ! by its sign; FI2 in the routine's range.  A failure: every output 0.  The status is
+  ! the policy's for the stages' estimate.
+
+  ! DPRM2: B on the side of A (the book's offset RZ3*SIN(T) towards A: along the left
+  ! normal when A is on the left), ahead of the foot along FIM (the kernel's branch +1).
+  subroutine dprm2_rrp(xa, ya, xk, yk, fim, rz2, rz3, t, xb, yb, fi2, ier)
+    real(dp), intent(in) :: xa, ya, xk, yk, fim, rz2, rz3, t
+    real(dp), intent(out) :: xb, yb, fi2
+    integer, intent(out) :: ier
+    real(dp) :: ug(2), so, off, x_b(2), u2(2), sl, est
+    xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp
     if (.not. (rz2 > 0.0_dp .and. rz2 <= huge(rz2))) then
       ier = st_assembly
       return
     end if
-    cm = cos(fim)
-    sm = sin(fim)
-    dx = xa - xk
-    dy = ya - yk
-    so = -dx*sm + dy*cm                              ! E-DKNMA2-3: signed offset of A
-    yb1 = rz3*sin(eta)
-    c = (so - yb1)/rz2
-    if (abs(c) > 1.0_dp) then
-      if (abs(c) - 1.0_dp > 8.0_dp*epsilon(1.0_dp)) then
-        ier = st_assembly
-        return
-      end if
-      c = sign(1.0_dp, c)
+    ug = [cos(fim), sin(fim)]
+    so = -(xa - xk)*ug(2) + (ya - yk)*ug(1)       ! signed offset of A from the guide axis
+    off = rz3*sin(t)
+    if (so == 0.0_dp .and. off /= 0.0_dp) then
+      ier = st_singular                           ! A on the guide: side of the offset undefined
+      return
     end if
-    xb1 = book_sign(1.0_dp, p)*rz2*sqrt((1.0_dp - c)*(1.0_dp + c))   ! = P*RZ2*SIN(ARCOS(c))
-    ! B - A = XB1*e(FIM) + (YB1 - SO)*e(FIM + pi/2): the book's B = O' + rotated (XB1, YB1),
-    ! taken relative to A so that no digit is lost far from the origin
-    bxa = xb1*cm - (yb1 - so)*sm
-    bya = xb1*sm + (yb1 - so)*cm
-    xb = xa + bxa
-    yb = ya + bya
-    fi2 = dugl2(0.0_dp, 0.0_dp, bxa, bya)
-    dc = 4.0_dp*uround*(abs(so) + abs(yb1) + abs(rz3) + rz2 &
-                        + (1.0_dp + abs(fim) + abs(eta))*(abs(dx) + abs(dy)))/rz2
-    da = angle_sensitivity(c, dc) + 4.0_dp*uround*(2.0_dp + abs(fim) + abs(fi2))
-    est = da
-    ! e(FI2) = (B - A)/RZ2; each direction's cosine and sine once (turn; issue 9)
-    c2 = bxa/rz2
-    s2 = bya/rz2
-    call turn(fi2 + pi/2.0_dp, c2, s2, 1, n2x, n2y)
-    call components(va, ala, vax, vay)
-    call components(vbm, albm, vmx, vmy)
-    sb = abs(va) + abs(vbm)
-    call solve2e(n2x, -cm, n2y, -sm, vmx - vax, vmy - vay, da, &
-                 4.0_dp*uround*(1.0_dp + max(abs(ala), abs(albm)))*sb, sb, y1, y2, ier, relv)
+    call rrp_position([xa, ya], [xk, yk], ug, rz2, sign(1.0_dp, so)*off, 1.0_dp, x_b, u2, sl, &
+                      ier, est)
     if (failed(ier)) return
-    est = max(est, relv)
-    ev = relv*max(norm2d(y1, y2), sb/sqrt(2.0_dp))
-    vba = abs(y1)
-    alba = dugl3(fi2, pi/2.0_dp, y1)
-    vbbm = abs(y2)
-    albbm = dugl4(fim, pi, y2)
-    kbm = 0                                          ! ALBBM = FIM + KBM*PI/2
-    if (y2 < 0.0_dp) kbm = -2
-    call turn(alba, c2, s2, quarter(y1), tx, ty)     ! e(ALBA)
-    vbx = vax + vba*tx
-    vby = vay + vba*ty
-    vb = norm2d(vbx, vby)
-    alb = dugl5(vbx, vby)
-    w2 = domega(rz2, vba, alba - fi2)
+    xb = x_b(1)
+    yb = x_b(2)
+    fi2 = dugl5(u2(1), u2(2))
+    ier = settle(ier, est, [xb, yb])
+  end subroutine dprm2_rrp
+
+  ! DSKOR2: the velocity stage on the directions FI2, FIM (their rounding, 4u (2 + |FI|),
+  ! the error of the system's directions, as the book routine's).
+  subroutine dskor2_rrp(va, ala, vbm, albm, rz2, fi2, fim, vba, alba, vbbm, albbm, vb, alb, &
+                        w2, ier)
+    real(dp), intent(in) :: va, ala, vbm, albm, rz2, fi2, fim
+    real(dp), intent(out) :: vba, alba, vbbm, albbm, vb, alb, w2
+    integer, intent(out) :: ier
+    real(dp) :: u2(2), ug(2), v_a(2), v_g(2), v_b(2), om2, sv, ev, est
+    type(cram) :: f
+    vba = 0.0_dp; alba = 0.0_dp; vbbm = 0.0_dp; albbm = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp
+    w2 = 0.0_dp
+    u2 = [cos(fi2), sin(fi2)]
+    ug = [cos(fim), sin(fim)]
+    call components(va, ala, v_a(1), v_a(2))
+    call components(vbm, albm, v_g(1), v_g(2))
+    est = 0.0_dp
+    call rrp_system(u2, ug, f)
+    call rrp_velocity(f, v_a, v_g, u2, 1.0_dp/rz2, 4.0_dp*uround*(2.0_dp + max(abs(fi2), &
+                      abs(fim))), v_b, om2, sv, ev, ier, est)
+    if (failed(ier)) return
+    w2 = om2 + 0.0_dp                             ! (-0 is +0, as DOMEGA gives it)
+    vba = abs(om2)*rz2
+    alba = dugl3(fi2, pid2, om2)
+    vbbm = abs(sv)
+    albbm = dugl4(fim, pi, sv)
+    vb = norm2d(v_b(1), v_b(2))
+    alb = dugl5(v_b(1), v_b(2))
+    ier = settle(ier, est, [vba, vbbm, vb, w2])
+  end subroutine dskor2_rrp
+
+  ! DUSKR2: the acceleration stage; the Coriolis term is the caller's (ABK, BVK), W2 is
+  ! taken as exact (no velocity error carried).
+  subroutine duskr2_rrp(aa, ba, abm, bvm, abk, bvk, rz2, fi2, w2, fim, abat, vbat, abvm, &
+                        bvbm, e2, ab, bb, ier)
+    real(dp), intent(in) :: aa, ba, abm, bvm, abk, bvk, rz2, fi2, w2, fim
+    real(dp), intent(out) :: abat, vbat, abvm, bvbm, e2, ab, bb
+    integer, intent(out) :: ier
+    real(dp) :: u2(2), ug(2), a_a(2), a_g(2), a_k(2), a_b(2), ep2, sa, est
+    type(cram) :: f
+    abat = 0.0_dp; vbat = 0.0_dp; abvm = 0.0_dp; bvbm = 0.0_dp; e2 = 0.0_dp; ab = 0.0_dp
+    bb = 0.0_dp
+    u2 = [cos(fi2), sin(fi2)]
+    ug = [cos(fim), sin(fim)]
+    call components(aa, ba, a_a(1), a_a(2))
+    call components(abm, bvm, a_g(1), a_g(2))
+    call components(abk, bvk, a_k(1), a_k(2))
+    est = 0.0_dp
+    call rrp_system(u2, ug, f)
+    call rrp_acceleration(f, a_a, a_g + a_k, 0.0_dp, u2, rz2, 1.0_dp/rz2, w2, 0.0_dp, &
+                          4.0_dp*uround*(2.0_dp + max(abs(fi2), abs(fim))), a_b, ep2, sa, ier, est)
+    if (failed(ier)) return
+    e2 = ep2 + 0.0_dp
+    abat = abs(ep2)*rz2
+    vbat = dugl3(fi2, pid2, ep2)
+    abvm = abs(sa)
+    bvbm = dugl4(fim, pi, sa)
+    ab = norm2d(a_b(1), a_b(2))
+    bb = dugl5(a_b(1), a_b(2))
+    ier = settle(ier, est, [abat, abvm, e2, ab])
+  end subroutine duskr2_rrp
+
+  ! DKNMA2: the stages in the kernel's order; the guide's motion at B is the book's
+  ! (VBM, ALBM; ABM, BBM), its Coriolis term 2 WM s' k x e(FIM) (ABK, BBK as the book
+  ! draws it).  Q = P is the kernel's branch; the offset RZ3*SIN(ETA) along the left
+  ! normal is the kernel's.  FI2 in (-pi, pi] (DUGL2); the relative velocity and
+  ! acceleration of B about A along e(FI2 + pi/2) turned by the sign of W2 (ALBA) and the
+  ! tangential acceleration along ALBA turned by its sign (BBAT); the sliding ones along
+  ! FIM turned by the sign of s' (ALBBM) and s'' along ALBBM (BBBM), as printed.
+  subroutine dknma2_rrp(xa, ya, xk, yk, fim, rz2, rz3, eta, va, ala, wm, vbm, albm, aa, ba, &
+                        abm, bbm, p, analog, xb, yb, fi2, vba, alba, vbbm, albbm, vb, alb, &
+                        w2, aban, abk, bbk, abat, bbat, abbm, bbbm, ab, bb, e2, ier)
+    real(dp), intent(in) :: xa, ya, xk, yk, fim, rz2, rz3, eta, va, ala, wm, vbm, albm, aa
+    real(dp), intent(in) :: ba, abm, bbm, p, analog
+    real(dp), intent(out) :: xb, yb, fi2, vba, alba, vbbm, albbm, vb, alb, w2, aban, abk, bbk
+    real(dp), intent(out) :: abat, bbat, abbm, bbbm, ab, bb, e2
+    integer, intent(out) :: ier
+    real(dp) :: ug(2), x_b(2), u2(2), sl, est, v_a(2), v_g(2), v_b(2), om2, sv, ev
+    real(dp) :: a_a(2), a_g(2), a_b(2), ep2, sa, rl2, dang
+    type(cram) :: f
+    xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp; vbbm = 0.0_dp
+    albbm = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; aban = 0.0_dp; abk = 0.0_dp
+    bbk = 0.0_dp; abat = 0.0_dp; bbat = 0.0_dp; abbm = 0.0_dp; bbbm = 0.0_dp; ab = 0.0_dp
+    bb = 0.0_dp; e2 = 0.0_dp
+    if (.not. (rz2 > 0.0_dp .and. rz2 <= huge(rz2))) then
+      ier = st_assembly
+      return
+    end if
+    rl2 = 1.0_dp/rz2
+    ug = [cos(fim), sin(fim)]
+    call rrp_position([xa, ya], [xk, yk], ug, rz2, rz3*sin(eta), book_sign(1.0_dp, p), x_b, &
+                      u2, sl, ier, est)
+    if (failed(ier)) return
+    dang = est + 4.0_dp*uround
+    call components(va, ala, v_a(1), v_a(2))
+    call components(vbm, albm, v_g(1), v_g(2))
+    call rrp_system(u2, ug, f)
+    call rrp_velocity(f, v_a, v_g, u2, rl2, dang, v_b, om2, sv, ev, ier, est)
+    if (failed(ier)) return
     if (analog /= 1.0_dp) then
-      aban = w2**2*rz2
-      abk = 2.0_dp*vbbm*abs(wm)
-      bbk = dugl3(albbm, pi/2.0_dp, wm)
-      sb = abs(aa) + abs(abm) + aban + abk
-      call turn(albbm, cm, sm, kbm, ux, uy)            ! e(ALBBM)
-      call turn(bbk, cm, sm, kbm + quarter(wm), kx, ky) ! e(BBK)
-      call turn(fi2 + pi, c2, s2, 2, m2x, m2y)         ! e(FI2 + PI)
-      call components(abm, bbm, amx, amy)
-      call components(aa, ba, aax, aay)
-      call solve2e(tx, -ux, ty, -uy, &
-                   amx + abk*kx - aax - aban*m2x, &
-                   amy + abk*ky - aay - aban*m2y, da, &
-                   4.0_dp*uround*(6.0_dp + max(abs(ba), abs(bbm), abs(fim), abs(fi2)))*sb &
-                   + ev/rz2*(2.0_dp*abs(y1) + ev) + 2.0_dp*abs(wm)*ev, sb, y1, y2, st2, rela)
-      ier = st2
+      call components(aa, ba, a_a(1), a_a(2))
+      call components(abm, bbm, a_g(1), a_g(2))
+      a_g = a_g + (2.0_dp*wm*sv)*[-ug(2), ug(1)]
+      call rrp_acceleration(f, a_a, a_g, 2.0_dp*abs(wm)*ev, u2, rz2, rl2, om2, ev, dang, a_b, &
+                            ep2, sa, ier, est)
       if (failed(ier)) return
-      est = max(est, rela)
-      abat = abs(y1)
-      bbat = dugl4(alba, pi, y1)
-      abbm = abs(y2)
-      bbbm = dugl4(albbm, pi, y2)
-      call turn(bbbm, cm, sm, kbm + quarter(y2) - 1, wx, wy)  ! e(BBBM)
-      abx = amx + abk*kx + abbm*wx
-      aby = amy + abk*ky + abbm*wy
-      ab = norm2d(abx, aby)
-      bb = dugl5(abx, aby)
-      e2 = domega(rz2, abat, sin(bbat - fi2))          ! E-DKNMA2-4: book BBAT - FI2
+    end if
+    xb = x_b(1)
+    yb = x_b(2)
+    fi2 = atan2(u2(2), u2(1))
+    if (fi2 == -pi) fi2 = pi                      ! the range (-pi, pi] of DUGL2
+    w2 = om2 + 0.0_dp                             ! (-0 is +0, as DOMEGA gives it)
+    vba = abs(om2)*rz2
+    alba = dugl3(fi2, pid2, om2)
+    vbbm = abs(sv)
+    albbm = dugl4(fim, pi, sv)
+    vb = norm2d(v_b(1), v_b(2))
+    alb = dugl5(v_b(1), v_b(2))
+    if (analog /= 1.0_dp) then
+      aban = om2**2*rz2
+      abk = 2.0_dp*vbbm*abs(wm)
+      bbk = dugl3(albbm, pid2, wm)
+      e2 = ep2 + 0.0_dp
+      abat = abs(ep2)*rz2
+      bbat = dugl4(alba, pi, book_sign(1.0_dp, om2)*ep2)
+      abbm = abs(sa)
+      bbbm = dugl4(albbm, pi, book_sign(1.0_dp, sv)*sa)
+      ab = norm2d(a_b(1), a_b(2))
+      bb = dugl5(a_b(1), a_b(2))
     end if
     ier = settle(ier, est, [xb, yb, vba, vbbm, vb, w2, aban, abk, abat, abbm, ab, e2])
-  end subroutine dknma2
+  end subroutine dknma2_rrp
 
   ! IV.18 DKNMA3, L2749-2829.  Kind 3 (RPR, slotted lever).
   ! B is the point of the axis of link 3 with AB = RZ2 and angle ABC = ETA (ETA = pi/2: B is
