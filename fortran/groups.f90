@@ -305,13 +305,13 @@ contains
     rk = sl*ug + off*[-ug(2), ug(1)]
     vg = vk + wg*[-rk(2), rk(1)]
     call rrp_system(u2, ug, f)
-    call rrp_velocity(f, va, vg, u2, rl2, dang, vb, w2, sv, ev, st, est)
+    call rrp_velocity(f, va, vg, ug, rl2, dang, vb, w2, sv, ev, st, est)
     if (level < 3 .or. failed(st)) return
     ! its acceleration plus the Coriolis term 2 wg s' k x ug (known to 2 |wg| ev)
     ag = ak + eg*[-rk(2), rk(1)] - wg**2*rk + (2.0_dp*wg*sv)*[-ug(2), ug(1)]
     ! (the entries' error taken as the estimate so far, the velocities' included, as
     ! before the stages: the Mechanism's statuses as the promise tests pin them)
-    call rrp_acceleration(f, aa, ag, 2.0_dp*abs(wg)*ev, u2, l2, rl2, w2, ev, &
+    call rrp_acceleration(f, aa, ag, 2.0_dp*abs(wg)*ev, u2, ug, l2, rl2, w2, ev, &
                           est + 4.0_dp*uround, ab, e2, sa, st, est)
   end subroutine rrp_kernel
 
@@ -367,13 +367,14 @@ contains
   end subroutine rrp_system
 
   ! RRP velocities: v_A + (w2 l2) k x u2 = v_G + s' ug, v_G the velocity of the guide's
-  ! point under B.  In: f (rrp_system), va, vg, u2, rl2 = 1/l2; dang = the error of the
+  ! point under B.  In: f (rrp_system), va, vg, ug, rl2 = 1/l2; dang = the error of the
   ! matrix's directions (radians: the position's estimate and their rounding); est = the
-  ! estimate so far.  Out: vb, w2, sv = s'; ev = the absolute error of (w2 l2, s'); st;
-  ! est, the larger of est and the system's.
-  pure subroutine rrp_velocity(f, va, vg, u2, rl2, dang, vb, w2, sv, ev, st, est)
+  ! estimate so far.  Out: vb = v_G + s' ug (from the guide's side: along a fixed guide
+  ! exactly); w2, sv = s'; ev = the absolute error of (w2 l2, s'); st; est, the larger of
+  ! est and the system's.
+  pure subroutine rrp_velocity(f, va, vg, ug, rl2, dang, vb, w2, sv, ev, st, est)
     type(cram), intent(in) :: f
-    real(dp), intent(in) :: va(2), vg(2), u2(2), rl2, dang
+    real(dp), intent(in) :: va(2), vg(2), ug(2), rl2, dang
     real(dp), intent(out) :: vb(2), w2, sv, ev
     integer, intent(out) :: st
     real(dp), intent(inout) :: est
@@ -385,19 +386,19 @@ contains
     est = max(est, rel)
     w2 = y1*rl2
     sv = y2
-    vb = va + y1*[-u2(2), u2(1)]
+    vb = vg + sv*ug
     ev = abs_err(f, y1, y2, sb, rel)
   end subroutine rrp_velocity
 
   ! RRP accelerations: a_A + (e2 l2) k x u2 - w2**2 l2 u2 = a_G + s'' ug, a_G the
   ! acceleration of the guide's point under B plus the Coriolis term (2 wg s' k x ug),
-  ! known to dag (absolute).  In: f (rrp_system), aa, ag, dag, u2, l2, rl2, w2 and ev
-  ! (rrp_velocity's: the velocities' error enters through w2**2 l2), dang, est.  Out: ab,
-  ! e2, sa = s''; st; est.
-  pure subroutine rrp_acceleration(f, aa, ag, dag, u2, l2, rl2, w2, ev, dang, ab, e2, sa, st, &
-                                   est)
+  ! known to dag (absolute).  In: f (rrp_system), aa, ag, dag, u2, ug, l2, rl2, w2 and ev
+  ! (rrp_velocity's: the velocities' error enters through w2**2 l2), dang, est.  Out: ab =
+  ! a_G + s'' ug (the guide's side); e2, sa = s''; st; est.
+  pure subroutine rrp_acceleration(f, aa, ag, dag, u2, ug, l2, rl2, w2, ev, dang, ab, e2, sa, &
+                                   st, est)
     type(cram), intent(in) :: f
-    real(dp), intent(in) :: aa(2), ag(2), dag, u2(2), l2, rl2, w2, ev, dang
+    real(dp), intent(in) :: aa(2), ag(2), dag, u2(2), ug(2), l2, rl2, w2, ev, dang
     real(dp), intent(out) :: ab(2), e2, sa
     integer, intent(out) :: st
     real(dp), intent(inout) :: est
@@ -410,7 +411,7 @@ contains
     est = max(est, rel)
     e2 = y1*rl2
     sa = y2
-    ab = aa + y1*[-u2(2), u2(1)] - an*u2
+    ab = ag + sa*ug
   end subroutine rrp_acceleration
 
   ! Kind 3, RPR (DPRM3/DKNMA3): a slider (link 2) pivoted at A slides along link 3, which
