@@ -458,7 +458,7 @@ contains
     hh = abs(h)
     dx = xc(1) - xa(1)
     dy = xc(2) - xa(2)
-    d = norm2d(dx, dy)
+    d = norm2e(dx, dy)
     est = 0.0_dp
     if (d == 0.0_dp) then
       st = st_singular
@@ -493,6 +493,25 @@ contains
     if (sx > d) est = est + uround*(sx/d)
     st = st_ok
   end subroutine rpr_position
+
+  ! |(x, y)| as prmtr's norm2d (sqrt(x**2 + y**2) between 1e-150 and 1e150), and beyond
+  ! it the same formula on (x, y) scaled by a power of 2: the same bits times 2**k for a
+  ! vector times 2**k (norm2d's hypot is not), so that a mechanism scaled by 2**k
+  ! solves to the same bits times 2**k at any k.
+  pure real(dp) function norm2e(x, y)
+    real(dp), intent(in) :: x, y
+    real(dp) :: m
+    integer :: e
+    m = max(abs(x), abs(y))
+    if (m > 1.0e-150_dp .and. m < 1.0e150_dp) then
+      norm2e = sqrt(x*x + y*y)
+    else if (m == 0.0_dp .or. .not. m <= huge(m)) then
+      norm2e = m
+    else
+      e = exponent(m)
+      norm2e = scale(sqrt(scale(x, -e)**2 + scale(y, -e)**2), e)
+    end if
+  end function norm2e
 
   ! The matrix of the RPR's velocity and acceleration systems: the unit columns k x uc
   ! (link 3 turning; unknown w3 d) and u3 (the sliding).

@@ -69,10 +69,14 @@
 ! the status is the dead-centre policy's for the kernel's estimate.  As-printed mode
 ! keeps each routine's own code, the book's sequence, which the printed figures depend
 ! on.  The other kinds' routines keep their own code until their kernels hold what the
-! book routines promise (kinds 2, 4: digits at 2**+-990 and far from the origin, the
-! estimate near parallel guides).
+! book routines promise (kind 4: the estimate near parallel guides).
+! Kinds 2 and 3 (issue 25): in corrected mode DPRM2/3 and DKNMA2/3 run the stages of the
+! RRP and RPR kernels (groups.f90: rrp_position, rrp_velocity, rrp_acceleration; rpr_...)
+! in the kernels' order, DSKOR2/3 the velocity stage, DUSKR2/3 the acceleration stage
+! (the book gives the guide's motion at B, the kernel carries it from K: the adapters call
+! the stages); the polar hand-offs, branch signs and ranges are the book's.
 !
-! Corrected mode, for speed (issue 9; the same mathematics, no ERRATA entry): DKNMA2,
+! Corrected mode, for speed (issue 9; the same mathematics, no ERRATA entry):
 ! DSKOR1 and DUSKR1 take each direction's cosine and sine once and get e(FI + PI/2),
 ! e(FI + PI) by the exact identities (turn), and sum vectors by components where the
 ! book goes through DSMVKT's polar form and back.

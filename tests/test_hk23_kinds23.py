@@ -281,7 +281,7 @@ def test_dknma2_and_dprm2_scale_exactly(k):
                 want = want * 2.0 ** k
             if name in ("VB", "AB"):
                 # moduli: prmtr's norm2d takes hypot beyond 1e+-150 (its own rounding)
-                assert abs(got - want) <= np.spacing(want), (name, got, want)
+                assert abs(got - want) <= abs(np.spacing(want)), (name, got, want)
             else:
                 assert got == want, (name, got, want)
         s = 2.0 ** k
@@ -392,3 +392,141 @@ def test_kind2_as_printed_keeps_the_books_code():
         printed = _dknma2(c)
     assert math.hypot(printed.XB - corrected.XB, printed.YB - corrected.YB) < 1e-12
     assert 1e-7 < abs(printed.ALBA - corrected.ALBA) < 1e-5
+
+
+# -- the book's kind-3 routines (corrected mode) ---------------------------------------------
+
+def _dknma3_case(rng):
+    xc, yc = rng.uniform(-1, 1, 2)
+    d, psi = rng.uniform(0.2, 1.0), rng.uniform(-3, 3)
+    eta = rng.uniform(0.3, 2.8) * rng.choice([-1, 1])
+    rz2 = d * abs(math.sin(rng.uniform(0.05, 1.4))) / abs(math.sin(eta)) * 0.95
+    return dict(xa=xc + d * math.cos(psi), ya=yc + d * math.sin(psi), xc=xc, yc=yc, rz2=rz2,
+                eta=eta, va=rng.uniform(0, 2), ala=rng.uniform(-3, 3), vc=rng.uniform(0, 1),
+                alc=rng.uniform(-3, 3), aa=rng.uniform(0, 5), ba=rng.uniform(-3, 3),
+                ac=rng.uniform(0, 2), bc=rng.uniform(-3, 3), p=float(rng.choice([-1, 1])))
+
+
+def _dknma3(c, scale=1.0, analog=0.0):
+    s = scale
+    return sarkp.DKNMA3(c["xa"] * s, c["ya"] * s, c["xc"] * s, c["yc"] * s, c["rz2"] * s,
+                        c["eta"], c["va"] * s, c["ala"], c["vc"] * s, c["alc"], c["aa"] * s,
+                        c["ba"], c["ac"] * s, c["bc"], c["p"], analog, on_error="nan")
+
+
+def test_dknma3_against_the_closed_form():
+    """Link 3's axis, W3, E3, the sliding of A3 along the axis and the book's B (angle
+    ABC = ETA, AB = RZ2) against the closed form (DKNMA3's P is the kernel's branch for
+    RZ2*SIN(ETA) > 0, its mirror below)."""
+    rng = np.random.default_rng(33)
+    pol = lambda m, t: (m * math.cos(t), m * math.sin(t))
+    checked = 0
+    for _ in range(40):
+        c = _dknma3_case(rng)
+        k = _dknma3(c)
+        if k.status != 0:
+            continue
+        checked += 1
+        h = c["rz2"] * math.sin(c["eta"])
+        A = ((c["xa"], c["ya"]), pol(c["va"], c["ala"]), pol(c["aa"], c["ba"]))
+        C = ((c["xc"], c["yc"]), pol(c["vc"], c["alc"]), pol(c["ac"], c["bc"]))
+        x, v, a = derivs(rpr_motion(A, C, h, c["p"] * math.copysign(1, h)))
+        d = math.hypot(c["xa"] - c["xc"], c["ya"] - c["yc"])
+        vs = max(abs(v[2]) * d, abs(v[3]), c["va"] + c["vc"])
+        as_ = max(abs(a[2]) * d, abs(a[3]), c["aa"] + c["ac"])
+        assert abs(math.remainder(k.FI3 - x[2], 2 * math.pi)) <= TOL
+        assert -math.pi < k.FI3 <= math.pi
+        assert abs(k.W3 - v[2]) * d <= TOL * vs
+        assert abs(k.E3 - a[2]) * d <= TOL * as_
+        # A3 slides along the axis opposite to A: VAR along ALAR = FI3 or FI3 - pi
+        assert abs(k.VAR * math.cos(k.ALAR - x[2]) + v[3]) <= TOL * vs
+        assert k.ALAR in (k.FI3, k.FI3 - math.pi)
+        # the book's B: AB = RZ2 and angle ABC = ETA
+        ab = math.hypot(k.XB - c["xa"], k.YB - c["ya"])
+        assert abs(ab - c["rz2"]) <= TOL * d
+        ba = (c["xa"] - k.XB, c["ya"] - k.YB)
+        bc = (c["xc"] - k.XB, c["yc"] - k.YB)
+        ang = math.atan2(abs(ba[0] * bc[1] - ba[1] * bc[0]), ba[0] * bc[0] + ba[1] * bc[1])
+        assert abs(ang - abs(math.remainder(c["eta"], 2 * math.pi))) <= 1e-12
+        assert abs(k.RZBC - math.hypot(*bc)) <= TOL * d
+    assert checked >= 30
+
+
+@pytest.mark.parametrize("k", [-990, -300, 300, 900])
+def test_dknma3_scales_exactly(k):
+    rng = np.random.default_rng(5)
+    for _ in range(10):
+        c = _dknma3_case(rng)
+        one, far = _dknma3(c), _dknma3(c, 2.0 ** k)
+        assert far.status == one.status
+        if one.status != 0:
+            continue
+        for name in one._fields:
+            got, want = getattr(far, name), getattr(one, name)
+            if name == "status":
+                continue
+            if name in ("XB", "YB", "RZBC", "VAR", "VAC", "VA3", "AAK", "AAR", "AACT", "AA3",
+                        "AACN"):
+                want = want * 2.0 ** k
+            if name in ("VA3", "AA3", "XB", "YB", "RZBC"):
+                # |A - C| and the moduli come from prmtr's norm2d, which takes hypot
+                # beyond 1e+-150 (its own rounding): to an ulp
+                assert abs(got - want) <= abs(np.spacing(want)), (name, got, want)
+            else:
+                assert got == want, (name, got, want)
+
+
+@pytest.mark.parametrize("branch", [1, -1])
+def test_dknma3_and_the_mechanism_give_the_same_bits(branch):
+    """An inverted slider-crank: DKNMA3 (ETA = pi/2, RZ2 the offset, P the branch) fed
+    the Mechanism's A gives its W3, E3 to the bit, and B (the foot of A on the axis) to
+    the rounding of RZ2*COS(pi/2) = 6e-17 RZ2."""
+    m = sarkp.Mechanism()
+    m.fixed("O", 0.0, 0.0)
+    m.fixed("C", 0.02, -0.25)
+    m.crank("A", "O", 0.1)
+    m.rpr("B", "A", "C", 0.05, math.pi / 2, branch=branch)
+    phi = np.linspace(-3.1, 3.1, 300)
+    r = m.solve(phi)
+    a, va, aa = r.position("A"), r.velocity("A"), r.acceleration("A")
+    b, w3, e3 = r.position("B"), r.omega("C", "B"), r.epsilon("C", "B")
+    compared = 0
+    for i in range(phi.size):
+        v, acc = _polar_exact(*va[i]), _polar_exact(*aa[i])
+        if v is None or acc is None:
+            continue
+        k = sarkp.DKNMA3(a[i, 0], a[i, 1], 0.02, -0.25, 0.05, math.pi / 2, v[0], v[1], 0.0,
+                         0.0, acc[0], acc[1], 0.0, 0.0, branch, 0.0, on_error="nan")
+        assert int(k.status) == int(r.status[i])
+        assert (k.W3, k.E3) == (w3[i], e3[i])
+        assert abs(k.XB - b[i, 0]) <= 1e-17 and abs(k.YB - b[i, 1]) <= 1e-17
+        compared += 1
+    assert compared >= 20
+    # DPRM3 (its P the opposite sign): the axis is the Mechanism's link 3
+    p = sarkp.DPRM3(a[:, 0], a[:, 1], 0.02, -0.25, 0.05, math.pi / 2, -branch)
+    d = np.remainder(p.FI3 - r.angle("C", "B"), 2 * np.pi)
+    assert np.all(np.minimum(d, 2 * np.pi - d) <= 1e-15)
+
+
+def test_dprm3_dskor3_duskr3_chain_against_the_closed_form():
+    """DPRM3 -> DSKOR3 -> DUSKR3 (the book's sequence, IV.15) on an inverted
+    slider-crank: W3, E3 and A3's sliding along the axis against the closed form."""
+    r, xc, yc, h = 0.1, 0.02, -0.25, 0.05
+    for phi in (-2.5, -0.7, 0.4, 1.9):
+        A = ((r * math.cos(phi), r * math.sin(phi)), (-r * math.sin(phi), r * math.cos(phi)),
+             (-r * math.cos(phi), -r * math.sin(phi)))
+        x, v, a = derivs(rpr_motion(A, ((xc, yc), (0, 0), (0, 0)), h, 1))
+        p = sarkp.DPRM3(A[0][0], A[0][1], xc, yc, h, math.pi / 2, -1.0, on_error="nan")
+        s = sarkp.DSKOR3(A[0][0], A[0][1], xc, yc, r, phi + math.pi / 2, 0.0, 0.0, p.FI3,
+                         on_error="nan")
+        # the Coriolis term of A3 relative to A (IV.15, L2529)
+        ak = 2 * abs(s.W3) * s.VA3A
+        bk = s.ALA3A + math.copysign(math.pi / 2, s.W3)
+        u = sarkp.DUSKR3(r, phi + math.pi, 0.0, 0.0, p.FI3, s.W3, p.RZAC, p.FICA, ak, bk,
+                         on_error="nan")
+        assert (p.status, s.status, u.status) == (0, 0, 0)
+        assert abs(math.remainder(p.FI3 - x[2], 2 * math.pi)) <= TOL
+        assert abs(s.W3 - v[2]) * p.RZAC <= TOL * r
+        assert abs(s.VA3A * math.cos(s.ALA3A - p.FI3) + v[3]) <= TOL * r
+        assert abs(u.E3 - a[2]) * p.RZAC <= TOL * r
+        assert abs(u.AA3AR * math.cos(u.BA3AR - p.FI3) + a[3]) <= TOL * r
