@@ -423,7 +423,8 @@ contains
   !      the left of the line A->C, -1 on its right.
   ! Out: xb, vb, ab = B; u3 = (B - C)/|B - C|, w3, e3 of link 3 (and of the slider);
   !      sv, sa = the sliding velocity and acceleration along u3 (d|CB|/dt, ...);
-  !      st (st_singular: A = C or B = C; st_assembly: h > |AC|), est.
+  !      st (st_singular: A = C, or B = C at a velocity level; st_assembly: h > |AC|),
+  !      est.
   pure subroutine rpr_kernel(level, xa, va, aa, xc, vc, ac, h, branch, xb, vb, ab, u3, w3, e3, &
                         sv, sa, st, est)
     integer, intent(in) :: level
@@ -477,10 +478,8 @@ contains
     nn = [-u(2), u(1)]
     xb = xa + ((hh*sq)*u + (branch*hh*cq)*nn)     ! Thales: on the circle over AC
     sl = d*cq                                    ! |B - C|
-    if (sl == 0.0_dp) then
-      st = st_singular
-      return
-    end if
+    ! the axis, defined at B = C too (h = d: it is square to AC there; the velocity
+    ! system is then singular: k x uc and u3 are parallel)
     u3 = (branch*sq)*nn - cq*u
     uc = -u
     ds = 4.0_dp*uround*(1.0_dp + sq)
