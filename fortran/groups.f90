@@ -44,6 +44,8 @@ module groups
   public :: prp_position, prp_matrix, prp_velocity, prp_acceleration, rpp_position, &
             rpp_velocity, rpp_acceleration
   public :: rrr_position, rrr_system, rrr_velocity, rrr_acceleration
+  public :: rrp_position, rrp_system, rrp_velocity, rrp_acceleration, rpr_position, &
+            rpr_system, rpr_velocity, rpr_acceleration
 
 contains
 
@@ -361,7 +363,10 @@ contains
 
   ! Kind 2, RRP (DPRM2/DKNMA2): the slider joint B on a guide, at off from its axis
   ! (along the guide's left normal), the rod A-B (link 2) of length l2; the slider block
-  ! (link 3) turns with the guide.
+  ! (link 3) turns with the guide.  The kernel runs the three stages rrp_position,
+  ! rrp_velocity, rrp_acceleration, carrying the guide's motion from K to B between them;
+  ! the book's DPRM2, DSKOR2, DUSKR2, DKNMA2 (corrected mode) call the stages, their guide's
+  ! motion being given at B.
   ! In:  level; xa, va, aa = A; the guide: xk, vk, ak = its point K, ug its direction,
   !      wg, eg its link's motion; l2 > 0, rl2 = 1/l2; off; branch = +1: B ahead, along
   !      ug, of the foot of the perpendicular from A, -1 behind.
@@ -375,13 +380,38 @@ contains
     real(dp), intent(in) :: l2, rl2, off, branch
     real(dp), intent(out) :: xb(2), vb(2), ab(2), u2(2), w2, e2, sv, sa, est
     integer, intent(out) :: st
-    real(dp) :: u(2), nn(2), wv(2), along, perp, cq, root, sl, r2(2), dc, sq
-    real(dp) :: vg(2), ag(2), y1, y2, rel, sb, ev
+    real(dp) :: sl, rk(2), vg(2), ag(2), ev, dang
     type(cram) :: f
-    u = ug
-    nn = [-u(2), u(1)]
+    call rrp_position(xa, xk, ug, l2, off, branch, xb, u2, sl, st, est)
+    if (level < 2 .or. failed(st)) return
+    dang = est + 4.0_dp*uround                   ! the error of the systems' directions
+    ! the guide's point under B (B - K = sl ug + off n, formed from local quantities)
+    rk = sl*ug + off*[-ug(2), ug(1)]
+    vg = vk + wg*[-rk(2), rk(1)]
+    call rrp_system(u2, ug, f)
+    call rrp_velocity(f, va, vg, ug, rl2, dang, vb, w2, sv, ev, st, est)
+    if (level < 3 .or. failed(st)) return
+    ! its acceleration plus the Coriolis term 2 wg s' k x ug (known to 2 |wg| ev)
+    ag = ak + eg*[-rk(2), rk(1)] - wg**2*rk + (2.0_dp*wg*sv)*[-ug(2), ug(1)]
+    ! (the entries' error taken as the estimate so far, the velocities' included, as
+    ! before the stages: the Mechanism's statuses as the promise tests pin them)
+    call rrp_acceleration(f, aa, ag, 2.0_dp*abs(wg)*ev, u2, ug, l2, rl2, w2, ev, &
+                          est + 4.0_dp*uround, ab, e2, sa, st, est)
+  end subroutine rrp_kernel
+
+  ! RRP positions: B on the guide (through K, direction ug) at off along its left normal
+  ! n, at l2 from A.  B - A = branch root ug - perp n is formed from the quantities
+  ! relative to A and K, then B = A + (B - A): far from the origin B - A keeps its digits.
+  ! Out: xb; u2 = (B - A)/l2; sl = (B - K).ug, the slider's place on the guide (B - K =
+  ! sl ug + off n); st (st_assembly); est, the direction's sensitivity (unit-free).
+  pure subroutine rrp_position(xa, xk, ug, l2, off, branch, xb, u2, sl, st, est)
+    real(dp), intent(in) :: xa(2), xk(2), ug(2), l2, off, branch
+    real(dp), intent(out) :: xb(2), u2(2), sl, est
+    integer, intent(out) :: st
+    real(dp) :: nn(2), wv(2), along, perp, cq, sq, root, dc
+    nn = [-ug(2), ug(1)]
     wv = xa - xk
-    along = wv(1)*u(1) + wv(2)*u(2)
+    along = wv(1)*ug(1) + wv(2)*ug(2)
     perp = wv(1)*nn(1) + wv(2)*nn(2) - off
     cq = perp/l2
     est = 0.0_dp
@@ -395,9 +425,8 @@ contains
     sq = sqrt((1.0_dp - cq)*(1.0_dp + cq))
     root = l2*sq
     sl = along + branch*root
-    xb = xk + sl*u + off*nn
-    r2 = xb - xa
-    u2 = [r2(1)*rl2, r2(2)*rl2]
+    xb = xa + ((branch*root)*ug - perp*nn)
+    u2 = (branch*sq)*ug - cq*nn
     dc = 4.0_dp*uround*(abs(perp) + abs(off) + l2 + abs(wv(1)) + abs(wv(2)))/l2
     ! numerics' angle_sensitivity(cq, dc) = min(dc/sq, sqrt(2 dc)), its square root sq
     ! shared with the position's, sqrt(2 dc) taken only when it may be the smaller
@@ -409,52 +438,112 @@ contains
       est = sqrt(2.0_dp*dc)
     end if
     st = st_ok
-    if (level < 2) return
-    ! v_A + w2 k x r2 = v_G(B) + s' u
-    call carried(xk, vk, ak, wg, eg, xb, vg, ag)
-    call cramer_set(-r2(2), -u(1), r2(1), -u(2), f, l2, 1.0_dp)
+  end subroutine rrp_position
+
+  ! The matrix of the RRP's velocity and acceleration systems: the columns are the unit
+  ! vectors k x u2 (the rod turning; unknown w l2, a velocity) and -ug (the sliding), so
+  ! that the unknowns are of one kind and in range wherever the answer is (a mechanism of
+  ! 2**600 m or 2**-990 m), and the estimate is unit-free.
+  pure subroutine rrp_system(u2, ug, f)
+    real(dp), intent(in) :: u2(2), ug(2)
+    type(cram), intent(out) :: f
+    call cramer_set(-u2(2), -ug(1), u2(1), -ug(2), f, 1.0_dp, 1.0_dp)
+  end subroutine rrp_system
+
+  ! RRP velocities: v_A + (w2 l2) k x u2 = v_G + s' ug, v_G the velocity of the guide's
+  ! point under B.  In: f (rrp_system), va, vg, ug, rl2 = 1/l2; dang = the error of the
+  ! matrix's directions (radians: the position's estimate and their rounding); est = the
+  ! estimate so far.  Out: vb = v_G + s' ug (from the guide's side: along a fixed guide
+  ! exactly); w2, sv = s'; ev = the absolute error of (w2 l2, s'); st; est, the larger of
+  ! est and the system's.
+  pure subroutine rrp_velocity(f, va, vg, ug, rl2, dang, vb, w2, sv, ev, st, est)
+    type(cram), intent(in) :: f
+    real(dp), intent(in) :: va(2), vg(2), ug(2), rl2, dang
+    real(dp), intent(out) :: vb(2), w2, sv, ev
+    integer, intent(out) :: st
+    real(dp), intent(inout) :: est
+    real(dp) :: y1, y2, sb, rel
     sb = abs(va(1)) + abs(va(2)) + abs(vg(1)) + abs(vg(2))
-    call cramer(f, vg(1) - va(1), vg(2) - va(2), est + 4.0_dp*uround, &
-                4.0_dp*uround*sb, sb, y1, y2, st, rel)
+    call cramer(f, vg(1) - va(1), vg(2) - va(2), dang, 4.0_dp*uround*sb, sb, &
+                y1, y2, st, rel)
     if (failed(st)) return
     est = max(est, rel)
-    w2 = y1
+    w2 = y1*rl2
     sv = y2
-    vb = va + y1*[-r2(2), r2(1)]
-    if (level < 3) return
+    vb = vg + sv*ug
     ev = abs_err(f, y1, y2, sb, rel)
-    ag = ag + 2.0_dp*wg*y2*nn - aa + y1**2*r2
-    call cramer(f, ag(1), ag(2), est + 4.0_dp*uround, &
-                4.0_dp*uround*(sb + y1**2*l2) + ev*(2.0_dp*abs(y1) + ev/l2) &
-                + 2.0_dp*abs(wg)*ev, sb, y1, y2, st, rel)
+  end subroutine rrp_velocity
+
+  ! RRP accelerations: a_A + (e2 l2) k x u2 - w2**2 l2 u2 = a_G + s'' ug, a_G the
+  ! acceleration of the guide's point under B plus the Coriolis term (2 wg s' k x ug),
+  ! known to dag (absolute).  In: f (rrp_system), aa, ag, dag, u2, ug, l2, rl2, w2 and ev
+  ! (rrp_velocity's: the velocities' error enters through w2**2 l2), dang, est.  Out: ab =
+  ! a_G + s'' ug (the guide's side); e2, sa = s''; st; est.
+  pure subroutine rrp_acceleration(f, aa, ag, dag, u2, ug, l2, rl2, w2, ev, dang, ab, e2, sa, &
+                                   st, est)
+    type(cram), intent(in) :: f
+    real(dp), intent(in) :: aa(2), ag(2), dag, u2(2), ug(2), l2, rl2, w2, ev, dang
+    real(dp), intent(out) :: ab(2), e2, sa
+    integer, intent(out) :: st
+    real(dp), intent(inout) :: est
+    real(dp) :: an, y1, y2, sb, rel
+    an = w2**2*l2
+    sb = abs(aa(1)) + abs(aa(2)) + abs(ag(1)) + abs(ag(2)) + an
+    call cramer(f, ag(1) - aa(1) + an*u2(1), ag(2) - aa(2) + an*u2(2), dang, &
+                4.0_dp*uround*sb + ev*(2.0_dp*abs(w2) + ev*rl2) + dag, sb, y1, y2, st, rel)
     if (failed(st)) return
     est = max(est, rel)
-    e2 = y1
+    e2 = y1*rl2
     sa = y2
-    ab = aa + y1*[-r2(2), r2(1)] - w2**2*r2
-  end subroutine rrp_kernel
+    ab = ag + sa*ug
+  end subroutine rrp_acceleration
 
   ! Kind 3, RPR (DPRM3/DKNMA3): a slider (link 2) pivoted at A slides along link 3, which
   ! turns about C; A is at h from link 3's axis.  B = the foot of the perpendicular from A
-  ! on the axis (a point of the slider; Thales: on the circle over AC).
+  ! on the axis (a point of the slider; Thales: on the circle over AC).  The kernel runs
+  ! the stages rpr_position, rpr_velocity, rpr_acceleration; the book's DPRM3, DSKOR3,
+  ! DUSKR3, DKNMA3 (corrected mode) call them.
   ! In:  level; xa, va, aa = A; xc, vc, ac = C; h (its modulus is used); branch = +1: B on
   !      the left of the line A->C, -1 on its right.
   ! Out: xb, vb, ab = B; u3 = (B - C)/|B - C|, w3, e3 of link 3 (and of the slider);
   !      sv, sa = the sliding velocity and acceleration along u3 (d|CB|/dt, ...);
-  !      st (st_singular: A = C or B = C; st_assembly: h > |AC|), est.
+  !      st (st_singular: A = C, or B = C at a velocity level; st_assembly: h > |AC|),
+  !      est.
   pure subroutine rpr_kernel(level, xa, va, aa, xc, vc, ac, h, branch, xb, vb, ab, u3, w3, e3, &
                         sv, sa, st, est)
     integer, intent(in) :: level
     real(dp), intent(in) :: xa(2), va(2), aa(2), xc(2), vc(2), ac(2), h, branch
     real(dp), intent(out) :: xb(2), vb(2), ab(2), u3(2), w3, e3, sv, sa, est
     integer, intent(out) :: st
-    real(dp) :: dx, dy, d, hh, sq, cq, u(2), nn(2), fb(2), e3v(2), n3(2), sl, ds
-    real(dp) :: rac(2), y1, y2, rel, sb, sd, ev, sx
+    real(dp) :: uc(2), d, sl, eac, ev, dang
     type(cram) :: f
+    call rpr_position(xa, xc, h, branch, xb, u3, uc, d, sl, eac, st, est)
+    if (level < 2 .or. failed(st)) return
+    dang = est + 4.0_dp*uround                   ! the error of the systems' directions
+    call rpr_system(uc, u3, f)
+    call rpr_velocity(f, va, vc, u3, d, sl, dang, vb, w3, sv, ev, st, est)
+    if (level < 3 .or. failed(st)) return
+    ! the Coriolis term 2 w3 s' k x u3, known to 2 (|w3| ev + |s'| ev/d); the entries'
+    ! error as rrp_kernel's
+    call rpr_acceleration(f, aa, ac, (2.0_dp*w3*sv)*[-u3(2), u3(1)], &
+                          2.0_dp*(abs(w3)*ev + abs(sv)*(ev/d)), uc, u3, d, sl, w3, ev, eac, &
+                          est + 4.0_dp*uround, ab, e3, sa, st, est)
+  end subroutine rpr_kernel
+
+  ! RPR positions.  B - A = h sq uac + branch h cq n (uac = (C - A)/d, n its left normal,
+  ! sq = h/d, cq = sqrt(1 - sq**2)); the axis u3 = (B - C)/|B - C| = -cq uac + branch sq n
+  ! from the triangle, not from the difference B - C (which loses digits far from the
+  ! origin).  Out: xb; u3; uc = (A - C)/d; d = |AC|; sl = |CB|; eac = the rounding of A - C
+  ! carried from the coordinates (absolute, uround (|A| + |C|)); st; est.
+  pure subroutine rpr_position(xa, xc, h, branch, xb, u3, uc, d, sl, eac, st, est)
+    real(dp), intent(in) :: xa(2), xc(2), h, branch
+    real(dp), intent(out) :: xb(2), u3(2), uc(2), d, sl, eac, est
+    integer, intent(out) :: st
+    real(dp) :: dx, dy, hh, sq, cq, u(2), nn(2), ds, sx
     hh = abs(h)
     dx = xc(1) - xa(1)
     dy = xc(2) - xa(2)
-    d = norm2d(dx, dy)
+    d = norm2e(dx, dy)
     est = 0.0_dp
     if (d == 0.0_dp) then
       st = st_singular
@@ -471,50 +560,96 @@ contains
     cq = sqrt((1.0_dp - sq)*(1.0_dp + sq))
     u = [dx, dy]/d
     nn = [-u(2), u(1)]
-    fb = (hh*sq)*u + (branch*hh*cq)*nn           ! B - A (Thales: on the circle over AC)
-    xb = xa + fb
+    xb = xa + ((hh*sq)*u + (branch*hh*cq)*nn)     ! Thales: on the circle over AC
     sl = d*cq                                    ! |B - C|
-    if (sl == 0.0_dp) then
-      st = st_singular
-      return
-    end if
-    e3v = (xb - xc)/sl
-    n3 = [-e3v(2), e3v(1)]
-    u3 = e3v
+    ! the axis, defined at B = C too (h = d: it is square to AC there; the velocity
+    ! system is then singular: k x uc and u3 are parallel)
+    u3 = (branch*sq)*nn - cq*u
+    uc = -u
     ds = 4.0_dp*uround*(1.0_dp + sq)
     est = angle_sensitivity(sq, ds)
     ! A - C carries the rounding of the coordinates it is the difference of (far from the
     ! origin more than d's own): its direction, link 3's, moves by about u sx/d, and the
     ! accelerations' term w3**2 (A - C) by w3**2 u sx
     sx = abs(xa(1)) + abs(xa(2)) + abs(xc(1)) + abs(xc(2))
+    eac = uround*sx
     if (sx > d) est = est + uround*(sx/d)
     st = st_ok
-    if (level < 2) return
-    ! v_A = v_C + w3 k x (A - C) + s' e3
-    rac = xa - xc
-    call cramer_set(-rac(2), e3v(1), rac(1), e3v(2), f, d, 1.0_dp)
+  end subroutine rpr_position
+
+  ! |(x, y)| as prmtr's norm2d (sqrt(x**2 + y**2) between 1e-150 and 1e150), and beyond
+  ! it the same formula on (x, y) scaled by a power of 2: the same bits times 2**k for a
+  ! vector times 2**k (norm2d's hypot is not), so that a mechanism scaled by 2**k
+  ! solves to the same bits times 2**k at any k.
+  pure real(dp) function norm2e(x, y)
+    real(dp), intent(in) :: x, y
+    real(dp) :: m
+    integer :: e
+    m = max(abs(x), abs(y))
+    if (m > 1.0e-150_dp .and. m < 1.0e150_dp) then
+      norm2e = sqrt(x*x + y*y)
+    else if (m == 0.0_dp .or. .not. m <= huge(m)) then
+      norm2e = m
+    else
+      e = exponent(m)
+      norm2e = scale(sqrt(scale(x, -e)**2 + scale(y, -e)**2), e)
+    end if
+  end function norm2e
+
+  ! The matrix of the RPR's velocity and acceleration systems: the unit columns k x uc
+  ! (link 3 turning; unknown w3 d) and u3 (the sliding).
+  pure subroutine rpr_system(uc, u3, f)
+    real(dp), intent(in) :: uc(2), u3(2)
+    type(cram), intent(out) :: f
+    call cramer_set(-uc(2), u3(1), uc(1), u3(2), f, 1.0_dp, 1.0_dp)
+  end subroutine rpr_system
+
+  ! RPR velocities: v_A = v_C + (w3 d) k x uc + s' u3.  In: f (rpr_system), va, vc, u3,
+  ! d, sl (rpr_position's), dang (as rrp_velocity's), est.  Out: vb (B's, of link 3's
+  ! point at B plus the sliding), w3, sv = s'; ev = the absolute error of (w3 d, s'); st;
+  ! est.
+  pure subroutine rpr_velocity(f, va, vc, u3, d, sl, dang, vb, w3, sv, ev, st, est)
+    type(cram), intent(in) :: f
+    real(dp), intent(in) :: va(2), vc(2), u3(2), d, sl, dang
+    real(dp), intent(out) :: vb(2), w3, sv, ev
+    integer, intent(out) :: st
+    real(dp), intent(inout) :: est
+    real(dp) :: y1, y2, sb, rel
     sb = abs(va(1)) + abs(va(2)) + abs(vc(1)) + abs(vc(2))
-    call cramer(f, va(1) - vc(1), va(2) - vc(2), est + 4.0_dp*uround, &
-                4.0_dp*uround*sb, sb, y1, y2, st, rel)
-    if (failed(st)) return
-    est = max(est, rel)
-    w3 = y1
-    sd = y2
-    sv = sd
-    vb = vc + y1*sl*n3 + sd*e3v
-    if (level < 3) return
-    ev = abs_err(f, y1, sd, sb, rel)
-    call cramer(f, aa(1) - ac(1) + y1**2*rac(1) - 2.0_dp*y1*sd*n3(1), &
-                aa(2) - ac(2) + y1**2*rac(2) - 2.0_dp*y1*sd*n3(2), &
-                est + 4.0_dp*uround, 4.0_dp*uround*(sb + y1**2*d + abs(y1*sd)) + uround*y1**2*sx &
-                + ev*(2.0_dp*abs(y1) + ev/d) + 2.0_dp*(abs(y1)*ev + abs(sd)*ev/d), sb, &
+    call cramer(f, va(1) - vc(1), va(2) - vc(2), dang, 4.0_dp*uround*sb, sb, &
                 y1, y2, st, rel)
     if (failed(st)) return
     est = max(est, rel)
-    e3 = y1
+    w3 = y1/d
+    sv = y2
+    vb = vc + (w3*sl)*[-u3(2), u3(1)] + sv*u3
+    ev = abs_err(f, y1, y2, sb, rel)
+  end subroutine rpr_velocity
+
+  ! RPR accelerations: a_A = a_C + (e3 d) k x uc - w3**2 d uc + a_k + s'' u3, a_k the
+  ! Coriolis term (2 w3 s' k x u3), known to dak.  In: f, aa, ac, ak, dak, uc, u3, d, sl,
+  ! w3, ev (rpr_velocity's), eac (rpr_position's), dang, est.  Out: ab, e3, sa = s''; st;
+  ! est.
+  pure subroutine rpr_acceleration(f, aa, ac, ak, dak, uc, u3, d, sl, w3, ev, eac, dang, ab, &
+                                   e3, sa, st, est)
+    type(cram), intent(in) :: f
+    real(dp), intent(in) :: aa(2), ac(2), ak(2), dak, uc(2), u3(2), d, sl, w3, ev, eac, dang
+    real(dp), intent(out) :: ab(2), e3, sa
+    integer, intent(out) :: st
+    real(dp), intent(inout) :: est
+    real(dp) :: an, y1, y2, sb, rel, ew
+    an = w3**2*d
+    sb = abs(aa(1)) + abs(aa(2)) + abs(ac(1)) + abs(ac(2)) + an + abs(ak(1)) + abs(ak(2))
+    ew = ev/d                                    ! the error of w3
+    call cramer(f, aa(1) - ac(1) + an*uc(1) - ak(1), aa(2) - ac(2) + an*uc(2) - ak(2), &
+                dang, 4.0_dp*uround*sb + w3**2*eac &
+                + ev*(2.0_dp*abs(w3) + ew) + dak, sb, y1, y2, st, rel)
+    if (failed(st)) return
+    est = max(est, rel)
+    e3 = y1/d
     sa = y2
-    ab = ac + y1*sl*n3 - w3**2*sl*e3v + y2*e3v + 2.0_dp*w3*sd*n3
-  end subroutine rpr_kernel
+    ab = ac + (e3*sl)*[-u3(2), u3(1)] - (w3**2*sl)*u3 + sa*u3 + ak
+  end subroutine rpr_acceleration
 
   ! Kind 4, PRP (DPRM4/DKNMA4): the joint B of two sliders, slider 2 on guide M through A,
   ! slider 3 on guide N through C; B at offm, offn from the guides' axes along their

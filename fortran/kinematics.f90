@@ -61,21 +61,19 @@
 ! E-DKNMA4-5 for the directions the book took from absolute coordinates); lengths of
 ! 1e-300 or 1e300 neither underflow nor overflow where the answer is a double.
 !
-! One home per group kind (issue 25): in corrected mode DPRM1 and DKNMA1 are adapters over
-! the kind-1 kernel of groups.f90 (rrr_kernel), the one sarkp.Mechanism calls: the book's
-! polar inputs become components, the kernel solves in Cartesian terms (B from the
-! triangle's apex, no cosine or sine of FI2; Cramer's rule), its results become the
-! book's (modulus, direction) pairs, branch signs and angle ranges (DPRM1's up to 3 pi);
-! the status is the dead-centre policy's for the kernel's estimate.  As-printed mode
-! keeps each routine's own code, the book's sequence, which the printed figures depend
-! on.  The other kinds' routines keep their own code until their kernels hold what the
-! book routines promise (kind 2: digits at 2**+-990 and far from the origin).  Kinds 4
-! and 5 are adapters too (corrected mode): DPRM4, DKNMA4, DPRM5, DKNMA5 over prp_kernel,
-! rpp_kernel, DSKOR4/5 and DUSKR4/5 over their velocity and acceleration stages (see
-! DPRM4).
+! One home per group kind (issue 25): in corrected mode every kind's routines are adapters
+! over the kernels of groups.f90, the ones sarkp.Mechanism calls: DPRM and DKNMA 1-5 run
+! the kind's kernel (or its stages in the kernel's order), DSKOR 1-5 its velocity stage
+! and DUSKR 1-5 its acceleration stage from the positions and velocities they are given.
+! The book's polar inputs become components, the kernel solves in Cartesian terms (kind
+! 1: B from the triangle's apex, no cosine or sine of FI2; Cramer's rule), its results
+! become the book's (modulus, direction) pairs, branch signs and angle ranges (DPRM1's up
+! to 3 pi); the status is the dead-centre policy's for the kernel's estimate.  As-printed
+! mode keeps each routine's own code, the book's sequence, which the printed figures
+! depend on.
 !
-! Corrected mode, for speed (issue 9; the same mathematics, no ERRATA entry): DKNMA2,
-! DSKOR1 and DUSKR1 take each direction's cosine and sine once and get e(FI + PI/2),
+! For speed (issue 9; the same mathematics, no ERRATA entry; since issue 25 the
+! as-printed path only): DSKOR1 and DUSKR1 take each direction's cosine and sine once and get e(FI + PI/2),
 ! e(FI + PI) by the exact identities (turn), and sum vectors by components where the
 ! book goes through DSMVKT's polar form and back.
 !
@@ -88,6 +86,8 @@ module kinematics
   use groups, only: cram, prp_kernel, prp_position, prp_matrix, prp_velocity, &
                     prp_acceleration, rpp_kernel, rpp_velocity, rpp_acceleration
   use groups, only: rrr_system, rrr_velocity, rrr_acceleration
+  use groups, only: rrp_position, rrp_system, rrp_velocity, rrp_acceleration, &
+                    rpr_position, rpr_system, rpr_velocity, rpr_acceleration
   use numerics, only: uround, system2, solve2e, factor2, solve2f, solve_kind5, policy, &
                       settle, failed, wrap_pi, angle_sensitivity, tri_angles, tri_apex, &
                       apex_vectors, unscale, acc_dir, turn, components, quarter
@@ -209,43 +209,48 @@ contains
     real(dp), intent(out) :: xb, yb, fi2
     integer, intent(out) :: ier
     real(dp) :: cm, sm, dx, dy, so, r, b, x, y, off, c, dc, tow
-    xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp
-    ier = st_ok
-    if (.not. (rz2 > 0.0_dp .and. rz2 <= huge(rz2))) then
-      ier = st_assembly
-      return
-    end if
-    cm = cos(fim)
-    sm = sin(fim)
-    dx = xa - xk
-    dy = ya - yk
-    so = -dx*sm + dy*cm                           ! signed offset of A from the guide axis
-    off = rz3*sin(t)
-    if (so == 0.0_dp .and. off /= 0.0_dp) then
-      ier = st_singular                           ! A on the guide: side of the offset undefined
-      return
-    end if
-    ! A -> O' (foot of the perpendicular) is -sign(so) along the left normal (-sm, cm)
-    tow = -sign(1.0_dp, so)
-    r = abs(so) - off
-    c = r/rz2
-    if (abs(c) > 1.0_dp) then
-      if (abs(c) - 1.0_dp > 8.0_dp*epsilon(1.0_dp)) then
-        ier = st_assembly                         ! B cannot reach the guide
+    if (printed_mode == 0) then
+      call dprm2_rrp(xa, ya, xk, yk, fim, rz2, rz3, t, xb, yb, fi2, ier)   ! the kind-2 stages
+    else
+      xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp
+      ier = st_ok
+      if (.not. (rz2 > 0.0_dp .and. rz2 <= huge(rz2))) then
+        ier = st_assembly
         return
       end if
-      c = sign(1.0_dp, c)
+      cm = cos(fim)
+      sm = sin(fim)
+      dx = xa - xk
+      dy = ya - yk
+      so = -dx*sm + dy*cm                           ! signed offset of A from the guide axis
+      off = rz3*sin(t)
+      if (so == 0.0_dp .and. off /= 0.0_dp) then
+        ier = st_singular                           ! A on the guide: side of the offset undefined
+        return
+      end if
+      ! A -> O' (foot of the perpendicular) is -sign(so) along the left normal (-sm, cm)
+      tow = -sign(1.0_dp, so)
+      r = abs(so) - off
+      c = r/rz2
+      if (abs(c) > 1.0_dp) then
+        if (abs(c) - 1.0_dp > 8.0_dp*epsilon(1.0_dp)) then
+          ier = st_assembly                         ! B cannot reach the guide
+          return
+        end if
+        c = sign(1.0_dp, c)
+      end if
+      b = rz2*sqrt((1.0_dp - c)*(1.0_dp + c))
+      x = tow*rz2*c*(-sm) + b*cm
+      y = tow*rz2*c*cm + b*sm
+      fi2 = dugl5(x, y)
+      xb = xa + rz2*cos(fi2)
+      yb = ya + rz2*sin(fi2)
+      ! sensitivity: c moves with the offsets and, through FIM, with the lever |A - K|
+      dc = 4.0_dp*uround*(abs(so) + abs(off) + abs(rz3) + rz2 &
+                          + (1.0_dp + abs(fim) + abs(t))*(abs(dx) + abs(dy)))/rz2
+      ier = settle(ier, angle_sensitivity(c, dc) + 8.0_dp*uround*(1.0_dp + abs(fim)), [xb, yb])
+
     end if
-    b = rz2*sqrt((1.0_dp - c)*(1.0_dp + c))
-    x = tow*rz2*c*(-sm) + b*cm
-    y = tow*rz2*c*cm + b*sm
-    fi2 = dugl5(x, y)
-    xb = xa + rz2*cos(fi2)
-    yb = ya + rz2*sin(fi2)
-    ! sensitivity: c moves with the offsets and, through FIM, with the lever |A - K|
-    dc = 4.0_dp*uround*(abs(so) + abs(off) + abs(rz3) + rz2 &
-                        + (1.0_dp + abs(fim) + abs(t))*(abs(dx) + abs(dy)))/rz2
-    ier = settle(ier, angle_sensitivity(c, dc) + 8.0_dp*uround*(1.0_dp + abs(fim)), [xb, yb])
   end subroutine dprm2
 
   ! IV.3 DPRM3, L1577-1598 (Table 9, Fig. 16).  Kind 3 (RPR, slotted lever) positions.
@@ -267,33 +272,38 @@ contains
     real(dp), intent(out) :: rzac, fi3, fica
     integer, intent(out) :: ier
     real(dp) :: h, s, ugbca, ds
-    rzac = 0.0_dp; fi3 = 0.0_dp; fica = 0.0_dp
-    ier = st_ok
-    h = rz2*sin(t)
-    rzac = norm2d(xa - xc, ya - yc)
-    if (rzac == 0.0_dp) then
-      if (h == 0.0_dp) then
-        ier = st_singular                         ! A = C: the axis direction is undefined
-      else
-        ier = st_assembly
-      end if
-      rzac = 0.0_dp
-      return
-    end if
-    s = h/rzac
-    if (abs(s) > 1.0_dp) then
-      if (abs(s) - 1.0_dp > 8.0_dp*epsilon(1.0_dp)) then
-        ier = st_assembly                         ! A farther from the axis than from C
+    if (printed_mode == 0) then
+      call dprm3_rpr(xa, ya, xc, yc, rz2, t, p, rzac, fi3, fica, ier)   ! the kind-3 stages
+    else
+      rzac = 0.0_dp; fi3 = 0.0_dp; fica = 0.0_dp
+      ier = st_ok
+      h = rz2*sin(t)
+      rzac = norm2d(xa - xc, ya - yc)
+      if (rzac == 0.0_dp) then
+        if (h == 0.0_dp) then
+          ier = st_singular                         ! A = C: the axis direction is undefined
+        else
+          ier = st_assembly
+        end if
         rzac = 0.0_dp
         return
       end if
-      s = sign(1.0_dp, s)
+      s = h/rzac
+      if (abs(s) > 1.0_dp) then
+        if (abs(s) - 1.0_dp > 8.0_dp*epsilon(1.0_dp)) then
+          ier = st_assembly                         ! A farther from the axis than from C
+          rzac = 0.0_dp
+          return
+        end if
+        s = sign(1.0_dp, s)
+      end if
+      fica = dugl2(xc, yc, xa, ya)
+      ugbca = asin(s)
+      fi3 = fica + book_sign(1.0_dp, p)*ugbca
+      ds = 4.0_dp*uround*(abs(s)*(1.0_dp + abs(t)) + abs(rz2/rzac)*abs(t))
+      ier = settle(ier, angle_sensitivity(s, ds) + 8.0_dp*uround*(1.0_dp + abs(fica)), [rzac])
+
     end if
-    fica = dugl2(xc, yc, xa, ya)
-    ugbca = asin(s)
-    fi3 = fica + book_sign(1.0_dp, p)*ugbca
-    ds = 4.0_dp*uround*(abs(s)*(1.0_dp + abs(t)) + abs(rz2/rzac)*abs(t))
-    ier = settle(ier, angle_sensitivity(s, ds) + 8.0_dp*uround*(1.0_dp + abs(fica)), [rzac])
   end subroutine dprm3
 
   ! IV.4 DPRM4, L1622-1657 (Table 10, Fig. 17).  Kind 4 (PRP) positions.
@@ -542,21 +552,27 @@ contains
     real(dp), intent(out) :: vba, alba, vbbm, albbm, vb, alb, w2
     integer, intent(out) :: ier
     real(dp) :: y1, y2, sb, rel
-    vba = 0.0_dp; alba = 0.0_dp; vbbm = 0.0_dp; albbm = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp
-    w2 = 0.0_dp
-    sb = abs(va) + abs(vbm)
-    call solve2e(cos(fi2 + pid2), -cos(fim), sin(fi2 + pid2), -sin(fim), &
-                 vbm*cos(albm) - va*cos(ala), vbm*sin(albm) - va*sin(ala), &
-                 4.0_dp*uround*(2.0_dp + max(abs(fi2), abs(fim))), &
-                 4.0_dp*uround*(1.0_dp + max(abs(ala), abs(albm)))*sb, sb, y1, y2, ier, rel)
-    if (failed(ier)) return
-    alba = dugl3(fi2, pid2, y1)
-    vba = abs(y1)
-    albbm = dugl4(fim, pi, y2)
-    vbbm = abs(y2)
-    w2 = domega(rz2, vba, alba - fi2)
-    call dsmvkt(va, ala, vba, alba, vb, alb)
-    ier = settle(ier, rel, [vba, vbbm, vb, w2])
+    if (printed_mode == 0) then
+      call dskor2_rrp(va, ala, vbm, albm, rz2, fi2, fim, vba, alba, vbbm, albbm, vb, alb, &
+                      w2, ier)                           ! the kind-2 velocity stage
+    else
+      vba = 0.0_dp; alba = 0.0_dp; vbbm = 0.0_dp; albbm = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp
+      w2 = 0.0_dp
+      sb = abs(va) + abs(vbm)
+      call solve2e(cos(fi2 + pid2), -cos(fim), sin(fi2 + pid2), -sin(fim), &
+                   vbm*cos(albm) - va*cos(ala), vbm*sin(albm) - va*sin(ala), &
+                   4.0_dp*uround*(2.0_dp + max(abs(fi2), abs(fim))), &
+                   4.0_dp*uround*(1.0_dp + max(abs(ala), abs(albm)))*sb, sb, y1, y2, ier, rel)
+      if (failed(ier)) return
+      alba = dugl3(fi2, pid2, y1)
+      vba = abs(y1)
+      albbm = dugl4(fim, pi, y2)
+      vbbm = abs(y2)
+      w2 = domega(rz2, vba, alba - fi2)
+      call dsmvkt(va, ala, vba, alba, vb, alb)
+      ier = settle(ier, rel, [vba, vbbm, vb, w2])
+
+    end if
   end subroutine dskor2
 
   ! IV.7 DSKOR3, L1805-1854 (Table 13, Fig. 21).  Kind 3 velocities:
@@ -576,27 +592,33 @@ contains
     real(dp), intent(out) :: va3a, ala3a, va3c, ala3c, va3, ala3, w3
     integer, intent(out) :: ier
     real(dp) :: rzac, fica, y1, y2, sb, rel
-    va3a = 0.0_dp; ala3a = 0.0_dp; va3c = 0.0_dp; ala3c = 0.0_dp; va3 = 0.0_dp; ala3 = 0.0_dp
-    w3 = 0.0_dp
-    rzac = norm2d(xa - xc, ya - yc)
-    if (rzac == 0.0_dp) then
-      ier = st_singular
-      return
+    if (printed_mode == 0) then
+      call dskor3_rpr(xa, ya, xc, yc, va, ala, vc, alc, fi3, va3a, ala3a, va3c, ala3c, &
+                      va3, ala3, w3, ier)                ! the kind-3 velocity stage
+    else
+      va3a = 0.0_dp; ala3a = 0.0_dp; va3c = 0.0_dp; ala3c = 0.0_dp; va3 = 0.0_dp; ala3 = 0.0_dp
+      w3 = 0.0_dp
+      rzac = norm2d(xa - xc, ya - yc)
+      if (rzac == 0.0_dp) then
+        ier = st_singular
+        return
+      end if
+      fica = dugl2(xc, yc, xa, ya)
+      sb = abs(va) + abs(vc)
+      call solve2e(cos(fi3), -cos(fica + pid2), sin(fi3), -sin(fica + pid2), &
+                   vc*cos(alc) - va*cos(ala), vc*sin(alc) - va*sin(ala), &
+                   4.0_dp*uround*(2.0_dp + max(abs(fi3), abs(fica))), &
+                   4.0_dp*uround*(1.0_dp + max(abs(ala), abs(alc)))*sb, sb, y1, y2, ier, rel)
+      if (failed(ier)) return
+      ala3a = dugl4(fi3, pi, y1)
+      va3a = abs(y1)
+      ala3c = dugl3(fica, pid2, y2)
+      va3c = abs(y2)
+      w3 = domega(rzac, va3c, ala3c - fi3)
+      call dsmvkt(va, ala, va3a, ala3a, va3, ala3)
+      ier = settle(ier, rel, [va3a, va3c, va3, w3])
+
     end if
-    fica = dugl2(xc, yc, xa, ya)
-    sb = abs(va) + abs(vc)
-    call solve2e(cos(fi3), -cos(fica + pid2), sin(fi3), -sin(fica + pid2), &
-                 vc*cos(alc) - va*cos(ala), vc*sin(alc) - va*sin(ala), &
-                 4.0_dp*uround*(2.0_dp + max(abs(fi3), abs(fica))), &
-                 4.0_dp*uround*(1.0_dp + max(abs(ala), abs(alc)))*sb, sb, y1, y2, ier, rel)
-    if (failed(ier)) return
-    ala3a = dugl4(fi3, pi, y1)
-    va3a = abs(y1)
-    ala3c = dugl3(fica, pid2, y2)
-    va3c = abs(y2)
-    w3 = domega(rzac, va3c, ala3c - fi3)
-    call dsmvkt(va, ala, va3a, ala3a, va3, ala3)
-    ier = settle(ier, rel, [va3a, va3c, va3, w3])
   end subroutine dskor3
 
   ! IV.8 DSKOR4, L1879-1918 (Table 14, Fig. 22).  Kind 4 velocities:
@@ -846,9 +868,15 @@ contains
     real(dp), intent(in) :: aa, ba, abm, bvm, abk, bvk, rz2, fi2, w2, fim, aaa
     real(dp), intent(out) :: abat, vbat, abvm, bvbm, e2, ab, bb
     integer, intent(out) :: ier
-    ! the turning side A-B (a_A, link AB), the sliding side the guide (a_BM, Coriolis)
-    call turn_slide(aa, ba, rz2, fi2, w2, abm, bvm, abk, bvk, fim, .true., &
-                    abat, vbat, abvm, bvbm, e2, ab, bb, ier)
+    if (printed_mode == 0) then
+      call duskr2_rrp(aa, ba, abm, bvm, abk, bvk, rz2, fi2, w2, fim, abat, vbat, abvm, &
+                      bvbm, e2, ab, bb, ier)             ! the kind-2 acceleration stage
+    else
+      ! the turning side A-B (a_A, link AB), the sliding side the guide (a_BM, Coriolis)
+      call turn_slide(aa, ba, rz2, fi2, w2, abm, bvm, abk, bvk, fim, .true., &
+                      abat, vbat, abvm, bvbm, e2, ab, bb, ier)
+
+    end if
   end subroutine duskr2
 
   ! IV.12 DUSKR3, L2150-2184 (Table 18, Fig. 26).  Kind 3 accelerations:
@@ -869,9 +897,15 @@ contains
     real(dp), intent(in) :: aa, ba, ac, bc, fi3, w3, rzac, fica, aa3ak, ba3ak, aaa
     real(dp), intent(out) :: aa3ar, ba3ar, aa3ct, ba3ct, e3, aa3, ba3
     integer, intent(out) :: ier
-    ! the turning side C-A3 (a_C, C -> A on link 3), the sliding side A (a_A, Coriolis)
-    call turn_slide(ac, bc, rzac, fica, w3, aa, ba, aa3ak, ba3ak, fi3, .false., &
-                    aa3ct, ba3ct, aa3ar, ba3ar, e3, aa3, ba3, ier)
+    if (printed_mode == 0) then
+      call duskr3_rpr(aa, ba, ac, bc, fi3, w3, rzac, fica, aa3ak, ba3ak, aa3ar, ba3ar, &
+                      aa3ct, ba3ct, e3, aa3, ba3, ier)   ! the kind-3 acceleration stage
+    else
+      ! the turning side C-A3 (a_C, C -> A on link 3), the sliding side A (a_A, Coriolis)
+      call turn_slide(ac, bc, rzac, fica, w3, aa, ba, aa3ak, ba3ak, fi3, .false., &
+                      aa3ct, ba3ct, aa3ar, ba3ar, e3, aa3, ba3, ier)
+
+    end if
   end subroutine duskr3
 
   ! DUSKR2 and DUSKR3 solve one equation (written once here): a point reached two ways,
@@ -1345,96 +1379,274 @@ contains
     real(dp) :: dc, da, sb, relv, rela, ev, est, c2, s2, n2x, n2y, vax, vay, vmx, vmy, tx, ty
     real(dp) :: ux, uy, kx, ky, wx, wy, m2x, m2y, amx, amy, aax, aay
     integer :: st2, kbm
-    xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp; vbbm = 0.0_dp
-    albbm = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; aban = 0.0_dp; abk = 0.0_dp
-    bbk = 0.0_dp; abat = 0.0_dp; bbat = 0.0_dp; abbm = 0.0_dp; bbbm = 0.0_dp; ab = 0.0_dp
-    bb = 0.0_dp; e2 = 0.0_dp
-    ier = st_ok
+    if (printed_mode == 0) then
+      call dknma2_rrp(xa, ya, xk, yk, fim, rz2, rz3, eta, va, ala, wm, vbm, albm, aa, ba, &
+                      abm, bbm, p, analog, xb, yb, fi2, vba, alba, vbbm, albbm, vb, alb, &
+                      w2, aban, abk, bbk, abat, bbat, abbm, bbbm, ab, bb, e2, ier)
+                                                         ! the kind-2 stages
+    else
+      xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp; vbbm = 0.0_dp
+      albbm = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; aban = 0.0_dp; abk = 0.0_dp
+      bbk = 0.0_dp; abat = 0.0_dp; bbat = 0.0_dp; abbm = 0.0_dp; bbbm = 0.0_dp; ab = 0.0_dp
+      bb = 0.0_dp; e2 = 0.0_dp
+      ier = st_ok
+      if (.not. (rz2 > 0.0_dp .and. rz2 <= huge(rz2))) then
+        ier = st_assembly
+        return
+      end if
+      cm = cos(fim)
+      sm = sin(fim)
+      dx = xa - xk
+      dy = ya - yk
+      so = -dx*sm + dy*cm                              ! E-DKNMA2-3: signed offset of A
+      yb1 = rz3*sin(eta)
+      c = (so - yb1)/rz2
+      if (abs(c) > 1.0_dp) then
+        if (abs(c) - 1.0_dp > 8.0_dp*epsilon(1.0_dp)) then
+          ier = st_assembly
+          return
+        end if
+        c = sign(1.0_dp, c)
+      end if
+      xb1 = book_sign(1.0_dp, p)*rz2*sqrt((1.0_dp - c)*(1.0_dp + c))   ! = P*RZ2*SIN(ARCOS(c))
+      ! B - A = XB1*e(FIM) + (YB1 - SO)*e(FIM + pi/2): the book's B = O' + rotated (XB1, YB1),
+      ! taken relative to A so that no digit is lost far from the origin
+      bxa = xb1*cm - (yb1 - so)*sm
+      bya = xb1*sm + (yb1 - so)*cm
+      xb = xa + bxa
+      yb = ya + bya
+      fi2 = dugl2(0.0_dp, 0.0_dp, bxa, bya)
+      dc = 4.0_dp*uround*(abs(so) + abs(yb1) + abs(rz3) + rz2 &
+                          + (1.0_dp + abs(fim) + abs(eta))*(abs(dx) + abs(dy)))/rz2
+      da = angle_sensitivity(c, dc) + 4.0_dp*uround*(2.0_dp + abs(fim) + abs(fi2))
+      est = da
+      ! e(FI2) = (B - A)/RZ2; each direction's cosine and sine once (turn; issue 9)
+      c2 = bxa/rz2
+      s2 = bya/rz2
+      call turn(fi2 + pi/2.0_dp, c2, s2, 1, n2x, n2y)
+      call components(va, ala, vax, vay)
+      call components(vbm, albm, vmx, vmy)
+      sb = abs(va) + abs(vbm)
+      call solve2e(n2x, -cm, n2y, -sm, vmx - vax, vmy - vay, da, &
+                   4.0_dp*uround*(1.0_dp + max(abs(ala), abs(albm)))*sb, sb, y1, y2, ier, relv)
+      if (failed(ier)) return
+      est = max(est, relv)
+      ev = relv*max(norm2d(y1, y2), sb/sqrt(2.0_dp))
+      vba = abs(y1)
+      alba = dugl3(fi2, pi/2.0_dp, y1)
+      vbbm = abs(y2)
+      albbm = dugl4(fim, pi, y2)
+      kbm = 0                                          ! ALBBM = FIM + KBM*PI/2
+      if (y2 < 0.0_dp) kbm = -2
+      call turn(alba, c2, s2, quarter(y1), tx, ty)     ! e(ALBA)
+      vbx = vax + vba*tx
+      vby = vay + vba*ty
+      vb = norm2d(vbx, vby)
+      alb = dugl5(vbx, vby)
+      w2 = domega(rz2, vba, alba - fi2)
+      if (analog /= 1.0_dp) then
+        aban = w2**2*rz2
+        abk = 2.0_dp*vbbm*abs(wm)
+        bbk = dugl3(albbm, pi/2.0_dp, wm)
+        sb = abs(aa) + abs(abm) + aban + abk
+        call turn(albbm, cm, sm, kbm, ux, uy)            ! e(ALBBM)
+        call turn(bbk, cm, sm, kbm + quarter(wm), kx, ky) ! e(BBK)
+        call turn(fi2 + pi, c2, s2, 2, m2x, m2y)         ! e(FI2 + PI)
+        call components(abm, bbm, amx, amy)
+        call components(aa, ba, aax, aay)
+        call solve2e(tx, -ux, ty, -uy, &
+                     amx + abk*kx - aax - aban*m2x, &
+                     amy + abk*ky - aay - aban*m2y, da, &
+                     4.0_dp*uround*(6.0_dp + max(abs(ba), abs(bbm), abs(fim), abs(fi2)))*sb &
+                     + ev/rz2*(2.0_dp*abs(y1) + ev) + 2.0_dp*abs(wm)*ev, sb, y1, y2, st2, rela)
+        ier = st2
+        if (failed(ier)) return
+        est = max(est, rela)
+        abat = abs(y1)
+        bbat = dugl4(alba, pi, y1)
+        abbm = abs(y2)
+        bbbm = dugl4(albbm, pi, y2)
+        call turn(bbbm, cm, sm, kbm + quarter(y2) - 1, wx, wy)  ! e(BBBM)
+        abx = amx + abk*kx + abbm*wx
+        aby = amy + abk*ky + abbm*wy
+        ab = norm2d(abx, aby)
+        bb = dugl5(abx, aby)
+        e2 = domega(rz2, abat, sin(bbat - fi2))          ! E-DKNMA2-4: book BBAT - FI2
+      end if
+      ier = settle(ier, est, [xb, yb, vba, vbbm, vb, w2, aban, abk, abat, abbm, ab, e2])
+
+    end if
+  end subroutine dknma2
+
+  ! The kind-2 routines' corrected mode: the book's interface over the RRP stages of
+  ! groups.f90 (rrp_position, rrp_system, rrp_velocity, rrp_acceleration), which
+  ! sarkp.Mechanism's rrp_kernel runs too.  The book gives the guide's motion at the point
+  ! under B (VBM, ALBM; ABM, BBM) where the kernel carries it from K: the adapters call the
+  ! stages, the same sequence as the kernel past its carrying.  Polar inputs become
+  ! components, the stages' results the book's (modulus, direction) pairs: a relative
+  ! velocity or acceleration along the direction it is drawn in (DUGL3, DUGL4), turned
+  ! by its sign; FI2 in the routine's range.  A failure: every output 0.  The status is
+  ! the policy's for the stages' estimate.
+
+  ! DPRM2: B on the side of A (the book's offset RZ3*SIN(T) towards A: along the left
+  ! normal when A is on the left), ahead of the foot along FIM (the kernel's branch +1).
+  subroutine dprm2_rrp(xa, ya, xk, yk, fim, rz2, rz3, t, xb, yb, fi2, ier)
+    real(dp), intent(in) :: xa, ya, xk, yk, fim, rz2, rz3, t
+    real(dp), intent(out) :: xb, yb, fi2
+    integer, intent(out) :: ier
+    real(dp) :: ug(2), so, off, x_b(2), u2(2), sl, est
+    xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp
     if (.not. (rz2 > 0.0_dp .and. rz2 <= huge(rz2))) then
       ier = st_assembly
       return
     end if
-    cm = cos(fim)
-    sm = sin(fim)
-    dx = xa - xk
-    dy = ya - yk
-    so = -dx*sm + dy*cm                              ! E-DKNMA2-3: signed offset of A
-    yb1 = rz3*sin(eta)
-    c = (so - yb1)/rz2
-    if (abs(c) > 1.0_dp) then
-      if (abs(c) - 1.0_dp > 8.0_dp*epsilon(1.0_dp)) then
-        ier = st_assembly
-        return
-      end if
-      c = sign(1.0_dp, c)
+    ug = [cos(fim), sin(fim)]
+    so = -(xa - xk)*ug(2) + (ya - yk)*ug(1)       ! signed offset of A from the guide axis
+    off = rz3*sin(t)
+    if (so == 0.0_dp .and. off /= 0.0_dp) then
+      ier = st_singular                           ! A on the guide: side of the offset undefined
+      return
     end if
-    xb1 = book_sign(1.0_dp, p)*rz2*sqrt((1.0_dp - c)*(1.0_dp + c))   ! = P*RZ2*SIN(ARCOS(c))
-    ! B - A = XB1*e(FIM) + (YB1 - SO)*e(FIM + pi/2): the book's B = O' + rotated (XB1, YB1),
-    ! taken relative to A so that no digit is lost far from the origin
-    bxa = xb1*cm - (yb1 - so)*sm
-    bya = xb1*sm + (yb1 - so)*cm
-    xb = xa + bxa
-    yb = ya + bya
-    fi2 = dugl2(0.0_dp, 0.0_dp, bxa, bya)
-    dc = 4.0_dp*uround*(abs(so) + abs(yb1) + abs(rz3) + rz2 &
-                        + (1.0_dp + abs(fim) + abs(eta))*(abs(dx) + abs(dy)))/rz2
-    da = angle_sensitivity(c, dc) + 4.0_dp*uround*(2.0_dp + abs(fim) + abs(fi2))
-    est = da
-    ! e(FI2) = (B - A)/RZ2; each direction's cosine and sine once (turn; issue 9)
-    c2 = bxa/rz2
-    s2 = bya/rz2
-    call turn(fi2 + pi/2.0_dp, c2, s2, 1, n2x, n2y)
-    call components(va, ala, vax, vay)
-    call components(vbm, albm, vmx, vmy)
-    sb = abs(va) + abs(vbm)
-    call solve2e(n2x, -cm, n2y, -sm, vmx - vax, vmy - vay, da, &
-                 4.0_dp*uround*(1.0_dp + max(abs(ala), abs(albm)))*sb, sb, y1, y2, ier, relv)
+    call rrp_position([xa, ya], [xk, yk], ug, rz2, sign(1.0_dp, so)*off, 1.0_dp, x_b, u2, sl, &
+                      ier, est)
     if (failed(ier)) return
-    est = max(est, relv)
-    ev = relv*max(norm2d(y1, y2), sb/sqrt(2.0_dp))
-    vba = abs(y1)
-    alba = dugl3(fi2, pi/2.0_dp, y1)
-    vbbm = abs(y2)
-    albbm = dugl4(fim, pi, y2)
-    kbm = 0                                          ! ALBBM = FIM + KBM*PI/2
-    if (y2 < 0.0_dp) kbm = -2
-    call turn(alba, c2, s2, quarter(y1), tx, ty)     ! e(ALBA)
-    vbx = vax + vba*tx
-    vby = vay + vba*ty
-    vb = norm2d(vbx, vby)
-    alb = dugl5(vbx, vby)
-    w2 = domega(rz2, vba, alba - fi2)
+    xb = x_b(1)
+    yb = x_b(2)
+    fi2 = dugl5(u2(1), u2(2))
+    ier = settle(ier, est, [xb, yb])
+  end subroutine dprm2_rrp
+
+  ! DSKOR2: the velocity stage on the directions FI2, FIM (their rounding, 4u (2 + |FI|),
+  ! the error of the system's directions, as the book routine's).
+  subroutine dskor2_rrp(va, ala, vbm, albm, rz2, fi2, fim, vba, alba, vbbm, albbm, vb, alb, &
+                        w2, ier)
+    real(dp), intent(in) :: va, ala, vbm, albm, rz2, fi2, fim
+    real(dp), intent(out) :: vba, alba, vbbm, albbm, vb, alb, w2
+    integer, intent(out) :: ier
+    real(dp) :: u2(2), ug(2), v_a(2), v_g(2), v_b(2), om2, sv, ev, est
+    type(cram) :: f
+    vba = 0.0_dp; alba = 0.0_dp; vbbm = 0.0_dp; albbm = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp
+    w2 = 0.0_dp
+    u2 = [cos(fi2), sin(fi2)]
+    ug = [cos(fim), sin(fim)]
+    call components(va, ala, v_a(1), v_a(2))
+    call components(vbm, albm, v_g(1), v_g(2))
+    est = 0.0_dp
+    call rrp_system(u2, ug, f)
+    call rrp_velocity(f, v_a, v_g, ug, 1.0_dp/rz2, 4.0_dp*uround*(2.0_dp + max(abs(fi2), &
+                      abs(fim))), v_b, om2, sv, ev, ier, est)
+    if (failed(ier)) return
+    w2 = om2 + 0.0_dp                             ! (-0 is +0, as DOMEGA gives it)
+    vba = abs(om2)*rz2
+    alba = dugl3(fi2, pid2, om2)
+    vbbm = abs(sv)
+    albbm = dugl4(fim, pi, sv)
+    vb = norm2d(v_b(1), v_b(2))
+    alb = dugl5(v_b(1), v_b(2))
+    ier = settle(ier, est, [vba, vbbm, vb, w2])
+  end subroutine dskor2_rrp
+
+  ! DUSKR2: the acceleration stage; the Coriolis term is the caller's (ABK, BVK), W2 is
+  ! taken as exact (no velocity error carried).
+  subroutine duskr2_rrp(aa, ba, abm, bvm, abk, bvk, rz2, fi2, w2, fim, abat, vbat, abvm, &
+                        bvbm, e2, ab, bb, ier)
+    real(dp), intent(in) :: aa, ba, abm, bvm, abk, bvk, rz2, fi2, w2, fim
+    real(dp), intent(out) :: abat, vbat, abvm, bvbm, e2, ab, bb
+    integer, intent(out) :: ier
+    real(dp) :: u2(2), ug(2), a_a(2), a_g(2), a_k(2), a_b(2), ep2, sa, est
+    type(cram) :: f
+    abat = 0.0_dp; vbat = 0.0_dp; abvm = 0.0_dp; bvbm = 0.0_dp; e2 = 0.0_dp; ab = 0.0_dp
+    bb = 0.0_dp
+    u2 = [cos(fi2), sin(fi2)]
+    ug = [cos(fim), sin(fim)]
+    call components(aa, ba, a_a(1), a_a(2))
+    call components(abm, bvm, a_g(1), a_g(2))
+    call components(abk, bvk, a_k(1), a_k(2))
+    est = 0.0_dp
+    call rrp_system(u2, ug, f)
+    call rrp_acceleration(f, a_a, a_g + a_k, 0.0_dp, u2, ug, rz2, 1.0_dp/rz2, w2, 0.0_dp, &
+                          4.0_dp*uround*(2.0_dp + max(abs(fi2), abs(fim))), a_b, ep2, sa, ier, est)
+    if (failed(ier)) return
+    e2 = ep2 + 0.0_dp
+    abat = abs(ep2)*rz2
+    vbat = dugl3(fi2, pid2, ep2)
+    abvm = abs(sa)
+    bvbm = dugl4(fim, pi, sa)
+    ab = norm2d(a_b(1), a_b(2))
+    bb = dugl5(a_b(1), a_b(2))
+    ier = settle(ier, est, [abat, abvm, e2, ab])
+  end subroutine duskr2_rrp
+
+  ! DKNMA2: the stages in the kernel's order; the guide's motion at B is the book's
+  ! (VBM, ALBM; ABM, BBM), its Coriolis term 2 WM s' k x e(FIM) (ABK, BBK as the book
+  ! draws it).  Q = P is the kernel's branch; the offset RZ3*SIN(ETA) along the left
+  ! normal is the kernel's.  FI2 in (-pi, pi] (DUGL2); the relative velocity and
+  ! acceleration of B about A along e(FI2 + pi/2) turned by the sign of W2 (ALBA) and the
+  ! tangential acceleration along ALBA turned by its sign (BBAT); the sliding ones along
+  ! FIM turned by the sign of s' (ALBBM) and s'' along ALBBM (BBBM), as printed.
+  subroutine dknma2_rrp(xa, ya, xk, yk, fim, rz2, rz3, eta, va, ala, wm, vbm, albm, aa, ba, &
+                        abm, bbm, p, analog, xb, yb, fi2, vba, alba, vbbm, albbm, vb, alb, &
+                        w2, aban, abk, bbk, abat, bbat, abbm, bbbm, ab, bb, e2, ier)
+    real(dp), intent(in) :: xa, ya, xk, yk, fim, rz2, rz3, eta, va, ala, wm, vbm, albm, aa
+    real(dp), intent(in) :: ba, abm, bbm, p, analog
+    real(dp), intent(out) :: xb, yb, fi2, vba, alba, vbbm, albbm, vb, alb, w2, aban, abk, bbk
+    real(dp), intent(out) :: abat, bbat, abbm, bbbm, ab, bb, e2
+    integer, intent(out) :: ier
+    real(dp) :: ug(2), x_b(2), u2(2), sl, est, v_a(2), v_g(2), v_b(2), om2, sv, ev
+    real(dp) :: a_a(2), a_g(2), a_b(2), ep2, sa, rl2, dang
+    type(cram) :: f
+    xb = 0.0_dp; yb = 0.0_dp; fi2 = 0.0_dp; vba = 0.0_dp; alba = 0.0_dp; vbbm = 0.0_dp
+    albbm = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp; w2 = 0.0_dp; aban = 0.0_dp; abk = 0.0_dp
+    bbk = 0.0_dp; abat = 0.0_dp; bbat = 0.0_dp; abbm = 0.0_dp; bbbm = 0.0_dp; ab = 0.0_dp
+    bb = 0.0_dp; e2 = 0.0_dp
+    if (.not. (rz2 > 0.0_dp .and. rz2 <= huge(rz2))) then
+      ier = st_assembly
+      return
+    end if
+    rl2 = 1.0_dp/rz2
+    ug = [cos(fim), sin(fim)]
+    call rrp_position([xa, ya], [xk, yk], ug, rz2, rz3*sin(eta), book_sign(1.0_dp, p), x_b, &
+                      u2, sl, ier, est)
+    if (failed(ier)) return
+    dang = est + 4.0_dp*uround
+    call components(va, ala, v_a(1), v_a(2))
+    call components(vbm, albm, v_g(1), v_g(2))
+    call rrp_system(u2, ug, f)
+    call rrp_velocity(f, v_a, v_g, ug, rl2, dang, v_b, om2, sv, ev, ier, est)
+    if (failed(ier)) return
     if (analog /= 1.0_dp) then
-      aban = w2**2*rz2
-      abk = 2.0_dp*vbbm*abs(wm)
-      bbk = dugl3(albbm, pi/2.0_dp, wm)
-      sb = abs(aa) + abs(abm) + aban + abk
-      call turn(albbm, cm, sm, kbm, ux, uy)            ! e(ALBBM)
-      call turn(bbk, cm, sm, kbm + quarter(wm), kx, ky) ! e(BBK)
-      call turn(fi2 + pi, c2, s2, 2, m2x, m2y)         ! e(FI2 + PI)
-      call components(abm, bbm, amx, amy)
-      call components(aa, ba, aax, aay)
-      call solve2e(tx, -ux, ty, -uy, &
-                   amx + abk*kx - aax - aban*m2x, &
-                   amy + abk*ky - aay - aban*m2y, da, &
-                   4.0_dp*uround*(6.0_dp + max(abs(ba), abs(bbm), abs(fim), abs(fi2)))*sb &
-                   + ev/rz2*(2.0_dp*abs(y1) + ev) + 2.0_dp*abs(wm)*ev, sb, y1, y2, st2, rela)
-      ier = st2
+      call components(aa, ba, a_a(1), a_a(2))
+      call components(abm, bbm, a_g(1), a_g(2))
+      a_g = a_g + (2.0_dp*wm*sv)*[-ug(2), ug(1)]
+      call rrp_acceleration(f, a_a, a_g, 2.0_dp*abs(wm)*ev, u2, ug, rz2, rl2, om2, ev, dang, &
+                            a_b, ep2, sa, ier, est)
       if (failed(ier)) return
-      est = max(est, rela)
-      abat = abs(y1)
-      bbat = dugl4(alba, pi, y1)
-      abbm = abs(y2)
-      bbbm = dugl4(albbm, pi, y2)
-      call turn(bbbm, cm, sm, kbm + quarter(y2) - 1, wx, wy)  ! e(BBBM)
-      abx = amx + abk*kx + abbm*wx
-      aby = amy + abk*ky + abbm*wy
-      ab = norm2d(abx, aby)
-      bb = dugl5(abx, aby)
-      e2 = domega(rz2, abat, sin(bbat - fi2))          ! E-DKNMA2-4: book BBAT - FI2
+    end if
+    xb = x_b(1)
+    yb = x_b(2)
+    fi2 = atan2(u2(2), u2(1))
+    if (fi2 == -pi) fi2 = pi                      ! the range (-pi, pi] of DUGL2
+    w2 = om2 + 0.0_dp                             ! (-0 is +0, as DOMEGA gives it)
+    vba = abs(om2)*rz2
+    alba = dugl3(fi2, pid2, om2)
+    vbbm = abs(sv)
+    albbm = dugl4(fim, pi, sv)
+    vb = norm2d(v_b(1), v_b(2))
+    alb = dugl5(v_b(1), v_b(2))
+    if (analog /= 1.0_dp) then
+      aban = om2**2*rz2
+      abk = 2.0_dp*vbbm*abs(wm)
+      bbk = dugl3(albbm, pid2, wm)
+      e2 = ep2 + 0.0_dp
+      abat = abs(ep2)*rz2
+      bbat = dugl4(alba, pi, book_sign(1.0_dp, om2)*ep2)
+      abbm = abs(sa)
+      bbbm = dugl4(albbm, pi, book_sign(1.0_dp, sv)*sa)
+      ab = norm2d(a_b(1), a_b(2))
+      bb = dugl5(a_b(1), a_b(2))
     end if
     ier = settle(ier, est, [xb, yb, vba, vbbm, vb, w2, aban, abk, abat, abbm, ab, e2])
-  end subroutine dknma2
+  end subroutine dknma2_rrp
 
   ! IV.18 DKNMA3, L2749-2829.  Kind 3 (RPR, slotted lever).
   ! B is the point of the axis of link 3 with AB = RZ2 and angle ABC = ETA (ETA = pi/2: B is
@@ -1469,93 +1681,283 @@ contains
     real(dp) :: rac, fik, s, ugbac, angc, q, bxa, bya, y1, y2, prx, pry, aa3x, aa3y
     real(dp) :: ds, da, sb, relv, rela, ev, ew, est
     integer :: st2
+    if (printed_mode == 0) then
+      call dknma3_rpr(xa, ya, xc, yc, rz2, eta, va, ala, vc, alc, aa, ba, ac, bc, p, &
+                      analog, xb, yb, rzbc, fi3, var, alar, vac, alac, w3, va3, ala3, &
+                      aak, bak, aar, bar, aact, bact, aa3, ba3, e3, aacn, ier)
+                                                         ! the kind-3 stages
+    else
+      xb = 0.0_dp; yb = 0.0_dp; rzbc = 0.0_dp; fi3 = 0.0_dp; var = 0.0_dp; alar = 0.0_dp
+      vac = 0.0_dp; alac = 0.0_dp; w3 = 0.0_dp; va3 = 0.0_dp; ala3 = 0.0_dp; aak = 0.0_dp
+      bak = 0.0_dp; aar = 0.0_dp; bar = 0.0_dp; aact = 0.0_dp; bact = 0.0_dp; aa3 = 0.0_dp
+      ba3 = 0.0_dp; e3 = 0.0_dp; aacn = 0.0_dp
+      ier = st_ok
+      rac = norm2d(xa - xc, ya - yc)
+      if (rac == 0.0_dp) then
+        ier = st_singular
+        return
+      end if
+      fik = dugl1(xa, ya, xc, yc)                   ! E-DKNMA1-2: direction A->C in [0, 2 pi)
+      ! triangle A B C: angle B = ETA, AB = RZ2, AC = RAC; sine law: sin(angle C) = s
+      s = rz2/rac*sin(eta)
+      if (abs(s) > 1.0_dp) then
+        if (abs(s) - 1.0_dp > 8.0_dp*epsilon(1.0_dp)) then
+          ier = st_assembly
+          return
+        end if
+        s = sign(1.0_dp, s)
+      end if
+      angc = asin(s)
+      ugbac = pi - eta - angc
+      ! E-DKNMA3-4: for an obtuse ETA and RZ2 > AC the angles ETA and asin(s) already exceed
+      ! pi: no triangle (the book would put B where angle ABC = pi - ETA).
+      if (ugbac < 0.0_dp) then
+        if (ugbac < -8.0_dp*epsilon(1.0_dp)*(pi + abs(eta))) then
+          ier = st_assembly
+          return
+        end if
+        ugbac = 0.0_dp
+      end if
+      q = book_sign(1.0_dp, p)
+      ! B = A + RZ2 e(FIK + P*UGBAC) (the book's XB1, YB1 rotated by FIK), relative to A
+      bxa = rz2*cos(fik + q*ugbac)
+      bya = rz2*sin(fik + q*ugbac)
+      xb = xa + bxa
+      yb = ya + bya
+      rzbc = norm2d(bxa + (xa - xc), bya + (ya - yc))
+      ! E-DKNMA3-5: the axis of link 3 from the triangle's angle at C, C->B = C->A - P*angle C
+      ! (the book's DUGL2(XC, YC, XB, YB) loses digits as CB shrinks and fails at B = C)
+      fi3 = wrap_pi(fik + pi - q*angc)
+      ds = 4.0_dp*uround*(abs(s)*(2.0_dp + abs(eta)) + abs(rz2/rac)*abs(eta))
+      da = angle_sensitivity(s, ds) + 4.0_dp*uround*(4.0_dp + abs(fik) + abs(eta))
+      est = da
+      sb = abs(va) + abs(vc)
+      call solve2e(cos(fi3), -cos((fik + pi) + pid2), sin(fi3), -sin((fik + pi) + pid2), &
+                   vc*cos(alc) - va*cos(ala), vc*sin(alc) - va*sin(ala), da, &
+                   4.0_dp*uround*(1.0_dp + max(abs(ala), abs(alc)))*sb, sb, y1, y2, ier, relv)
+      if (failed(ier)) return
+      est = max(est, relv)
+      ev = relv*max(norm2d(y1, y2), sb/sqrt(2.0_dp))
+      var = abs(y1)
+      alar = dugl4(fi3, pi, y1)
+      vac = abs(y2)
+      alac = dugl3(fik + pi, pid2, y2)
+      w3 = domega(rac, vac, alac - (fik + pi))
+      prx = vc*cos(alc) + vac*cos(alac)
+      pry = vc*sin(alc) + vac*sin(alac)
+      va3 = norm2d(prx, pry)
+      ala3 = dugl5(prx, pry)
+      if (analog /= 1.0_dp) then
+        aak = 2.0_dp*var*abs(w3)
+        bak = dugl3(alar, pid2, w3)
+        aacn = w3**2*rac
+        ew = ev/rac                                 ! error of W3
+        sb = abs(aa) + abs(ac) + aacn + aak
+        call solve2e(cos(alar), -cos((fik + pi) + pid2), sin(alar), -sin((fik + pi) + pid2), &
+                     ac*cos(bc) + aacn*cos(fik) - aa*cos(ba) - aak*cos(bak), &
+                     ac*sin(bc) + aacn*sin(fik) - aa*sin(ba) - aak*sin(bak), da, &
+                     4.0_dp*uround*(6.0_dp + max(abs(ba), abs(bc), abs(fik), abs(fi3)))*sb &
+                     + (2.0_dp*abs(w3)*ew + ew*ew)*rac + 2.0_dp*(abs(w3)*ev + var*ew + ev*ew), &
+                     sb, y1, y2, st2, rela)
+        ier = st2
+        if (failed(ier)) return
+        est = max(est, rela)
+        aar = abs(y1)
+        bar = dugl4(alar, pi, y1)                     ! E-DKNMA3-3: book DUGL4(ALAR, PID2, Y(1))
+        aact = abs(y2)
+        bact = dugl3(fik + pi, pid2, y2)
+        aa3x = aa*cos(ba) + aak*cos(bak) + aar*cos(bar)
+        aa3y = aa*sin(ba) + aak*sin(bak) + aar*sin(bar)
+        aa3 = norm2d(aa3x, aa3y)
+        ba3 = dugl5(aa3x, aa3y)
+        e3 = domega(rac, aact, bact - (fik + pi))
+      end if
+      ier = settle(ier, est, [xb, yb, rzbc, var, vac, w3, va3, aak, aar, aact, aa3, e3, aacn])
+
+    end if
+  end subroutine dknma3
+
+  ! The kind-3 routines' corrected mode: the book's interface over the RPR stages of
+  ! groups.f90 (rpr_position, rpr_system, rpr_velocity, rpr_acceleration), which
+  ! sarkp.Mechanism's rpr_kernel runs too.  The book's A3 is the point of link 3 at A: its
+  ! velocity v_A - s' u3 and acceleration a_C + e3 (A - C)_|_ - w3**2 (A - C); the book's
+  ! relative motion of A3 along the axis is the kernel's sliding of A reversed, its
+  ! Coriolis term the kernel's reversed.  A failure: every output 0.
+
+  ! The kernel's branch for the book's sign P (DPRM3's; DKNMA3 passes -P) and offset h:
+  ! the kernel's +1 puts B on the left of A -> C, i.e. turns C->B clockwise from C->A.
+  pure real(dp) function rpr_branch(p, h)
+    real(dp), intent(in) :: p, h
+    rpr_branch = -book_sign(1.0_dp, p)*book_sign(1.0_dp, h)
+  end function rpr_branch
+
+  ! DPRM3: FI3 = FICA + the angle from C->A to the axis C->B (the kernel's uc, u3), in the
+  ! book's range (within pi/2 of FICA).
+  subroutine dprm3_rpr(xa, ya, xc, yc, rz2, t, p, rzac, fi3, fica, ier)
+    real(dp), intent(in) :: xa, ya, xc, yc, rz2, t, p
+    real(dp), intent(out) :: rzac, fi3, fica
+    integer, intent(out) :: ier
+    real(dp) :: h, x_b(2), u3(2), uc(2), d, sl, eac, est
+    rzac = 0.0_dp; fi3 = 0.0_dp; fica = 0.0_dp
+    h = rz2*sin(t)
+    call rpr_position([xa, ya], [xc, yc], h, rpr_branch(p, h), x_b, u3, uc, d, sl, eac, &
+                      ier, est)
+    if (failed(ier)) then
+      if (d == 0.0_dp .and. h /= 0.0_dp) ier = st_assembly     ! A = C, the book's codes
+      return
+    end if
+    rzac = d
+    fica = dugl2(xc, yc, xa, ya)
+    fi3 = fica + atan2(uc(1)*u3(2) - uc(2)*u3(1), uc(1)*u3(1) + uc(2)*u3(2))
+    ier = settle(ier, est, [rzac])
+  end subroutine dprm3_rpr
+
+  ! DSKOR3: the velocity stage on the axis FI3 and A - C.
+  subroutine dskor3_rpr(xa, ya, xc, yc, va, ala, vc, alc, fi3, va3a, ala3a, va3c, ala3c, &
+                        va3, ala3, w3, ier)
+    real(dp), intent(in) :: xa, ya, xc, yc, va, ala, vc, alc, fi3
+    real(dp), intent(out) :: va3a, ala3a, va3c, ala3c, va3, ala3, w3
+    integer, intent(out) :: ier
+    real(dp) :: rzac, fica, uc(2), u3(2), v_a(2), v_c(2), v_b(2), om3, sv, ev, est, v3(2)
+    type(cram) :: f
+    va3a = 0.0_dp; ala3a = 0.0_dp; va3c = 0.0_dp; ala3c = 0.0_dp; va3 = 0.0_dp; ala3 = 0.0_dp
+    w3 = 0.0_dp
+    rzac = norm2d(xa - xc, ya - yc)
+    if (rzac == 0.0_dp) then
+      ier = st_singular
+      return
+    end if
+    fica = dugl2(xc, yc, xa, ya)
+    uc = [xa - xc, ya - yc]/rzac
+    u3 = [cos(fi3), sin(fi3)]
+    call components(va, ala, v_a(1), v_a(2))
+    call components(vc, alc, v_c(1), v_c(2))
+    est = 0.0_dp
+    call rpr_system(uc, u3, f)
+    call rpr_velocity(f, v_a, v_c, u3, rzac, 0.0_dp, 4.0_dp*uround*(2.0_dp + max(abs(fi3), &
+                      abs(fica))), v_b, om3, sv, ev, ier, est)
+    if (failed(ier)) return
+    va3a = abs(sv)
+    ala3a = dugl4(fi3, pi, -sv)
+    va3c = abs(om3)*rzac
+    ala3c = dugl3(fica, pid2, om3)
+    w3 = domega(rzac, va3c, ala3c - fi3)          ! the sign as printed (FI3 near FICA)
+    v3 = v_a - sv*u3
+    va3 = norm2d(v3(1), v3(2))
+    ala3 = dugl5(v3(1), v3(2))
+    ier = settle(ier, est, [va3a, va3c, va3, w3])
+  end subroutine dskor3_rpr
+
+  ! DUSKR3: the acceleration stage; the Coriolis term is the caller's (AA3AK, BA3AK, of A3
+  ! relative to A), W3 taken as exact.
+  subroutine duskr3_rpr(aa, ba, ac, bc, fi3, w3, rzac, fica, aa3ak, ba3ak, aa3ar, ba3ar, &
+                        aa3ct, ba3ct, e3, aa3, ba3, ier)
+    real(dp), intent(in) :: aa, ba, ac, bc, fi3, w3, rzac, fica, aa3ak, ba3ak
+    real(dp), intent(out) :: aa3ar, ba3ar, aa3ct, ba3ct, e3, aa3, ba3
+    integer, intent(out) :: ier
+    real(dp) :: uc(2), u3(2), a_a(2), a_c(2), a_k(2), a_b(2), ep3, sa, est, a3(2)
+    type(cram) :: f
+    aa3ar = 0.0_dp; ba3ar = 0.0_dp; aa3ct = 0.0_dp; ba3ct = 0.0_dp; e3 = 0.0_dp; aa3 = 0.0_dp
+    ba3 = 0.0_dp
+    uc = [cos(fica), sin(fica)]
+    u3 = [cos(fi3), sin(fi3)]
+    call components(aa, ba, a_a(1), a_a(2))
+    call components(ac, bc, a_c(1), a_c(2))
+    call components(aa3ak, ba3ak, a_k(1), a_k(2))
+    est = 0.0_dp
+    call rpr_system(uc, u3, f)
+    call rpr_acceleration(f, a_a, a_c, -a_k, 0.0_dp, uc, u3, rzac, 0.0_dp, w3, 0.0_dp, 0.0_dp, &
+                          4.0_dp*uround*(2.0_dp + max(abs(fica), abs(fi3))), a_b, ep3, sa, ier, &
+                          est)
+    if (failed(ier)) return
+    e3 = ep3 + 0.0_dp
+    aa3ar = abs(sa)
+    ba3ar = dugl4(fi3, pi, -sa)
+    aa3ct = abs(ep3)*rzac
+    ba3ct = dugl3(fica, pid2, ep3)
+    a3 = a_c + (ep3*rzac)*[-uc(2), uc(1)] - (w3**2*rzac)*uc
+    aa3 = norm2d(a3(1), a3(2))
+    ba3 = dugl5(a3(1), a3(2))
+    ier = settle(ier, est, [aa3ar, aa3ct, e3, aa3])
+  end subroutine duskr3_rpr
+
+  ! DKNMA3: the stages in the kernel's order (the kernel's B is the foot of A on the axis;
+  ! the book's B, where angle ABC = ETA, is RZ2*COS(ETA) beyond it along C->B).  FI3 in
+  ! (-pi, pi] (DUGL2).  The book's relative motion of A3 along the axis, drawn along FI3
+  ! turned by its sign (ALAR), its acceleration along ALAR turned by its sign (BAR).
+  subroutine dknma3_rpr(xa, ya, xc, yc, rz2, eta, va, ala, vc, alc, aa, ba, ac, bc, p, &
+                        analog, xb, yb, rzbc, fi3, var, alar, vac, alac, w3, va3, ala3, aak, &
+                        bak, aar, bar, aact, bact, aa3, ba3, e3, aacn, ier)
+    real(dp), intent(in) :: xa, ya, xc, yc, rz2, eta, va, ala, vc, alc, aa, ba, ac, bc, p
+    real(dp), intent(in) :: analog
+    real(dp), intent(out) :: xb, yb, rzbc, fi3, var, alar, vac, alac, w3, va3, ala3, aak, bak
+    real(dp), intent(out) :: aar, bar, aact, bact, aa3, ba3, e3, aacn
+    integer, intent(out) :: ier
+    real(dp) :: h, x_b(2), u3(2), uc(2), d, sl, eac, est, dang, fik, ce
+    real(dp) :: v_a(2), v_c(2), v_b(2), om3, sv, ev, v3(2), a_a(2), a_c(2), a_b(2), ep3, sa
+    real(dp) :: a3(2), y1
+    type(cram) :: f
     xb = 0.0_dp; yb = 0.0_dp; rzbc = 0.0_dp; fi3 = 0.0_dp; var = 0.0_dp; alar = 0.0_dp
     vac = 0.0_dp; alac = 0.0_dp; w3 = 0.0_dp; va3 = 0.0_dp; ala3 = 0.0_dp; aak = 0.0_dp
     bak = 0.0_dp; aar = 0.0_dp; bar = 0.0_dp; aact = 0.0_dp; bact = 0.0_dp; aa3 = 0.0_dp
     ba3 = 0.0_dp; e3 = 0.0_dp; aacn = 0.0_dp
-    ier = st_ok
-    rac = norm2d(xa - xc, ya - yc)
-    if (rac == 0.0_dp) then
-      ier = st_singular
-      return
-    end if
-    fik = dugl1(xa, ya, xc, yc)                   ! E-DKNMA1-2: direction A->C in [0, 2 pi)
-    ! triangle A B C: angle B = ETA, AB = RZ2, AC = RAC; sine law: sin(angle C) = s
-    s = rz2/rac*sin(eta)
-    if (abs(s) > 1.0_dp) then
-      if (abs(s) - 1.0_dp > 8.0_dp*epsilon(1.0_dp)) then
-        ier = st_assembly
-        return
-      end if
-      s = sign(1.0_dp, s)
-    end if
-    angc = asin(s)
-    ugbac = pi - eta - angc
-    ! E-DKNMA3-4: for an obtuse ETA and RZ2 > AC the angles ETA and asin(s) already exceed
-    ! pi: no triangle (the book would put B where angle ABC = pi - ETA).
-    if (ugbac < 0.0_dp) then
-      if (ugbac < -8.0_dp*epsilon(1.0_dp)*(pi + abs(eta))) then
-        ier = st_assembly
-        return
-      end if
-      ugbac = 0.0_dp
-    end if
-    q = book_sign(1.0_dp, p)
-    ! B = A + RZ2 e(FIK + P*UGBAC) (the book's XB1, YB1 rotated by FIK), relative to A
-    bxa = rz2*cos(fik + q*ugbac)
-    bya = rz2*sin(fik + q*ugbac)
-    xb = xa + bxa
-    yb = ya + bya
-    rzbc = norm2d(bxa + (xa - xc), bya + (ya - yc))
-    ! E-DKNMA3-5: the axis of link 3 from the triangle's angle at C, C->B = C->A - P*angle C
-    ! (the book's DUGL2(XC, YC, XB, YB) loses digits as CB shrinks and fails at B = C)
-    fi3 = wrap_pi(fik + pi - q*angc)
-    ds = 4.0_dp*uround*(abs(s)*(2.0_dp + abs(eta)) + abs(rz2/rac)*abs(eta))
-    da = angle_sensitivity(s, ds) + 4.0_dp*uround*(4.0_dp + abs(fik) + abs(eta))
-    est = da
-    sb = abs(va) + abs(vc)
-    call solve2e(cos(fi3), -cos((fik + pi) + pid2), sin(fi3), -sin((fik + pi) + pid2), &
-                 vc*cos(alc) - va*cos(ala), vc*sin(alc) - va*sin(ala), da, &
-                 4.0_dp*uround*(1.0_dp + max(abs(ala), abs(alc)))*sb, sb, y1, y2, ier, relv)
+    h = rz2*sin(eta)
+    call rpr_position([xa, ya], [xc, yc], h, -rpr_branch(p, h), x_b, u3, uc, d, sl, eac, &
+                      ier, est)
     if (failed(ier)) return
-    est = max(est, relv)
-    ev = relv*max(norm2d(y1, y2), sb/sqrt(2.0_dp))
-    var = abs(y1)
-    alar = dugl4(fi3, pi, y1)
-    vac = abs(y2)
-    alac = dugl3(fik + pi, pid2, y2)
-    w3 = domega(rac, vac, alac - (fik + pi))
-    prx = vc*cos(alc) + vac*cos(alac)
-    pry = vc*sin(alc) + vac*sin(alac)
-    va3 = norm2d(prx, pry)
-    ala3 = dugl5(prx, pry)
+    ! E-DKNMA3-4: the book's B beyond C (an obtuse ETA with RZ2 > AC): no triangle
+    ce = rz2*cos(eta)
+    rzbc = sl + ce
+    if (rzbc < 0.0_dp) then
+      if (rzbc < -8.0_dp*epsilon(1.0_dp)*(sl + abs(ce))) then
+        ier = st_assembly
+        return
+      end if
+      rzbc = 0.0_dp
+    end if
+    dang = est + 4.0_dp*uround*(4.0_dp + abs(eta))
+    call components(va, ala, v_a(1), v_a(2))
+    call components(vc, alc, v_c(1), v_c(2))
+    call rpr_system(uc, u3, f)
+    call rpr_velocity(f, v_a, v_c, u3, d, sl, dang, v_b, om3, sv, ev, ier, est)
+    if (failed(ier)) return
     if (analog /= 1.0_dp) then
-      aak = 2.0_dp*var*abs(w3)
-      bak = dugl3(alar, pid2, w3)
-      aacn = w3**2*rac
-      ew = ev/rac                                 ! error of W3
-      sb = abs(aa) + abs(ac) + aacn + aak
-      call solve2e(cos(alar), -cos((fik + pi) + pid2), sin(alar), -sin((fik + pi) + pid2), &
-                   ac*cos(bc) + aacn*cos(fik) - aa*cos(ba) - aak*cos(bak), &
-                   ac*sin(bc) + aacn*sin(fik) - aa*sin(ba) - aak*sin(bak), da, &
-                   4.0_dp*uround*(6.0_dp + max(abs(ba), abs(bc), abs(fik), abs(fi3)))*sb &
-                   + (2.0_dp*abs(w3)*ew + ew*ew)*rac + 2.0_dp*(abs(w3)*ev + var*ew + ev*ew), &
-                   sb, y1, y2, st2, rela)
-      ier = st2
+      call components(aa, ba, a_a(1), a_a(2))
+      call components(ac, bc, a_c(1), a_c(2))
+      call rpr_acceleration(f, a_a, a_c, (2.0_dp*om3*sv)*[-u3(2), u3(1)], &
+                            2.0_dp*(abs(om3)*ev + abs(sv)*(ev/d)), uc, u3, d, sl, om3, ev, &
+                            eac, dang, a_b, ep3, sa, ier, est)
       if (failed(ier)) return
-      est = max(est, rela)
-      aar = abs(y1)
-      bar = dugl4(alar, pi, y1)                     ! E-DKNMA3-3: book DUGL4(ALAR, PID2, Y(1))
-      aact = abs(y2)
-      bact = dugl3(fik + pi, pid2, y2)
-      aa3x = aa*cos(ba) + aak*cos(bak) + aar*cos(bar)
-      aa3y = aa*sin(ba) + aak*sin(bak) + aar*sin(bar)
-      aa3 = norm2d(aa3x, aa3y)
-      ba3 = dugl5(aa3x, aa3y)
-      e3 = domega(rac, aact, bact - (fik + pi))
+    end if
+    xb = x_b(1) + ce*u3(1)
+    yb = x_b(2) + ce*u3(2)
+    fi3 = atan2(u3(2), u3(1))
+    if (fi3 == -pi) fi3 = pi                      ! the range (-pi, pi] of DUGL2
+    fik = dugl1(xa, ya, xc, yc)                   ! A->C in [0, 2 pi), as printed
+    w3 = om3 + 0.0_dp
+    var = abs(sv)
+    alar = dugl4(fi3, pi, -sv)
+    vac = abs(om3)*d
+    alac = dugl3(fik + pi, pid2, om3)
+    v3 = v_a - sv*u3
+    va3 = norm2d(v3(1), v3(2))
+    ala3 = dugl5(v3(1), v3(2))
+    if (analog /= 1.0_dp) then
+      aak = 2.0_dp*var*abs(om3)
+      bak = dugl3(alar, pid2, om3)
+      aacn = om3**2*d
+      e3 = ep3 + 0.0_dp
+      y1 = -sa*book_sign(1.0_dp, -sv)             ! a^r = -s'' u3 along ALAR
+      aar = abs(sa)
+      bar = dugl4(alar, pi, y1)
+      aact = abs(ep3)*d
+      bact = dugl3(fik + pi, pid2, ep3)
+      a3 = a_c + (ep3*d)*[-uc(2), uc(1)] - aacn*uc
+      aa3 = norm2d(a3(1), a3(2))
+      ba3 = dugl5(a3(1), a3(2))
     end if
     ier = settle(ier, est, [xb, yb, rzbc, var, vac, w3, va3, aak, aar, aact, aa3, e3, aacn])
-  end subroutine dknma3
+  end subroutine dknma3_rpr
 
   ! IV.19 DKNMA4, L2831-2929.  Kind 4 (PRP).
   ! Guide M through A (direction FIM), guide N through C (FIN); offsets RZ2*SIN(ETA2),
