@@ -2,6 +2,7 @@
 
     python benchmarks/bench_mechanism.py             (against the installed sarkp)
     python benchmarks/bench_mechanism.py contract    (designs, points=/links=, one position)
+    python benchmarks/bench_mechanism.py reused      (outputs reused on both sides)
 
 Cases (corrected mode, crank at omega = 3 rad/s, phi_k = 2 pi k / N, N = 1e5 and 360),
 each at need="positions", "velocities" and "accelerations", against a C loop of
@@ -407,8 +408,83 @@ def contract():
           f"{t['sel'] / t['dvkt']:.1f} x DVKT | |")
 
 
+def reused():
+    """The cases of main() with the outputs reused on both sides: the C loops write into
+    arrays allocated once, the Mechanism into a result by out=, so that neither pays the
+    first touch of fresh pages (how often the allocator hands out fresh pages differs
+    between a call's one packed buffer and the C loops' six arrays, and decides the
+    fresh-output ratios at 10^5 positions).  Also the minor page faults per call."""
+    import resource
+
+    loops = Loops()
+    g = sixbar_geometry()
+    cases = [("four-bar", fourbar_mechanism(), "fourbar_mech",
+              lambda n: [np.empty((n, 2, 2)) for _ in range(3)] + [
+                  np.empty((n, 3, 2)), np.empty((n, 3)), np.empty((n, 3))],
+              lambda lev, ph, out: loops.lib.fourbar_mech(
+                  ph.size, lev, ph, *(FOURBAR[k] for k in ("roa", "rab", "rcb", "xc", "yc")),
+                  W1, *out)),
+             ("six-bar (program X)", sixbar_mechanism(g), "sixbar",
+              lambda n: [np.empty((n, 4, 2)) for _ in range(3)] + [
+                  np.empty((n, 5, 2)), np.empty((n, 5)), np.empty((n, 5))],
+              lambda lev, ph, out: loops.lib.sixbar(
+                  ph.size, lev, ph, g["roa"], g["rab"], g["rcb"], g["rcd"], g["rde"],
+                  g["xc"], g["yc"], g["yg"], W1, *out)),
+             ("inverted slider-crank (rpr)", rpr_mechanism(), "rpr_mech",
+              lambda n: [np.empty((n, 2, 2)) for _ in range(3)] + [
+                  np.empty((n, 3, 2)), np.empty((n, 3)), np.empty((n, 3))],
+              lambda lev, ph, out: loops.lib.rpr_mech(
+                  ph.size, lev, ph, *(RPR[k] for k in ("roa", "xc", "yc", "h")), W1, *out))]
+    print(f"load average {os.getloadavg()}")
+    print("| case | N | need | Mechanism, out= | C loop, outputs reused | ratio "
+          "| page faults per call (Mechanism fresh / C fresh) |")
+    print("|---|---|---|---|---|---|---|")
+    needs = ("positions", "velocities", "accelerations")
+    for name, mech, cname, alloc, call in cases:
+        for N in (100000, 360):
+            ph = np.linspace(0.0, 2.0 * math.pi, N, endpoint=False)
+            for lev, need in enumerate(needs, 1):
+                keep = mech.solve(ph, omega=W1, need=need)
+                out = alloc(N)
+                t = best_of({"m": lambda: mech.solve(ph, omega=W1, need=need, out=keep),
+                             "c": lambda: call(lev, ph, out)})
+
+                def faults(f, k=5):
+                    f0 = resource.getrusage(resource.RUSAGE_SELF).ru_minflt
+                    for _ in range(k):
+                        f()
+                    return (resource.getrusage(resource.RUSAGE_SELF).ru_minflt - f0) / k
+                pm = faults(lambda: mech.solve(ph, omega=W1, need=need))
+                pc = faults(lambda: call(lev, ph, alloc(N)))
+                print(f"| {name} (`{cname}`) | {N} | {need} | {t['m'] / N * 1e9:.1f} ns | "
+                      f"{t['c'] / N * 1e9:.1f} ns | {t['m'] / t['c']:.2f} | {pm:.0f} / {pc:.0f} |")
+    fl = fourbar_mechanism(loads=True)
+    L = LOADS
+    for N in (100000, 360):
+        ph = np.linspace(0.0, 2.0 * math.pi, N, endpoint=False)
+        keep = fl.solve(ph, omega=W1, need="forces", gravity=L["g"])
+        n = N
+        out = [np.empty((n, 2, 2)), np.empty((n, 2, 2)), np.empty((n, 2, 2)),
+               np.empty((n, 3, 2)), np.empty((n, 3)), np.empty((n, 3)), np.empty((n, 4, 3)),
+               np.empty(n), np.empty(n), np.empty(n)]
+
+        def cf():
+            loops.lib.fourbar_forces_full(
+                n, ph, *(FOURBAR[k] for k in ("roa", "rab", "rcb", "xc", "yc")), W1,
+                L["m2"], L["j2"], L["f2"], L["m3"], L["j3"], L["f3"], L["g"], L["t3"], *out)
+        t = best_of({"m": lambda: fl.solve(ph, omega=W1, need="forces", gravity=L["g"],
+                                           out=keep),
+                     "c": cf})
+        print(f"| loaded four-bar (`fourbar_forces_full`) | {N} | forces | "
+              f"{t['m'] / N * 1e9:.1f} ns | {t['c'] / N * 1e9:.1f} ns | "
+              f"{t['m'] / t['c']:.2f} | |")
+    print(f"load average {os.getloadavg()}")
+
+
 if __name__ == "__main__":
     if sys.argv[1:] == ["contract"]:
         contract()
+    elif sys.argv[1:] == ["reused"]:
+        reused()
     else:
         main()
