@@ -501,7 +501,6 @@ contains
     real(dp), intent(in) :: rz2, fi2, rz3, fi3, va, ala, vc, alc
     real(dp), intent(out) :: vba, alba, vbc, albc, vb, alb, w2, w3
     integer, intent(out) :: ier
-    real(dp), parameter :: half_pi = pi_exact/2.0_dp     ! corrected mode's PID2
     real(dp) :: r2(2), r3(2), v_a(2), v_c(2), v_b(2), om2, om3, ev, rel, dang
     type(cram) :: f
     vba = 0.0_dp; alba = 0.0_dp; vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp
@@ -519,20 +518,35 @@ contains
     ! problem
     if (ier == st_singular .and. abs(sin(fi2 - fi3)) > 4.0_dp*dang) ier = st_range
     if (failed(ier)) return
-    w2 = om2 + 0.0_dp                             ! (-0 is +0, as DOMEGA gives it)
-    w3 = om3 + 0.0_dp
-    vba = abs(om2)*rz2
-    vbc = abs(om3)*rz3
-    alba = fi2 + book_sign(half_pi, om2)          ! DUGL3(FI2, PID2, W2)
-    albc = fi3 + book_sign(half_pi, om3)
-    vb = norm2d(v_b(1), v_b(2))
-    alb = dugl5(v_b(1), v_b(2))
-    ier = settle(ier, rel, [vba, vbc, vb, w2, w3])
-    if (failed(ier)) then
-      vba = 0.0_dp; alba = 0.0_dp; vbc = 0.0_dp; albc = 0.0_dp; vb = 0.0_dp; alb = 0.0_dp
-      w2 = 0.0_dp; w3 = 0.0_dp
-    end if
+    call rrr_book_pairs(om2, om3, v_b, rz2, fi2, rz3, fi3, ier, rel, vba, alba, vbc, albc, &
+                        vb, alb, w2, w3)
   end subroutine dskor1_rrr
+
+  ! The book's pairs of a kind-1 stage's results (DSKOR1's and DUSKR1's adapters): y2, y3
+  ! the rates of links 2, 3 (W or E), yb B's vector.  m2 = |y2| RZ2 along FI2 + pi/2 turned
+  ! by the sign of y2 (DUGL3, L1712 and L2041), the same for link 3; mb, db = yb's modulus
+  ! and direction (DUGL5); o2, o3 = y2, y3 (-0 made +0, as DOMEGA gives it).  A failing
+  ! status (settle: an overflow) leaves every output 0.
+  subroutine rrr_book_pairs(y2, y3, yb, rz2, fi2, rz3, fi3, ier, rel, m2, d2, m3, d3, mb, &
+                            db, o2, o3)
+    real(dp), intent(in) :: y2, y3, yb(2), rz2, fi2, rz3, fi3, rel
+    integer, intent(inout) :: ier
+    real(dp), intent(out) :: m2, d2, m3, d3, mb, db, o2, o3
+    real(dp), parameter :: half_pi = pi_exact/2.0_dp     ! corrected mode's PID2
+    o2 = y2 + 0.0_dp
+    o3 = y3 + 0.0_dp
+    m2 = abs(y2)*rz2
+    m3 = abs(y3)*rz3
+    d2 = fi2 + book_sign(half_pi, y2)             ! DUGL3(FI2, PID2, Y2)
+    d3 = fi3 + book_sign(half_pi, y3)
+    mb = norm2d(yb(1), yb(2))
+    db = dugl5(yb(1), yb(2))
+    ier = settle(ier, rel, [m2, m3, mb, o2, o3])
+    if (failed(ier)) then
+      m2 = 0.0_dp; d2 = 0.0_dp; m3 = 0.0_dp; d3 = 0.0_dp; mb = 0.0_dp; db = 0.0_dp
+      o2 = 0.0_dp; o3 = 0.0_dp
+    end if
+  end subroutine rrr_book_pairs
 
   ! IV.6 DSKOR2, L1740-1774 (Table 12, Fig. 20).  Kind 2 velocities:
   ! v_A + v_BA = v_BM + v_BBM; VBM, ALBM = velocity of the guide point under B (0, 0 for a
@@ -817,7 +831,6 @@ contains
     real(dp), intent(in) :: aa, ba, ac, bc, rz2, fi2, rz3, fi3, w2, w3
     real(dp), intent(out) :: abat, bbat, abct, bbct, ab, bb, e2, e3
     integer, intent(out) :: ier
-    real(dp), parameter :: half_pi = pi_exact/2.0_dp     ! corrected mode's PID2
     real(dp) :: r2(2), r3(2), a_a(2), a_c(2), a_b(2), ep2, ep3, rel
     type(cram) :: f
     abat = 0.0_dp; bbat = 0.0_dp; abct = 0.0_dp; bbct = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp
@@ -832,19 +845,8 @@ contains
                           4.0_dp*uround*(1.0_dp + max(abs(ba), abs(bc))), a_b, ep2, ep3, &
                           ier, rel)
     if (failed(ier)) return
-    e2 = ep2 + 0.0_dp
-    e3 = ep3 + 0.0_dp
-    abat = abs(ep2)*rz2
-    abct = abs(ep3)*rz3
-    bbat = fi2 + book_sign(half_pi, ep2)          ! DUGL3(FI2, PID2, E2)
-    bbct = fi3 + book_sign(half_pi, ep3)
-    ab = norm2d(a_b(1), a_b(2))
-    bb = dugl5(a_b(1), a_b(2))
-    ier = settle(ier, rel, [abat, abct, ab, e2, e3])
-    if (failed(ier)) then
-      abat = 0.0_dp; bbat = 0.0_dp; abct = 0.0_dp; bbct = 0.0_dp; ab = 0.0_dp; bb = 0.0_dp
-      e2 = 0.0_dp; e3 = 0.0_dp
-    end if
+    call rrr_book_pairs(ep2, ep3, a_b, rz2, fi2, rz3, fi3, ier, rel, abat, bbat, abct, bbct, &
+                        ab, bb, e2, e3)
   end subroutine duskr1_rrr
 
   ! IV.11 DUSKR2, L2077-2119 (Table 17, Fig. 25).  Kind 2 accelerations:
