@@ -249,7 +249,6 @@ contains
       dc = 4.0_dp*uround*(abs(so) + abs(off) + abs(rz3) + rz2 &
                           + (1.0_dp + abs(fim) + abs(t))*(abs(dx) + abs(dy)))/rz2
       ier = settle(ier, angle_sensitivity(c, dc) + 8.0_dp*uround*(1.0_dp + abs(fim)), [xb, yb])
-
     end if
   end subroutine dprm2
 
@@ -302,7 +301,6 @@ contains
       fi3 = fica + book_sign(1.0_dp, p)*ugbca
       ds = 4.0_dp*uround*(abs(s)*(1.0_dp + abs(t)) + abs(rz2/rzac)*abs(t))
       ier = settle(ier, angle_sensitivity(s, ds) + 8.0_dp*uround*(1.0_dp + abs(fica)), [rzac])
-
     end if
   end subroutine dprm3
 
@@ -585,7 +583,6 @@ contains
       w2 = domega(rz2, vba, alba - fi2)
       call dsmvkt(va, ala, vba, alba, vb, alb)
       ier = settle(ier, rel, [vba, vbbm, vb, w2])
-
     end if
   end subroutine dskor2
 
@@ -631,7 +628,6 @@ contains
       w3 = domega(rzac, va3c, ala3c - fi3)
       call dsmvkt(va, ala, va3a, ala3a, va3, ala3)
       ier = settle(ier, rel, [va3a, va3c, va3, w3])
-
     end if
   end subroutine dskor3
 
@@ -877,7 +873,6 @@ contains
       ! the turning side A-B (a_A, link AB), the sliding side the guide (a_BM, Coriolis)
       call turn_slide(aa, ba, rz2, fi2, w2, abm, bvm, abk, bvk, fim, .true., &
                       abat, vbat, abvm, bvbm, e2, ab, bb, ier)
-
     end if
   end subroutine duskr2
 
@@ -906,7 +901,6 @@ contains
       ! the turning side C-A3 (a_C, C -> A on link 3), the sliding side A (a_A, Coriolis)
       call turn_slide(ac, bc, rzac, fica, w3, aa, ba, aa3ak, ba3ak, fi3, .false., &
                       aa3ct, ba3ct, aa3ar, ba3ar, e3, aa3, ba3, ier)
-
     end if
   end subroutine duskr3
 
@@ -1476,7 +1470,6 @@ contains
         e2 = domega(rz2, abat, sin(bbat - fi2))          ! E-DKNMA2-4: book BBAT - FI2
       end if
       ier = settle(ier, est, [xb, yb, vba, vbbm, vb, w2, aban, abk, abat, abbm, ab, e2])
-
     end if
   end subroutine dknma2
 
@@ -1775,7 +1768,6 @@ contains
         e3 = domega(rac, aact, bact - (fik + pi))
       end if
       ier = settle(ier, est, [xb, yb, rzbc, var, vac, w3, va3, aak, aar, aact, aa3, e3, aacn])
-
     end if
   end subroutine dknma3
 
